@@ -1,0 +1,69 @@
+"""Exceptions raised by roughcontact.
+
+Every error names the offending input (the *field*) and says how to fix it, so a
+user reading a CLI message or a traceback knows what to change without reading
+the source.
+"""
+
+from __future__ import annotations
+
+
+class InputError(ValueError):
+    """Invalid user input: a value, a file, a grid or a unit.
+
+    Parameters
+    ----------
+    field : str
+        Name of the offending input, as the user wrote it (argument, config key or file).
+    problem : str
+        What is wrong with it.
+    fix : str, optional
+        What the user should do instead.
+    """
+
+    def __init__(self, field: str, problem: str, fix: str | None = None):
+        self.field = field
+        self.problem = problem
+        self.fix = fix
+        message = f"{field}: {problem}"
+        if fix:
+            message += f" Fix: {fix}"
+        super().__init__(message)
+
+
+class UnitError(InputError):
+    """A unit string that is unknown or has the wrong physical dimension."""
+
+
+class UnsupportedFormatError(InputError):
+    """A file that no reader understands (unknown, empty, truncated or corrupted)."""
+
+
+class ConvergenceError(RuntimeError):
+    """An iterative solver stopped before reaching its tolerance.
+
+    The unconverged field is never returned as an answer; the residual and the
+    iteration count say how far the solver got.
+
+    Parameters
+    ----------
+    solver : str
+        Name of the solver.
+    residual : float
+        Scale-free residual reached.
+    iterations : int
+        Iterations performed.
+    tolerance : float
+        Tolerance that was asked for.
+    """
+
+    def __init__(self, solver: str, residual: float, iterations: int, tolerance: float):
+        self.solver = solver
+        self.residual = residual
+        self.iterations = iterations
+        self.tolerance = tolerance
+        super().__init__(
+            f"{solver} did not converge: residual {residual:.3g} > tolerance {tolerance:.3g} "
+            f"after {iterations} iterations. Fix: raise max_iterations, loosen tolerance "
+            f"knowingly, or refine the grid."
+        )

@@ -1,0 +1,162 @@
+"""The immutable :class:`Topography`: heights in metres on a regular grid of known physical size.
+
+Conventions (used everywhere in roughcontact)
+---------------------------------------------
+* Array axis 0 is x, axis 1 is y. ``heights[i, j]`` is the height at
+  ``x = i * spacing[0]``, ``y = j * spacing[1]`` (pixel corners, first pixel at 0).
+* Heights and sizes are in metres. Positive heights point out of the body, towards
+  the counter-surface.
+* ``size`` is the physical extent of the grid: ``shape[k] * spacing[k]``. For a periodic
+  topography it is the period.
+* A 1D topography is a line scan (profile) along x.
+* Every height is finite: missing points are dealt with when a file is read
+  (:func:`roughcontact.topography.io.read_topography`, ``undefined=``), never carried silently.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
+from types import MappingProxyType
+from typing import Any
+
+import numpy as np
+
+from ..errors import InputError
+
+
+def _frozen_mapping(info: Mapping[str, Any] | None) -> Mapping[str, Any]:
+    return MappingProxyType(dict(info or {}))
+
+
+@dataclass(frozen=True, eq=False)
+class Topography:
+    """A measured or generated surface: heights [m] on a regular grid of physical ``size`` [m].
+
+    Parameters
+    ----------
+    heights : array_like, shape (nx,) or (nx, ny)
+        Surface heights in metres. Must be finite. Copied and made read-only.
+    size : float or tuple of float
+        Physical extent in metres along each axis (one value per axis; a scalar is
+        accepted for a 1D profile or a square map).
+    periodic : bool
+        Whether the surface repeats with period ``size`` (generated surfaces usually do,
+        measured ones do not).
+    info : mapping, optional
+        Metadata: source file, instrument, channel, units of the file, processing history.
+
+    Raises
+    ------
+    InputError
+        Empty or non-finite heights, a size that is not positive and finite, or a size
+        whose number of values does not match the number of axes.
+    """
+
+    heights: np.ndarray
+    size: tuple[float, ...]
+    periodic: bool = False
+    info: Mapping[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self):
+        heights = np.array(self.heights, dtype=float)  # always a private copy
+        if heights.ndim not in (1, 2):
+            raise InputError(
+                "heights", f"expected a 1D profile or a 2D map, got an array with {heights.ndim} dimensions.",
+                "pass heights of shape (nx,) or (nx, ny).",
+            )
+        if heights.size == 0 or min(heights.shape) < 2:
+            raise InputError("heights", f"grid {heights.shape} has fewer than 2 points along an axis.",
+                             "give at least 2 x 2 points (2 for a profile).")
+        bad = ~np.isfinite(heights)
+        if bad.any():
+            raise InputError(
+                "heights", f"{int(bad.sum())} of {heights.size} heights are NaN or infinite.",
+                "fill them first (read_topography(..., undefined='interpolate')) or crop them away.",
+            )
+        size = np.atleast_1d(np.asarray(self.size, dtype=float))
+        if size.size == 1 and heights.ndim == 2:
+            size = np.repeat(size, 2)
+        if size.shape != (heights.ndim,):
+            raise InputError("size", f"got {size.size} values for a {heights.ndim}D topography.",
+                             f"give {heights.ndim} physical lengths in metres.")
+        if not np.all(np.isfinite(size)) or np.any(size <= 0):
+            raise InputError("size", f"physical size {tuple(size)} must be positive and finite.",
+                             "give the scan size in metres (or with a unit at the CLI, e.g. '10 um').")
+        heights.flags.writeable = False
+        object.__setattr__(self, "heights", heights)
+        object.__setattr__(self, "size", tuple(float(s) for s in size))
+        object.__setattr__(self, "periodic", bool(self.periodic))
+        object.__setattr__(self, "info", _frozen_mapping(self.info))
+
+    # --- geometry -------------------------------------------------------------------------------
+    @property
+    def dim(self) -> int:
+        """Number of axes: 1 for a profile, 2 for a map."""
+        return self.heights.ndim
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        """Number of grid points along each axis."""
+        return self.heights.shape
+
+    @property
+    def spacing(self) -> tuple[float, ...]:
+        """Pixel size [m] along each axis, ``size / shape``."""
+        return tuple(s / n for s, n in zip(self.size, self.shape, strict=True))
+
+    @property
+    def pixel_area(self) -> float:
+        """Area of one pixel [m^2] (length [m] for a profile)."""
+        return math.prod(self.spacing)
+
+    @property
+    def area(self) -> float:
+        """Nominal (projected) area [m^2] (length [m] for a profile)."""
+        return math.prod(self.size)
+
+    def coordinates(self) -> tuple[np.ndarray, ...]:
+        """Return the 1D coordinate arrays [m] of the grid points, one per axis."""
+        return tuple(np.arange(n) * h for n, h in zip(self.shape, self.spacing, strict=True))
+
+    def meshgrid(self) -> tuple[np.ndarray, ...]:
+        """Return coordinate arrays [m] broadcast to ``shape`` (``indexing='ij'``)."""
+        return tuple(np.meshgrid(*self.coordinates(), indexing="ij"))
+
+    # --- derived surfaces -----------------------------------------------------------------------
+    def with_heights(self, heights: np.ndarray, *, step: str | None = None, **changes) -> Topography:
+        """Return a new topography with other heights on the same grid.
+
+        Parameters
+        ----------
+        heights : ndarray
+            New heights [m], same shape as ``self.heights``.
+        step : str, optional
+            Processing step appended to ``info['history']``.
+        **changes
+            Other fields to replace (``size``, ``periodic``, ``info``).
+        """
+        heights = np.asarray(heights, dtype=float)
+        if "size" not in changes and heights.shape != self.shape:
+            raise InputError("heights", f"shape {heights.shape} does not match the grid {self.shape}.",
+                             "pass a new size together with a new grid.")
+        info = dict(changes.pop("info", self.info))
+        if step:
+            info["history"] = (*info.get("history", ()), step)
+        return replace(self, heights=heights, info=info, **changes)
+
+    def __repr__(self) -> str:
+        size_um = " x ".join(f"{s * 1e6:.4g}" for s in self.size)
+        grid = " x ".join(str(n) for n in self.shape)
+        name = self.info.get("name") or self.info.get("source", "")
+        label = f" {name!r}" if name else ""
+        return f"<Topography{label} {grid} points, {size_um} um, periodic={self.periodic}>"
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Topography):
+            return NotImplemented
+        return (self.size == other.size and self.periodic == other.periodic
+                and np.array_equal(self.heights, other.heights) and dict(self.info) == dict(other.info))
+
+    __hash__ = None  # mutable-looking numpy content; equality is by value

@@ -1,0 +1,224 @@
+"""Physical quantities written with units, converted once to SI.
+
+This is the only module that parses unit strings. Users speak "20 nm", "70 GPa",
+"72 mJ/m^2", "10 uN", "0.1 um/s"; the code works in m, kg, s, N, Pa and J.
+
+Grammar: ``<number> <unit>`` where ``<unit>`` is a product/quotient of SI-prefixed
+symbols with optional integer powers, e.g. ``mJ/m^2``, ``N*m``, ``um/s``,
+``m**-1``. The micro prefix may be written ``u``, ``µ`` (U+00B5) or ``μ`` (U+03BC).
+
+Dimensions are exponent triples (length, mass, time); an expected dimension is
+given by name (``"length"``, ``"pressure"``, ...) and a mismatch raises
+:class:`~roughcontact.errors.UnitError` naming the value and what was expected.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from decimal import Decimal
+from numbers import Real
+
+from .errors import UnitError
+
+Dimension = tuple[int, int, int]  # exponents of (m, kg, s)
+
+DIMENSIONS: dict[str, Dimension] = {
+    "dimensionless": (0, 0, 0),
+    "length": (1, 0, 0),
+    "area": (2, 0, 0),
+    "inverse_length": (-1, 0, 0),
+    "time": (0, 0, 1),
+    "frequency": (0, 0, -1),
+    "velocity": (1, 0, -1),
+    "force": (1, 1, -2),
+    "force_rate": (1, 1, -3),
+    "pressure": (-1, 1, -2),
+    "energy": (2, 1, -2),
+    "surface_energy": (0, 1, -2),  # J/m^2 = N/m
+    "stiffness": (0, 1, -2),  # N/m, same dimension as surface energy
+}
+
+_PREFIXES = {
+    p: Decimal(f"1e{e}")
+    for p, e in {
+        "Y": 24, "Z": 21, "E": 18, "P": 15, "T": 12, "G": 9, "M": 6, "k": 3, "h": 2, "da": 1,
+        "d": -1, "c": -2, "m": -3, "u": -6, "n": -9, "p": -12, "f": -15, "a": -18,
+    }.items()
+}  # fmt: skip
+
+# symbol -> (factor to SI, dimension); prefixable symbols only. Factors are Decimals so that
+# "10 uN" becomes exactly the float nearest 1e-5, not 9.999999999999999e-06.
+_BASE_UNITS: dict[str, tuple[Decimal, Dimension]] = {
+    "m": (Decimal(1), DIMENSIONS["length"]),
+    "g": (Decimal("1e-3"), (0, 1, 0)),
+    "s": (Decimal(1), DIMENSIONS["time"]),
+    "N": (Decimal(1), DIMENSIONS["force"]),
+    "Pa": (Decimal(1), DIMENSIONS["pressure"]),
+    "J": (Decimal(1), DIMENSIONS["energy"]),
+    "Hz": (Decimal(1), DIMENSIONS["frequency"]),
+}
+# symbols that take no prefix
+_PLAIN_UNITS: dict[str, tuple[Decimal, Dimension]] = {
+    "Å": (Decimal("1e-10"), DIMENSIONS["length"]),
+    "angstrom": (Decimal("1e-10"), DIMENSIONS["length"]),
+    "in": (Decimal("0.0254"), DIMENSIONS["length"]),
+    "min": (Decimal(60), DIMENSIONS["time"]),
+    "h": (Decimal(3600), DIMENSIONS["time"]),
+    "bar": (Decimal("1e5"), DIMENSIONS["pressure"]),
+    "psi": (Decimal("6894.757293168361"), DIMENSIONS["pressure"]),
+    "%": (Decimal("1e-2"), DIMENSIONS["dimensionless"]),
+}
+
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_QUANTITY_RE = re.compile(rf"^\s*({_NUMBER})\s*(.*?)\s*$")
+_FACTOR_RE = re.compile(r"^([^\^*]+?)(?:(?:\^|\*\*)([-+]?\d+))?$")
+
+
+def _normalise(unit: str) -> str:
+    return unit.replace("µ", "u").replace("μ", "u").replace("·", "*").replace(" ", "").replace("²", "^2")
+
+
+def _symbol(symbol: str) -> tuple[Decimal, Dimension]:
+    if symbol in _PLAIN_UNITS:
+        return _PLAIN_UNITS[symbol]
+    if symbol in _BASE_UNITS:
+        return _BASE_UNITS[symbol]
+    for prefix in sorted(_PREFIXES, key=len, reverse=True):
+        rest = symbol[len(prefix):]
+        if symbol.startswith(prefix) and rest in _BASE_UNITS:
+            factor, dimension = _BASE_UNITS[rest]
+            return _PREFIXES[prefix] * factor, dimension
+    raise KeyError(symbol)
+
+
+def unit_factor(unit: str) -> tuple[Decimal, Dimension]:
+    """Return the factor to SI and the dimension of a unit expression.
+
+    Parameters
+    ----------
+    unit : str
+        Unit expression such as ``"nm"``, ``"mJ/m^2"`` or ``"uN/s"``; ``""`` is dimensionless.
+
+    Returns
+    -------
+    factor : decimal.Decimal
+        Multiply a value in ``unit`` by this to get SI (exact decimal arithmetic).
+    dimension : tuple of int
+        Exponents of (m, kg, s).
+
+    Raises
+    ------
+    UnitError
+        If a symbol is unknown.
+    """
+    text = _normalise(unit)
+    factor, dims = Decimal(1), [0, 0, 0]
+    if text in ("", "1"):
+        return factor, (0, 0, 0)
+    numerator, *denominators = text.split("/")
+    parts = [(p, 1) for p in numerator.split("*") if p not in ("", "1")]
+    for den in denominators:
+        parts += [(p, -1) for p in den.split("*")]
+    for part, sign in parts:
+        match = _FACTOR_RE.match(part)
+        if match is None:
+            raise UnitError("unit", f"cannot read {unit!r}.", "write units like 'nm', 'GPa', 'mJ/m^2', 'um/s'.")
+        symbol, power = match.group(1), int(match.group(2) or 1) * sign
+        try:
+            sym_factor, sym_dim = _symbol(symbol)
+        except KeyError:
+            raise UnitError(
+                "unit", f"unknown unit symbol {symbol!r} in {unit!r}.",
+                "use SI symbols with prefixes (nm, um, mm, m, uN, mN, N, MPa, GPa, mJ/m^2, s).",
+            ) from None
+        factor *= sym_factor**power
+        dims = [d + power * s for d, s in zip(dims, sym_dim, strict=True)]
+    return factor, (dims[0], dims[1], dims[2])
+
+
+def _dimension_name(dimension: Dimension) -> str:
+    names = [name for name, dim in DIMENSIONS.items() if dim == dimension]
+    return " or ".join(names) if names else f"m^{dimension[0]} kg^{dimension[1]} s^{dimension[2]}"
+
+
+def quantity(value: str | Real, expected: str, *, field: str = "value") -> float:
+    """Convert a quantity to SI, checking its dimension.
+
+    Parameters
+    ----------
+    value : str or float
+        ``"20 nm"``, ``"70 GPa"``, ... A bare number (or a string holding only a number)
+        is taken to be in SI already.
+    expected : str
+        Expected dimension, a key of :data:`DIMENSIONS` (``"length"``, ``"pressure"``, ...).
+    field : str
+        Name of the input, used in error messages.
+
+    Returns
+    -------
+    float
+        The value in SI units.
+
+    Raises
+    ------
+    UnitError
+        Unknown unit, unreadable value or wrong dimension; the message names ``field``,
+        the value and the expected dimension.
+
+    Examples
+    --------
+    >>> quantity("72 mJ/m^2", "surface_energy")
+    0.072
+    """
+    if expected not in DIMENSIONS:
+        raise ValueError(f"unknown dimension {expected!r}; choose from {sorted(DIMENSIONS)}")
+    if isinstance(value, Real) and not isinstance(value, bool):
+        result = float(value)
+    elif isinstance(value, str):
+        match = _QUANTITY_RE.match(value)
+        if match is None:
+            raise UnitError(
+                field, f"cannot read {value!r} as a {expected}.",
+                f"write a number and a unit, e.g. {_EXAMPLES.get(expected, '1')!r}.",
+            )
+        number, unit = match.groups()
+        try:
+            factor, dimension = unit_factor(unit)
+        except UnitError as error:
+            raise UnitError(field, f"{error.problem} (in {value!r})", error.fix) from None
+        if unit and dimension != DIMENSIONS[expected]:
+            raise UnitError(
+                field, f"{value!r} is a {_dimension_name(dimension)}, expected a {expected}.",
+                f"give a {expected}, e.g. {_EXAMPLES.get(expected, '1')!r}.",
+            )
+        result = float(Decimal(number) * factor)
+    else:
+        raise UnitError(field, f"expected a number or a string with a unit, got {type(value).__name__}.")
+    if not math.isfinite(result):
+        raise UnitError(field, f"{value!r} is not finite.", "give a finite number.")
+    return result
+
+
+def length_unit_factor(unit: str, *, field: str = "unit") -> float:
+    """Return the factor that converts lengths in ``unit`` (e.g. ``"nm"``, ``"µm"``) to metres."""
+    factor, dimension = unit_factor(unit)
+    if dimension != DIMENSIONS["length"]:
+        raise UnitError(field, f"{unit!r} is not a length unit.", "give one of 'nm', 'um', 'mm', 'm'.")
+    return float(factor)
+
+
+_EXAMPLES = {
+    "length": "20 nm",
+    "area": "1 um^2",
+    "time": "5 s",
+    "velocity": "0.1 um/s",
+    "force": "10 uN",
+    "force_rate": "50 uN/s",
+    "pressure": "70 GPa",
+    "energy": "1 nJ",
+    "surface_energy": "72 mJ/m^2",
+    "stiffness": "35.5 N/m",
+    "inverse_length": "1 1/um",
+    "frequency": "1 Hz",
+}
