@@ -72,11 +72,11 @@ _PLAIN_UNITS: dict[str, tuple[Decimal, Dimension]] = {
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _QUANTITY_RE = re.compile(rf"^\s*({_NUMBER})\s*(.*?)\s*$")
-_FACTOR_RE = re.compile(r"^([^\^*]+?)(?:(?:\^|\*\*)([-+]?\d+))?$")
+_FACTOR_RE = re.compile(r"^([^^]+?)(?:\^([-+]?\d+))?$")
 
 
 def _normalise(unit: str) -> str:
-    return unit.replace("µ", "u").replace("μ", "u").replace("·", "*").replace(" ", "").replace("²", "^2")
+    return unit.replace("**", "^").replace("µ", "u").replace("μ", "u").replace("·", "*").replace(" ", "").replace("²", "^2")
 
 
 def _symbol(symbol: str) -> tuple[Decimal, Dimension]:
@@ -222,3 +222,33 @@ _EXAMPLES = {
     "inverse_length": "1 1/um",
     "frequency": "1 Hz",
 }
+
+
+_DISPLAY_PREFIXES = (("G", 1e9), ("M", 1e6), ("k", 1e3), ("", 1.0), ("m", 1e-3), ("µ", 1e-6), ("n", 1e-9),
+                     ("p", 1e-12))
+
+
+def format_si(value: float, unit: str, *, digits: int = 4) -> str:
+    """Format an SI value with the SI prefix that puts it between 1 and 1000.
+
+    Parameters
+    ----------
+    value : float
+        Value in the SI unit ``unit``.
+    unit : str
+        SI unit symbol to append (``"m"``, ``"Pa"``, ``"N"``).
+    digits : int
+        Significant digits.
+
+    Examples
+    --------
+    >>> format_si(2.5e-8, "m")
+    '25 nm'
+    """
+    if value == 0 or not math.isfinite(value):
+        return f"{value:.{digits}g} {unit}"
+    for prefix, scale in _DISPLAY_PREFIXES:
+        if abs(value) >= scale * (1 - 1e-12):
+            return f"{value / scale:.{digits}g} {prefix}{unit}"
+    prefix, scale = _DISPLAY_PREFIXES[-1]
+    return f"{value / scale:.{digits}g} {prefix}{unit}"
