@@ -1,0 +1,534 @@
+"""Materials and the composite elastic moduli of a pair of contacting bodies.
+
+A :class:`Material` holds SI values (Pa, J/m^2) and validates them once. The composite
+quantities of a pair are plain functions, each named for what it is and carrying its
+equation and source:
+
+=====================================  ===========================================================
+:func:`contact_modulus`                Hertz E*, 1/E* = sum (1 - nu^2)/E (Johnson 1985)
+:func:`composite_modulus`              the same E*, with paper 000's plain-number signature (eq. 1)
+:func:`effective_shear_modulus_paper001`  paper 001's G_s, 1/G_s = sum (2 - nu)/(4 G)
+:func:`johnson_shear_modulus`          Johnson's G*, 1/G* = sum (2 - nu)/G  (G_s = 4 G*)
+:func:`dundurs_beta`                   Dundurs' second bimaterial parameter beta
+:func:`winkler_factor`                 paper 000 eq. 4, the factor k of the Winkler springs
+:func:`reduced_modulus_to_youngs`      Oliver-Pharr: sample modulus from the reduced modulus (001 eq. 8)
+=====================================  ===========================================================
+
+Functions that take two bodies accept ``None`` for the second one: a rigid counter-body
+(infinite modulus), whose compliance terms vanish.
+
+The papers' materials are in :data:`MATERIALS` (read-only) and :func:`get_material`.
+Paper typos that concern moduli are documented beside the functions and in ``docs/materials.md``.
+
+References
+----------
+.. [J85] K. L. Johnson, *Contact Mechanics*, Cambridge University Press, 1985.
+   doi:10.1017/CBO9781139171731
+.. [P000] "Simulation model for frictional contact of two elastic surfaces in micro/nanoscale and
+   its validation" (seed paper 000; DOI not given in the seed text).
+.. [P001] "Evaluation of pre-sliding behavior at a rough interface: modeling and experiment",
+   ASME J. Tribol. (2020). doi:10.1115/1.4045900
+.. [P002] "Contact stress analysis of lightly compressed thin films: modeling and experimentation"
+   (seed paper 002; DOI not given in the seed text).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from numbers import Real
+from types import MappingProxyType
+
+from .errors import InputError
+from .units import quantity
+
+
+def _check_positive(value: float | None, field: str, example: str, *, allow_zero: bool = False) -> None:
+    if value is None:
+        return
+    if isinstance(value, bool) or not isinstance(value, Real):
+        raise InputError(field, f"expected a number in SI units, got {type(value).__name__}.",
+                         f"give a float in SI units, or use Material.from_units(..., {field}={example!r}).")
+    ok = math.isfinite(value) and (value >= 0 if allow_zero else value > 0)
+    if not ok:
+        bound = "non-negative" if allow_zero else "positive"
+        raise InputError(field, f"{value!r} is not a {bound} finite number.",
+                         f"give a {bound} value in SI units, e.g. {example}.")
+
+
+def _check_poissons_ratio(value: float, field: str = "poissons_ratio") -> None:
+    if isinstance(value, bool) or not isinstance(value, Real) or not (-1.0 < value <= 0.5):
+        raise InputError(field, f"{value!r} is outside (-1, 0.5].",
+                         "give a Poisson's ratio with -1 < nu <= 0.5 (0.5 = incompressible, e.g. rubber).")
+
+
+@dataclass(frozen=True)
+class Material:
+    """An isotropic linear-elastic material, optionally with plastic and surface properties.
+
+    Parameters
+    ----------
+    youngs_modulus : float
+        Young's modulus E [Pa], positive and finite.
+    poissons_ratio : float
+        Poisson's ratio nu [-], in (-1, 0.5]; 0.5 is an incompressible material.
+    name : str
+        Human-readable name.
+    hardness : float, optional
+        Indentation hardness H [Pa].
+    yield_strength : float, optional
+        Uniaxial yield strength Y [Pa].
+    surface_energy : float, optional
+        Surface (free) energy gamma [J/m^2]; zero is allowed.
+    source : str
+        Citation of the values (paper, table or section).
+
+    Raises
+    ------
+    InputError
+        A modulus, hardness or yield strength that is not positive and finite, a surface energy
+        that is negative or not finite, or a Poisson's ratio outside (-1, 0.5].
+    """
+
+    youngs_modulus: float
+    poissons_ratio: float
+    name: str = ""
+    hardness: float | None = None
+    yield_strength: float | None = None
+    surface_energy: float | None = None
+    source: str = ""
+
+    def __post_init__(self):
+        _check_positive(self.youngs_modulus, "youngs_modulus", "70e9 (70 GPa)")
+        _check_poissons_ratio(self.poissons_ratio)
+        _check_positive(self.hardness, "hardness", "0.462e9 (0.462 GPa)")
+        _check_positive(self.yield_strength, "yield_strength", "0.165e9 (0.165 GPa)")
+        _check_positive(self.surface_energy, "surface_energy", "0.072 (72 mJ/m^2)", allow_zero=True)
+
+    @property
+    def shear_modulus(self) -> float:
+        """Shear modulus G = E / (2 (1 + nu)) [Pa]."""
+        return self.youngs_modulus / (2.0 * (1.0 + self.poissons_ratio))
+
+    @classmethod
+    def from_units(
+        cls,
+        *,
+        youngs_modulus: str | float,
+        poissons_ratio: float,
+        name: str = "",
+        hardness: str | float | None = None,
+        yield_strength: str | float | None = None,
+        surface_energy: str | float | None = None,
+        source: str = "",
+    ) -> Material:
+        """Build a material from quantities written with units, e.g. ``youngs_modulus="70 GPa"``.
+
+        Parameters
+        ----------
+        youngs_modulus : str or float
+            Pressure such as ``"70 GPa"`` (a bare number is taken as Pa).
+        poissons_ratio : float
+            Poisson's ratio [-].
+        name, source : str
+            As in :class:`Material`.
+        hardness, yield_strength : str or float, optional
+            Pressures such as ``"0.462 GPa"``.
+        surface_energy : str or float, optional
+            Energy per area such as ``"72 mJ/m^2"``.
+
+        Returns
+        -------
+        Material
+            The material in SI units.
+
+        Raises
+        ------
+        UnitError
+            A unit that is unknown or of the wrong dimension (the message names the field).
+        """
+
+        def si(value, dimension, field):
+            return None if value is None else quantity(value, dimension, field=field)
+
+        return cls(
+            youngs_modulus=si(youngs_modulus, "pressure", "youngs_modulus"),
+            poissons_ratio=poissons_ratio,
+            name=name,
+            hardness=si(hardness, "pressure", "hardness"),
+            yield_strength=si(yield_strength, "pressure", "yield_strength"),
+            surface_energy=si(surface_energy, "surface_energy", "surface_energy"),
+            source=source,
+        )
+
+
+ElasticMaterial = Material
+"""Alias of :class:`Material` for code that only needs the elastic constants."""
+
+
+# --- composite quantities ------------------------------------------------------------------------
+
+def _sum_over_bodies(a: Material, b: Material | None, term: Callable[[Material], float]) -> float:
+    """Sum ``term`` over the two bodies; a rigid body (``b=None``) contributes nothing."""
+    return sum(term(body) for body in _deformable_bodies(a, b))
+
+
+def _deformable_bodies(a: Material, b: Material | None) -> tuple[Material, ...]:
+    """Check the pair and return its deformable bodies (``b=None`` is rigid and left out)."""
+    for field, body in (("a", a), ("b", b)):
+        if not (isinstance(body, Material) or (field == "b" and body is None)):
+            raise InputError(field, f"expected a Material, got {type(body).__name__}.",
+                             "pass Material(youngs_modulus=..., poissons_ratio=...) or get_material(name)"
+                             + (" (or None for a rigid counter-body)." if field == "b" else "."))
+    return (a,) if b is None else (a, b)
+
+
+def _hertz_compliance(material: Material) -> float:
+    return (1.0 - material.poissons_ratio**2) / material.youngs_modulus
+
+
+def _paper002_printed_compliance(material: Material) -> float:
+    return (1.0 - material.poissons_ratio) / material.youngs_modulus
+
+
+_CONTACT_MODULUS_FORMS = {
+    "standard": _hertz_compliance,
+    "paper002_eq7_printed": _paper002_printed_compliance,
+}
+
+
+def contact_modulus(a: Material, b: Material | None = None, *, form: str = "standard") -> float:
+    r"""Hertz contact (composite, reduced) modulus E* of two elastic bodies [Pa].
+
+    .. math:: \frac{1}{E^*} = \frac{1 - \nu_1^2}{E_1} + \frac{1 - \nu_2^2}{E_2}
+
+    Parameters
+    ----------
+    a : Material
+        First body.
+    b : Material or None
+        Second body; ``None`` is a rigid counter-body (E* = E1 / (1 - nu1^2)).
+    form : {"standard", "paper002_eq7_printed"}
+        ``"standard"`` is the formula above (paper 000 eq. 1, paper 001 E_s in eq. 11).
+        ``"paper002_eq7_printed"`` is paper 002 eq. 7 as printed, with (1 - nu) in place of
+        (1 - nu^2). It is kept only to trace the printed text: it does not reproduce the paper's
+        own numbers. For Table I (SU-8 7.64 GPa / 0.22 against diamond 1140 GPa / 0.07) the
+        standard form gives 7.97 GPa, which reproduces the paper's omega_c = 0.0125 um (eq. 6)
+        and psi = 1.86; the printed form gives 9.72 GPa; the printed value 8.31 GPa matches neither.
+
+    Returns
+    -------
+    float
+        E* [Pa].
+
+    Raises
+    ------
+    InputError
+        If ``a`` or ``b`` is not a Material, or ``form`` is unknown.
+
+    References
+    ----------
+    K. L. Johnson, *Contact Mechanics*, Cambridge University Press, 1985, section 4.2 (Hertz theory).
+    doi:10.1017/CBO9781139171731.
+    Seed paper 000, eq. 1; seed paper 002, eq. 7 (printed with a typo, see ``form``).
+    """
+    if form not in _CONTACT_MODULUS_FORMS:
+        raise InputError("form", f"unknown form {form!r}.",
+                         f"choose one of {sorted(_CONTACT_MODULUS_FORMS)}.")
+    return 1.0 / _sum_over_bodies(a, b, _CONTACT_MODULUS_FORMS[form])
+
+
+def composite_modulus(youngs_modulus_1: float, poissons_ratio_1: float,
+                      youngs_modulus_2: float, poissons_ratio_2: float) -> float:
+    r"""Composite Young's modulus of paper 000, eq. 1 [Pa]: the Hertz E* with plain numbers.
+
+    .. math:: E = \left(\frac{1 - \nu_1^2}{E_1} + \frac{1 - \nu_2^2}{E_2}\right)^{-1}
+
+    Identical to :func:`contact_modulus` (which it calls); kept under paper 000's name and
+    signature for the Winkler-layer friction model.
+
+    Parameters
+    ----------
+    youngs_modulus_1, youngs_modulus_2 : float
+        Young's moduli of the two surfaces [Pa].
+    poissons_ratio_1, poissons_ratio_2 : float
+        Poisson's ratios of the two surfaces [-].
+
+    Returns
+    -------
+    float
+        Composite modulus [Pa].
+
+    Raises
+    ------
+    InputError
+        Invalid moduli or Poisson's ratios (the field names which body).
+
+    References
+    ----------
+    Seed paper 000, eq. 1. K. L. Johnson, *Contact Mechanics*, 1985, section 4.2.
+    doi:10.1017/CBO9781139171731
+    """
+    return contact_modulus(_numbered_material(youngs_modulus_1, poissons_ratio_1, 1),
+                           _numbered_material(youngs_modulus_2, poissons_ratio_2, 2))
+
+
+def _numbered_material(youngs_modulus: float, poissons_ratio: float, number: int) -> Material:
+    """Build a Material from plain numbers, renaming error fields to ``youngs_modulus_<number>``."""
+    try:
+        return Material(youngs_modulus, poissons_ratio)
+    except InputError as error:
+        raise InputError(f"{error.field}_{number}", error.problem, error.fix) from None
+
+
+def effective_shear_modulus_paper001(a: Material, b: Material | None = None) -> float:
+    r"""Effective shear modulus G_s as defined in paper 001 (below eq. 10) [Pa].
+
+    .. math:: \frac{1}{G_s} = \sum_i \frac{(2 - \nu_i)(1 + \nu_i)}{2 E_i}
+              = \sum_i \frac{2 - \nu_i}{4 G_i}
+
+    This is 4 times Johnson's G* (:func:`johnson_shear_modulus`): G_s = 4 G*. Paper 001 uses it
+    with the prefactors of Johnson's Mindlin solution (delta_0 = 3 mu F0 / (16 a G),
+    K_L = 8 a G), which belong to G*; used with G_s as printed, K_L is 4 times the textbook
+    Mindlin stiffness. With G_s the consistent prefactors are delta_0 = 3 mu F0 / (4 a G_s)
+    and K_L = 2 a G_s.
+
+    Parameters
+    ----------
+    a : Material
+        First body.
+    b : Material or None
+        Second body; ``None`` is rigid.
+
+    Returns
+    -------
+    float
+        G_s [Pa].
+
+    References
+    ----------
+    Seed paper 001, text below eq. 10. doi:10.1115/1.4045900
+    """
+    return 1.0 / _sum_over_bodies(a, b, lambda m: (2.0 - m.poissons_ratio) / (4.0 * m.shear_modulus))
+
+
+def johnson_shear_modulus(a: Material, b: Material | None = None) -> float:
+    r"""Johnson's composite shear modulus G* of the Mindlin tangential contact [Pa].
+
+    .. math:: \frac{1}{G^*} = \frac{2 - \nu_1}{G_1} + \frac{2 - \nu_2}{G_2}
+
+    With it the Mindlin (1949) tangential compliance of a circular contact of radius a reads
+    delta_x = 3 mu P / (16 a G*) [1 - (1 - Q / (mu P))^(2/3)] and the initial lateral stiffness is
+    8 a G*. Relation to paper 001: G_s = 4 G* (:func:`effective_shear_modulus_paper001`).
+
+    Parameters
+    ----------
+    a : Material
+        First body.
+    b : Material or None
+        Second body; ``None`` is rigid.
+
+    Returns
+    -------
+    float
+        G* [Pa].
+
+    References
+    ----------
+    K. L. Johnson, *Contact Mechanics*, Cambridge University Press, 1985, section 7.2
+    (tangential loading of a Hertz contact). doi:10.1017/CBO9781139171731.
+    R. D. Mindlin, "Compliance of elastic bodies in contact", J. Appl. Mech. 16 (1949) 259-268.
+    doi:10.1115/1.4009973
+    """
+    return 1.0 / _sum_over_bodies(a, b, lambda m: (2.0 - m.poissons_ratio) / m.shear_modulus)
+
+
+def dundurs_beta(a: Material, b: Material | None = None) -> float:
+    r"""Dundurs' second bimaterial parameter beta [-] (plane strain).
+
+    .. math:: \beta = \frac{1}{2}\,
+              \frac{(1 - 2\nu_1)/G_1 - (1 - 2\nu_2)/G_2}{(1 - \nu_1)/G_1 + (1 - \nu_2)/G_2}
+
+    Sign convention: Johnson's (1985, section 5.4), which is Dundurs' (1969) with body 1 = ``a``;
+    beta > 0 when body ``a`` is the more compliant in the (1 - 2 nu)/G sense. It is antisymmetric,
+    beta(a, b) = -beta(b, a), zero for identical bodies and for two incompressible ones
+    (nu = 0.5), and lies in [-1/2, 1/2] when both 0 <= nu <= 0.5 (auxetic materials can
+    exceed it). It couples normal pressure with tangential
+    displacement: with beta = 0 normal and tangential contact problems decouple. Against a rigid
+    body (``b=None``) beta = (1 - 2 nu1) / (2 (1 - nu1)).
+
+    Parameters
+    ----------
+    a : Material
+        Body 1.
+    b : Material or None
+        Body 2; ``None`` is rigid.
+
+    Returns
+    -------
+    float
+        beta [-].
+
+    References
+    ----------
+    J. Dundurs, discussion of "Edge-bonded dissimilar orthogonal elastic wedges under normal and
+    shear loading", J. Appl. Mech. 36 (1969) 650-652. doi:10.1115/1.3564739.
+    K. L. Johnson, *Contact Mechanics*, 1985, section 5.4. doi:10.1017/CBO9781139171731
+    """
+    def terms(body: Material | None) -> tuple[float, float]:
+        if body is None:
+            return 0.0, 0.0
+        return ((1.0 - 2.0 * body.poissons_ratio) / body.shear_modulus,
+                (1.0 - body.poissons_ratio) / body.shear_modulus)
+
+    _deformable_bodies(a, b)
+    (mismatch_a, compliance_a), (mismatch_b, compliance_b) = terms(a), terms(b)
+    return 0.5 * (mismatch_a - mismatch_b) / (compliance_a + compliance_b)
+
+
+_WINKLER_READINGS = ("paper000_eq4_printed", "uniaxial_strain")
+
+
+def winkler_factor(poissons_ratio_1: float, poissons_ratio_2: float, *,
+                   reading: str = "paper000_eq4_printed") -> float:
+    r"""Factor k of the Winkler springs of paper 000 (eq. 3: P = E / (k h) dz) [-].
+
+    ``"paper000_eq4_printed"`` (default, the paper's formula, with s = sqrt(nu1 nu2)):
+
+    .. math:: k = \frac{(1 + s)(1 - 2 s)}{1 - \nu_1 \nu_2}
+
+    For one material (nu1 = nu2 = nu) it reduces to (1 - 2 nu) / (1 - nu), because
+    1 - nu^2 = (1 - nu)(1 + nu); it is *not* the uniaxial-strain (laterally constrained column)
+    factor E / M = (1 + nu)(1 - 2 nu) / (1 - nu). The paper's denominator is ambiguous (seed
+    README); ``"uniaxial_strain"`` replaces it by (1 - s), which does reduce to
+    (1 + nu)(1 - 2 nu) / (1 - nu):
+
+    .. math:: k = \frac{(1 + s)(1 - 2 s)}{1 - s}
+
+    Both give k = 0 (infinitely stiff springs) for nu1 = nu2 = 0.5 and k = 1 for nu = 0.
+
+    Parameters
+    ----------
+    poissons_ratio_1, poissons_ratio_2 : float
+        Poisson's ratios of the two surfaces [-], each in [0, 0.5]: the geometric mean
+        sqrt(nu1 nu2) is undefined for a negative product and meaningless for auxetic materials.
+    reading : {"paper000_eq4_printed", "uniaxial_strain"}
+        Which denominator, see above.
+
+    Returns
+    -------
+    float
+        k [-].
+
+    Raises
+    ------
+    InputError
+        A Poisson's ratio outside [0, 0.5], or an unknown ``reading``.
+
+    References
+    ----------
+    Seed paper 000, eqs. 3-4.
+    """
+    for number, value in ((1, poissons_ratio_1), (2, poissons_ratio_2)):
+        field = f"poissons_ratio_{number}"
+        _check_poissons_ratio(value, field)
+        if value < 0:
+            raise InputError(field, f"{value!r} < 0: sqrt(nu1 * nu2) of paper 000 eq. 4 is undefined.",
+                             "give 0 <= nu <= 0.5; the Winkler factor has no reading for auxetic materials.")
+    if reading not in _WINKLER_READINGS:
+        raise InputError("reading", f"unknown reading {reading!r}.",
+                         f"choose one of {list(_WINKLER_READINGS)}.")
+    product = poissons_ratio_1 * poissons_ratio_2
+    root = math.sqrt(product)
+    denominator = 1.0 - product if reading == "paper000_eq4_printed" else 1.0 - root
+    return (1.0 + root) * (1.0 - 2.0 * root) / denominator
+
+
+def reduced_modulus_to_youngs(reduced_modulus: float, indenter: Material, poissons_ratio: float) -> float:
+    r"""Young's modulus of an indented sample from its reduced modulus (Oliver-Pharr) [Pa].
+
+    .. math:: \frac{1 - \nu_s^2}{E_s} = \frac{1}{E_r} - \frac{1 - \nu_i^2}{E_i}
+
+    Parameters
+    ----------
+    reduced_modulus : float
+        Measured reduced modulus E_r [Pa].
+    indenter : Material
+        Indenter tip, e.g. ``get_material("diamond berkovich")`` (1141 GPa, 0.07).
+    poissons_ratio : float
+        Poisson's ratio of the sample nu_s [-] (paper 001 takes 0.5 for the polymers).
+
+    Returns
+    -------
+    float
+        Sample Young's modulus E_s [Pa].
+
+    Raises
+    ------
+    InputError
+        A non-positive reduced modulus, an invalid Poisson's ratio, or a reduced modulus not
+        below the indenter's own E_i / (1 - nu_i^2) (the sample would need a negative compliance).
+
+    References
+    ----------
+    W. C. Oliver and G. M. Pharr, J. Mater. Res. 7 (1992) 1564-1583. doi:10.1557/JMR.1992.1564.
+    Seed paper 001, eq. 8. doi:10.1115/1.4045900
+    """
+    _check_positive(reduced_modulus, "reduced_modulus", "3e9 (3 GPa)")
+    _check_poissons_ratio(poissons_ratio)
+    sample_compliance = 1.0 / reduced_modulus - _sum_over_bodies(indenter, None, _hertz_compliance)
+    if sample_compliance <= 0:
+        raise InputError("reduced_modulus",
+                         f"{reduced_modulus:.4g} Pa is not below the indenter's own modulus "
+                         f"E_i/(1-nu_i^2) = {contact_modulus(indenter):.4g} Pa.",
+                         "check the units of the reduced modulus and the indenter properties.")
+    return (1.0 - poissons_ratio**2) / sample_compliance
+
+
+# --- the papers' materials -----------------------------------------------------------------------
+
+def _library(*materials: Material) -> Mapping[str, Material]:
+    return MappingProxyType({m.name.lower(): m for m in materials})
+
+
+MATERIALS: Mapping[str, Material] = _library(
+    Material(110e9, 0.22, "polysilicon",
+             source="seed paper 000, section 4 (E by Oliver-Pharr nanoindentation; nu from its ref. 38)"),
+    Material(70e9, 0.17, "SiO2", surface_energy=72e-3,
+             source="seed paper 000, section 4 (E, nu from its ref. 37; 72 mJ/m^2 used for the cantilever "
+                    "tip, from its ref. 40)"),
+    Material(130e9, 0.28, "silicon wafer", source="seed paper 001, Table 2 (supplier values)"),
+    Material(0.98e9, 0.5, "HDPE", source="seed paper 001, Table 2 (nanoindentation, nu assumed 0.5)"),
+    Material(1.38e9, 0.5, "POM", source="seed paper 001, Table 2 (nanoindentation, nu assumed 0.5)"),
+    Material(7.64e9, 0.22, "SU-8", hardness=0.462e9, yield_strength=0.165e9,
+             source="seed paper 002, Table I (E, H, Y measured; nu from Kim et al.)"),
+    Material(1140e9, 0.07, "diamond flat tip", source="seed paper 002, Table I (Hysitron)"),
+    Material(1141e9, 0.07, "diamond Berkovich", source="seed paper 001, text of eq. 8"),
+)
+"""Read-only library of the seed papers' materials, keyed by lower-case name."""
+
+
+def get_material(name: str) -> Material:
+    """Return a material of :data:`MATERIALS` by name, case-insensitively.
+
+    Parameters
+    ----------
+    name : str
+        e.g. ``"SU-8"``, ``"sio2"``, ``"Diamond Berkovich"``; underscores count as spaces.
+
+    Returns
+    -------
+    Material
+        The library entry.
+
+    Raises
+    ------
+    InputError
+        Unknown name; the message lists the known ones.
+    """
+    key = " ".join(str(name).replace("_", " ").lower().split())
+    if key not in MATERIALS:
+        raise InputError("material", f"unknown material {name!r}.",
+                         f"use one of {[m.name for m in MATERIALS.values()]} or define a Material.")
+    return MATERIALS[key]
