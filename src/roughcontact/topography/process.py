@@ -1,5 +1,8 @@
-"""Processing of topographies: filling undefined points, detrending, background removal,
-cropping, resampling and combining two surfaces into one composite.
+"""Processing of topographies: fill, detrend, remove a sphere, crop, resample, combine.
+
+Filling undefined points works on raw height arrays (before a Topography exists); detrending,
+background removal, cropping, resampling and combining two surfaces into one composite work on
+topographies.
 
 Every function returns a new :class:`~roughcontact.topography.surface.Topography` and records
 the step in ``info['history']``.
@@ -7,11 +10,14 @@ the step in ``info['history']``.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
-from scipy import sparse
+from scipy import ndimage, optimize, sparse
 from scipy.sparse import linalg as sparse_linalg
 
 from ..errors import InputError
+from .surface import Topography
 
 
 def fill_undefined(heights: np.ndarray, *, field: str = "heights") -> np.ndarray:
@@ -75,3 +81,365 @@ def fill_undefined(heights: np.ndarray, *, field: str = "heights") -> np.ndarray
     # the grid is connected and at least one point is defined.
     heights[missing] = sparse_linalg.spsolve(laplacian, rhs)
     return heights
+
+
+# --- least-squares backgrounds -------------------------------------------------------------------
+
+_DETREND_MODES = ("mean", "plane", "curvature")
+
+
+def _normalised_coordinates(topography: Topography, *, scale: float | None = None) -> list[np.ndarray]:
+    """Centred grid coordinates divided by ``scale`` (default: each axis' own size), for conditioning."""
+    grids = topography.meshgrid()
+    scales = [scale] * topography.dim if scale else topography.size
+    return [(g - g.mean()) / s for g, s in zip(grids, scales, strict=True)]
+
+
+def _least_squares(heights: np.ndarray, terms: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    """Fit ``heights`` by a linear combination of ``terms``; return (fitted background, coefficients)."""
+    design = np.stack([np.broadcast_to(t, heights.shape).ravel() for t in terms], axis=1)
+    coefficients = np.linalg.lstsq(design, heights.ravel(), rcond=None)[0]
+    return (design @ coefficients).reshape(heights.shape), coefficients
+
+
+def detrend(topography: Topography, mode: str = "plane") -> Topography:
+    """Subtract a least-squares polynomial background.
+
+    ===============  =========================================  ==================
+    ``mode``         2D background                              1D (profile)
+    ===============  =========================================  ==================
+    ``"mean"``       a                                          a
+    ``"plane"``      a + b x + c y                              a + b x (line)
+    ``"curvature"``  a + b x + c y + d x^2 + e x y + f y^2      a + b x + d x^2
+    ===============  =========================================  ==================
+
+    The fit is an ordinary least-squares fit over all grid points (coordinates centred and
+    scaled internally for conditioning), so detrending twice changes nothing beyond rounding.
+
+    Periodic surfaces: ``"mean"`` keeps them periodic. A periodic surface has no tilt or
+    curvature in the periodic sense, and subtracting a plane or quadratic makes its opposite
+    edges disagree, so ``"plane"`` and ``"curvature"`` return ``periodic=False``.
+
+    Parameters
+    ----------
+    topography : Topography
+        Surface to detrend (heights [m]).
+    mode : {"mean", "plane", "curvature"}
+        Background to remove, see the table.
+
+    Returns
+    -------
+    Topography
+        Heights [m] minus the fitted background, step recorded in ``info['history']``.
+
+    Raises
+    ------
+    InputError
+        Unknown ``mode``.
+    """
+    if mode not in _DETREND_MODES:
+        raise InputError("mode", f"unknown detrend mode {mode!r}.", f"choose one of {list(_DETREND_MODES)}.")
+    coordinates = _normalised_coordinates(topography)
+    terms = [np.ones(topography.shape)]
+    if mode in ("plane", "curvature"):
+        terms += coordinates
+    if mode == "curvature":
+        terms += [a * b for i, a in enumerate(coordinates) for b in coordinates[i:]]
+    background, _ = _least_squares(topography.heights, terms)
+    return topography.with_heights(topography.heights - background, step=f"detrend(mode={mode!r})",
+                                   periodic=topography.periodic and mode == "mean")
+
+
+def remove_sphere(topography: Topography, *, fit: str = "sphere") -> tuple[Topography, float]:
+    """Remove a spherical background (e.g. the ball of paper 001) and return its radius.
+
+    The surface is fitted by a cap of curvature kappa = 1 / R whose apex (x0, y0, z0) is free,
+    so tilt is absorbed by the apex position:
+
+    * ``fit="paraboloid"``: z = z0 - kappa r^2 / 2, with r^2 = (x - x0)^2 + (y - y0)^2; linear
+      least squares in the expanded form a + b x + c y + d (x^2 + y^2), one curvature (isotropic).
+    * ``fit="sphere"`` (default): the exact cap z = z0 - kappa r^2 / (1 + sqrt(1 - kappa^2 r^2)),
+      by nonlinear least squares (vertical residuals) started from the paraboloid fit. A
+      paraboloid fitted to a true sphere is biased at order (r / R)^2 and leaves a residual of
+      order r^4 / (8 R^3). For paper 001's geometry (1.1 mm scan of a 5 mm-radius ball, apex off
+      centre) we measured a 0.56 % radius bias and a 0.28 um peak residual, comparable with the
+      POM roughness (0.67 um rms), hence this default.
+
+    Heights point out of the body, so a ball (convex cap) gives R > 0 and a dimple R < 0. A
+    profile (1D) is fitted by a circle / parabola in the same way. The result is non-periodic.
+
+    Parameters
+    ----------
+    topography : Topography
+        Surface of a curved body (heights [m]).
+    fit : {"sphere", "paraboloid"}
+        Background model, see above.
+
+    Returns
+    -------
+    flattened : Topography
+        Heights [m] minus the fitted cap ("flattened roughness", paper 001 Fig. 5).
+    radius : float
+        Fitted radius of curvature R [m] (signed as above).
+
+    Raises
+    ------
+    InputError
+        Unknown ``fit``, or a surface without any curvature (use :func:`detrend` instead).
+
+    References
+    ----------
+    Seed paper 001, section 4 (flattened roughness of the balls). doi:10.1115/1.4045900
+    """
+    if fit not in ("sphere", "paraboloid"):
+        raise InputError("fit", f"unknown fit {fit!r}.", "choose 'sphere' or 'paraboloid'.")
+    scale = max(topography.size)  # one length scale for all axes keeps the curvature isotropic
+    coordinates = _normalised_coordinates(topography, scale=scale)
+    heights = topography.heights / scale
+    radial = sum(c**2 for c in coordinates)
+    background, (offset, *slopes, quadratic) = _least_squares(heights, [np.ones(heights.shape), *coordinates,
+                                                                        radial])
+    if quadratic == 0:
+        raise InputError("topography", "the surface has no curvature to fit a sphere to.",
+                         "use detrend(topography, mode='plane') for a flat surface.")
+    curvature = -2.0 * quadratic  # dimensionless: kappa * scale
+    if fit == "sphere":
+        apex = [-s / (2.0 * quadratic) for s in slopes]
+        start = [*apex, offset - sum(s**2 for s in slopes) / (4.0 * quadratic), curvature]
+        solution = optimize.least_squares(lambda p: (_spherical_cap(coordinates, p) - heights).ravel(), start,
+                                          x_scale="jac", ftol=1e-15, xtol=1e-15, gtol=1e-15)
+        background, curvature = _spherical_cap(coordinates, solution.x), solution.x[-1]
+    radius = scale / curvature
+    flattened = topography.with_heights(topography.heights - background * scale, periodic=False,
+                                        step=f"remove_sphere(fit={fit!r}) radius={radius:.6g} m")
+    return flattened, float(radius)
+
+
+def _spherical_cap(coordinates: list[np.ndarray], parameters: np.ndarray) -> np.ndarray:
+    """Heights of a spherical cap with apex (*centre, apex_height) and curvature (all dimensionless)."""
+    *centre, apex_height, curvature = parameters
+    radial = sum((c - c0) ** 2 for c, c0 in zip(coordinates, centre, strict=True))
+    return apex_height - curvature * radial / (1.0 + np.sqrt(np.maximum(1.0 - curvature**2 * radial, 0.0)))
+
+
+# --- grids ---------------------------------------------------------------------------------------
+
+_PIXEL_TOLERANCE = 1e-9  # fraction of a pixel below which a coordinate counts as on a grid point
+
+
+def crop(topography: Topography, x: tuple[float, float] | None = None,
+         y: tuple[float, float] | None = None) -> Topography:
+    """Cut out a rectangular window given in metres.
+
+    Intervals are half-open: grid point i along x (at ``x_i = i * spacing[0]``, the first point at
+    0) is kept when ``start <= x_i < stop``; a coordinate within 1e-9 pixel of a grid point counts
+    as on it, so round-off in ``start``/``stop`` does not shift the window by a pixel. ``None``
+    keeps the whole axis. The new grid starts again at 0 with the same spacing, and its size is
+    the number of kept points times the spacing. The result is non-periodic.
+
+    Parameters
+    ----------
+    topography : Topography
+        Surface to crop.
+    x, y : tuple of float, optional
+        (start, stop) [m] along x and y; ``y`` only for a 2D map.
+
+    Returns
+    -------
+    Topography
+        The window, step recorded in ``info['history']``.
+
+    Raises
+    ------
+    InputError
+        A window on an axis the topography lacks, with start >= stop, or keeping fewer than 2
+        points along an axis.
+    """
+    if y is not None and topography.dim == 1:
+        raise InputError("y", "a profile (1D topography) has no y axis.", "crop a profile along x only.")
+    slices = []
+    for field, window, n, spacing in zip(("x", "y"), (x, y), topography.shape, topography.spacing,
+                                         strict=False):
+        if window is None:
+            slices.append(slice(None))
+            continue
+        start, stop = (float(v) for v in window)
+        first, last = (max(0, min(n, math.ceil(v / spacing - _PIXEL_TOLERANCE))) for v in (start, stop))
+        if not start < stop or last - first < 2:
+            raise InputError(field, f"window ({start:.6g}, {stop:.6g}) m keeps {max(last - first, 0)} points "
+                                    f"of a grid of {n} points spaced {spacing:.6g} m.",
+                             "give start < stop [m] spanning at least 2 grid points inside the topography.")
+        slices.append(slice(first, last))
+    heights = topography.heights[tuple(slices)]
+    size = tuple(n * s for n, s in zip(heights.shape, topography.spacing, strict=True))
+    return topography.with_heights(heights, size=size, periodic=False, step=f"crop(x={x}, y={y})")
+
+
+def _spacing_tuple(spacing: float | tuple[float, ...], dim: int, field: str) -> tuple[float, ...]:
+    values = np.atleast_1d(np.asarray(spacing, dtype=float))
+    if values.size == 1:
+        values = np.repeat(values, dim)
+    if values.shape != (dim,) or not np.all(np.isfinite(values)) or np.any(values <= 0):
+        raise InputError(field, f"{spacing!r} is not {dim} positive finite length(s).",
+                         f"give the pixel size in metres, one value or one per axis ({dim}).")
+    return tuple(float(v) for v in values)
+
+
+def _sample(topography: Topography, shape: tuple[int, ...], spacing: tuple[float, ...]) -> np.ndarray:
+    """Heights at the grid points ``j * spacing`` (j < shape) by cubic-spline interpolation.
+
+    Axes whose spacing is unchanged are sampled at the original points exactly; when no axis
+    changes the heights are sliced, not interpolated. Periodic surfaces wrap around.
+    """
+    axes = list(zip(shape, spacing, topography.shape, topography.spacing, strict=True))
+    if all(math.isclose(new, old, rel_tol=1e-12) and n <= m for n, new, m, old in axes):
+        return topography.heights[tuple(slice(n) for n in shape)].copy()
+    positions = [np.arange(n) * (new / old) for n, new, _, old in axes]
+    grid = np.meshgrid(*positions, indexing="ij")
+    mode = "grid-wrap" if topography.periodic else "nearest"
+    return ndimage.map_coordinates(topography.heights, grid, order=3, mode=mode)
+
+
+def _shape_for(topography: Topography,
+               spacing: tuple[float, ...]) -> tuple[tuple[int, ...], tuple[float, ...]]:
+    """Return the shape and spacing of the resampled grid (see resample)."""
+    if topography.periodic:
+        shape = tuple(max(2, round(s / h)) for s, h in zip(topography.size, spacing, strict=True))
+        return shape, tuple(s / n for s, n in zip(topography.size, shape, strict=True))
+    return _points_within(topography, spacing), spacing
+
+
+def _points_within(topography: Topography, spacing: tuple[float, ...]) -> tuple[int, ...]:
+    """Count the points ``j * spacing`` per axis up to the last grid point of ``topography``."""
+    return tuple(math.floor((n - 1) * old / new + _PIXEL_TOLERANCE) + 1
+                 for n, old, new in zip(topography.shape, topography.spacing, spacing, strict=True))
+
+
+def resample(topography: Topography, spacing: float | tuple[float, ...]) -> Topography:
+    """Interpolate a topography onto a grid of another pixel size.
+
+    Interpolation is by cubic B-splines (``scipy.ndimage.map_coordinates``, order 3), wrapping
+    around for periodic surfaces. It is exact on the original grid points, so an unchanged
+    spacing returns the heights unchanged. There is no anti-alias filter: when coarsening,
+    wavelengths shorter than two new pixels alias; low-pass filter first if they matter.
+
+    The new grid keeps the first point at 0 and
+
+    * non-periodic: takes exactly the requested spacing h and as many points as fit up to the
+      last original point (no extrapolation): n' = floor((n - 1) dx / h) + 1, so the size
+      n' h differs from the original size by less than max(dx, h);
+    * periodic: keeps the period exactly and periodicity, with n' = round(size / h) points, so
+      the spacing is size / n' (within half a pixel in n' of the request).
+
+    Parameters
+    ----------
+    topography : Topography
+        Surface to resample.
+    spacing : float or tuple of float
+        New pixel size [m], one value or one per axis.
+
+    Returns
+    -------
+    Topography
+        Resampled surface, step recorded in ``info['history']``.
+
+    Raises
+    ------
+    InputError
+        A spacing that is not positive and finite, or with the wrong number of values.
+    """
+    shape, spacing = _shape_for(topography, _spacing_tuple(spacing, topography.dim, "spacing"))
+    heights = _sample(topography, shape, spacing)
+    size = tuple(n * h for n, h in zip(shape, spacing, strict=True))
+    return topography.with_heights(heights, size=size, step=f"resample(spacing={spacing})")
+
+
+def common_spacing(a: Topography, b: Topography) -> tuple[float, ...]:
+    """Return the finer of the two pixel sizes along each axis [m].
+
+    Parameters
+    ----------
+    a, b : Topography
+        Two surfaces with the same number of axes.
+
+    Returns
+    -------
+    tuple of float
+        ``min(a.spacing[k], b.spacing[k])`` for each axis k.
+    """
+    _check_same_dim(a, b)
+    return tuple(min(p, q) for p, q in zip(a.spacing, b.spacing, strict=True))
+
+
+def _check_same_dim(a: Topography, b: Topography) -> None:
+    if a.dim != b.dim:
+        raise InputError("b", f"a is {a.dim}D and b is {b.dim}D.", "combine two maps or two profiles.")
+
+
+def combine(a: Topography, b: Topography, *, resample: bool = False) -> Topography:
+    r"""Composite topography of two rough surfaces touching face to face.
+
+    The contact of two rough elastic bodies is mapped onto a rough surface against a rigid
+    flat (paper 000 sums the asperities of the two topographies; paper 001 eq. 2 gives the
+    initial gap h = max(z1) + max(z2) - (z1 + z2)). The composite height is
+
+    .. math:: z = z_1 + z_2 - \langle z_1 + z_2 \rangle
+
+    with each z_i measured from its own reference plane and pointing towards the other body
+    (detrend or :func:`remove_sphere` first). The mean is removed because only height
+    differences matter for the gap. No mirroring is done: point (x, y) of ``a`` faces point
+    (x, y) of ``b``; flip one surface first if its scan was recorded in a mirrored frame.
+    The result is symmetric: ``combine(a, b)`` and ``combine(b, a)`` have equal heights.
+
+    Grids: by default both must have the same shape and physical size (relative 1e-9). With
+    ``resample=True`` both are interpolated (cubic splines, as in :func:`resample`) onto one
+    common grid: both grids start at 0; the window is the overlap (up to the smaller extent
+    per axis); the spacing is the finer of the two per axis (:func:`common_spacing`), so no
+    measured detail is thrown away. Two periodic surfaces of equal period stay periodic with
+    n = round(period / spacing) points; otherwise the result is non-periodic.
+
+    Parameters
+    ----------
+    a, b : Topography
+        The two surfaces (heights [m]).
+    resample : bool
+        Bring mismatched grids onto a common grid instead of refusing them.
+
+    Returns
+    -------
+    Topography
+        Composite heights [m]; ``info['sources']`` holds both inputs' info, and the step is
+        recorded in ``info['history']``.
+
+    Raises
+    ------
+    InputError
+        A profile with a map (always), or different shapes or sizes without ``resample=True``.
+
+    References
+    ----------
+    Seed paper 000, section 2 (summed asperities, Fig. 1); seed paper 001, eq. 2.
+    doi:10.1115/1.4045900
+    """
+    _check_same_dim(a, b)
+    same_size = all(math.isclose(p, q, rel_tol=1e-9) for p, q in zip(a.size, b.size, strict=True))
+    if not resample:
+        if a.shape != b.shape or not same_size:
+            which = "shape" if a.shape != b.shape else "size"
+            raise InputError("b", f"grid {which} differs: a is {a.shape} points over {a.size} m, "
+                                  f"b is {b.shape} points over {b.size} m.",
+                             "pass resample=True to interpolate both onto a common grid.")
+        heights_a, heights_b, size, periodic = a.heights, b.heights, a.size, a.periodic and b.periodic
+    else:
+        spacing = common_spacing(a, b)
+        periodic = a.periodic and b.periodic and same_size
+        if periodic:
+            shape, spacing = _shape_for(a, spacing)
+        else:
+            shape = tuple(map(min, _points_within(a, spacing), _points_within(b, spacing)))
+        heights_a, heights_b = _sample(a, shape, spacing), _sample(b, shape, spacing)
+        size = tuple(n * h for n, h in zip(shape, spacing, strict=True))
+    heights = heights_a + heights_b
+    info = {"name": "composite", "sources": (dict(a.info), dict(b.info))}
+    result = Topography(heights - heights.mean(), size, periodic=periodic, info=info)
+    return result.with_heights(result.heights, step=f"combine(resample={resample})")
