@@ -70,6 +70,13 @@ def test_linear_ramp_has_exact_slope_on_non_periodic_grid():
         assert statistics.rms_slope(ramp, derivative=derivative) == approx(0.02, rel=1e-10)
 
 
+def test_forward_is_default_and_curvature_is_centred(rough):
+    assert statistics.rms_slope(rough) == statistics.rms_slope(rough, derivative="forward")
+    assert statistics.rms_slope(rough, derivative="central") < statistics.rms_slope(rough)
+    central = statistics.spectral_moments(rough, derivative="central")
+    assert statistics.spectral_moments(rough).m4 == central.m4
+
+
 def test_profile_moments_use_only_x(rough):
     profile = Topography(rough.heights[:, 0], rough.size[0], periodic=True)
     moments = statistics.spectral_moments(profile)

@@ -126,7 +126,7 @@ def _filtered_noise(shape: tuple[int, ...], size: tuple[float, ...],
 
 
 def _scaled(topography: Topography, rms_height: float | None, rms_slope: float | None) -> Topography:
-    """Rescale heights so the discrete Rq (or central-difference rms slope) equals the target exactly."""
+    """Rescale heights so the discrete Rq (or default rms slope) equals the target exactly."""
     if rms_height is not None:
         factor = rms_height / statistics.rq(topography)
     else:
@@ -169,7 +169,7 @@ def self_affine(shape: int | tuple[int, ...], size: float | tuple[float, ...], *
     The noise gives random phases and Rayleigh-distributed amplitudes about the target PSD. The
     heights are then multiplied by one factor so that the *discrete* statistics hit the target
     exactly (to round-off): Rq (:func:`~roughcontact.topography.statistics.rq`) for
-    ``rms_height``, or the central-difference rms slope
+    ``rms_height``, or the forward-difference rms slope
     (:func:`~roughcontact.topography.statistics.rms_slope`) for ``rms_slope``.
 
     Parameters
