@@ -64,9 +64,13 @@ def run(n: int, repeats: int) -> dict:
     t_sc_theirs, (sq, gradient, curvature) = best_of(lambda: theirs_scalars(peer), repeats)
     central_slope = statistics.rms_slope(topography, derivative="central")
     return {
-        "n": n, "repeats": repeats,
-        "psd_ours_s": t_psd_ours, "psd_theirs_s": t_psd_theirs, "psd_ratio": t_psd_ours / t_psd_theirs,
-        "scalars_ours_s": t_sc_ours, "scalars_theirs_s": t_sc_theirs,
+        "n": n,
+        "repeats": repeats,
+        "psd_ours_s": t_psd_ours,
+        "psd_theirs_s": t_psd_theirs,
+        "psd_ratio": t_psd_ours / t_psd_theirs,
+        "scalars_ours_s": t_sc_ours,
+        "scalars_theirs_s": t_sc_theirs,
         "scalars_ratio": t_sc_ours / t_sc_theirs,
         "rq_rel_diff": abs(summary["Rq"] / sq - 1),
         "slope_rel_diff": abs(summary["rms_slope"] / gradient - 1),
@@ -78,19 +82,32 @@ def run(n: int, repeats: int) -> dict:
 
 def main() -> None:
     rows = [run(n, repeats) for n, repeats in SIZES.items()]
-    header = (f"{'grid':>10} {'psd ours':>9} {'psd ST':>9} {'ratio':>6} {'scal ours':>9} {'scal ST':>9} "
-              f"{'ratio':>6} {'dRq':>8} {'dslope':>8} {'dcurv':>8} {'PSD |ln|':>8} {'cen/fwd':>7}")
-    print(f"roughcontact statistics vs SurfaceTopography {SurfaceTopography.__version__}, "
-          f"{os.cpu_count()} CPUs, {platform.processor() or platform.machine()}; times in s, best of N")
+    header = (
+        f"{'grid':>10} {'psd ours':>9} {'psd ST':>9} {'ratio':>6} {'scal ours':>9} {'scal ST':>9} "
+        f"{'ratio':>6} {'dRq':>8} {'dslope':>8} {'dcurv':>8} {'PSD |ln|':>8} {'cen/fwd':>7}"
+    )
+    print(
+        f"roughcontact statistics vs SurfaceTopography {SurfaceTopography.__version__}, "
+        f"{os.cpu_count()} CPUs, {platform.processor() or platform.machine()}; times in s, best of N"
+    )
     print(header)
     for r in rows:
-        print(f"{r['n']:>5}^2 x{r['repeats']} {r['psd_ours_s']:9.4f} {r['psd_theirs_s']:9.4f} "
-              f"{r['psd_ratio']:6.2f} {r['scalars_ours_s']:9.4f} {r['scalars_theirs_s']:9.4f} "
-              f"{r['scalars_ratio']:6.2f} {r['rq_rel_diff']:8.1e} {r['slope_rel_diff']:8.1e} "
-              f"{r['curvature_rel_diff']:8.1e} {r['psd_median_abs_log_ratio']:8.3f} "
-              f"{r['slope_central_vs_forward']:7.4f}")
-    print(json.dumps({"benchmark": "statistics", "peer": f"SurfaceTopography {SurfaceTopography.__version__}",
-                      "rows": rows}))
+        print(
+            f"{r['n']:>5}^2 x{r['repeats']} {r['psd_ours_s']:9.4f} {r['psd_theirs_s']:9.4f} "
+            f"{r['psd_ratio']:6.2f} {r['scalars_ours_s']:9.4f} {r['scalars_theirs_s']:9.4f} "
+            f"{r['scalars_ratio']:6.2f} {r['rq_rel_diff']:8.1e} {r['slope_rel_diff']:8.1e} "
+            f"{r['curvature_rel_diff']:8.1e} {r['psd_median_abs_log_ratio']:8.3f} "
+            f"{r['slope_central_vs_forward']:7.4f}"
+        )
+    print(
+        json.dumps(
+            {
+                "benchmark": "statistics",
+                "peer": f"SurfaceTopography {SurfaceTopography.__version__}",
+                "rows": rows,
+            }
+        )
+    )
 
 
 if __name__ == "__main__":

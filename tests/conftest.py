@@ -12,5 +12,7 @@ SHARED_TOPOGRAPHIES = ROOT.parent / "shared" / "data" / "topographies"
 def shared_topographies() -> Path:
     """Directory of the real instrument files (CI has ../shared beside the clone)."""
     if not SHARED_TOPOGRAPHIES.is_dir():
-        pytest.fail(f"real instrument files not found at {SHARED_TOPOGRAPHIES}; clone with ../shared beside it")
+        pytest.fail(
+            f"real instrument files not found at {SHARED_TOPOGRAPHIES}; clone with ../shared beside it"
+        )
     return SHARED_TOPOGRAPHIES

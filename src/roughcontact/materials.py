@@ -48,19 +48,28 @@ def _check_positive(value: float | None, field: str, example: str, *, allow_zero
     if value is None:
         return
     if isinstance(value, bool) or not isinstance(value, Real):
-        raise InputError(field, f"expected a number in SI units, got {type(value).__name__}.",
-                         f"give a float in SI units, or use Material.from_units(..., {field}={example!r}).")
+        raise InputError(
+            field,
+            f"expected a number in SI units, got {type(value).__name__}.",
+            f"give a float in SI units, or use Material.from_units(..., {field}={example!r}).",
+        )
     ok = math.isfinite(value) and (value >= 0 if allow_zero else value > 0)
     if not ok:
         bound = "non-negative" if allow_zero else "positive"
-        raise InputError(field, f"{value!r} is not a {bound} finite number.",
-                         f"give a {bound} value in SI units, e.g. {example}.")
+        raise InputError(
+            field,
+            f"{value!r} is not a {bound} finite number.",
+            f"give a {bound} value in SI units, e.g. {example}.",
+        )
 
 
 def _check_poissons_ratio(value: float, field: str = "poissons_ratio") -> None:
     if isinstance(value, bool) or not isinstance(value, Real) or not (-1.0 < value <= 0.5):
-        raise InputError(field, f"{value!r} is outside (-1, 0.5].",
-                         "give a Poisson's ratio with -1 < nu <= 0.5 (0.5 = incompressible, e.g. rubber).")
+        raise InputError(
+            field,
+            f"{value!r} is outside (-1, 0.5].",
+            "give a Poisson's ratio with -1 < nu <= 0.5 (0.5 = incompressible, e.g. rubber).",
+        )
 
 
 @dataclass(frozen=True)
@@ -169,6 +178,7 @@ ElasticMaterial = Material
 
 # --- composite quantities ------------------------------------------------------------------------
 
+
 def _sum_over_bodies(a: Material, b: Material | None, term: Callable[[Material], float]) -> float:
     """Sum ``term`` over the two bodies; a rigid body (``b=None``) contributes nothing."""
     return sum(term(body) for body in _deformable_bodies(a, b))
@@ -178,9 +188,12 @@ def _deformable_bodies(a: Material, b: Material | None) -> tuple[Material, ...]:
     """Check the pair and return its deformable bodies (``b=None`` is rigid and left out)."""
     for field, body in (("a", a), ("b", b)):
         if not (isinstance(body, Material) or (field == "b" and body is None)):
-            raise InputError(field, f"expected a Material, got {type(body).__name__}.",
-                             "pass Material(youngs_modulus=..., poissons_ratio=...) or get_material(name)"
-                             + (" (or None for a rigid counter-body)." if field == "b" else "."))
+            raise InputError(
+                field,
+                f"expected a Material, got {type(body).__name__}.",
+                "pass Material(youngs_modulus=..., poissons_ratio=...) or get_material(name)"
+                + (" (or None for a rigid counter-body)." if field == "b" else "."),
+            )
     return (a,) if b is None else (a, b)
 
 
@@ -234,13 +247,15 @@ def contact_modulus(a: Material, b: Material | None = None, *, form: str = "stan
     Seed paper 000, eq. 1; seed paper 002, eq. 7 (printed with a typo, see ``form``).
     """
     if form not in _CONTACT_MODULUS_FORMS:
-        raise InputError("form", f"unknown form {form!r}.",
-                         f"choose one of {sorted(_CONTACT_MODULUS_FORMS)}.")
+        raise InputError(
+            "form", f"unknown form {form!r}.", f"choose one of {sorted(_CONTACT_MODULUS_FORMS)}."
+        )
     return 1.0 / _sum_over_bodies(a, b, _CONTACT_MODULUS_FORMS[form])
 
 
-def composite_modulus(youngs_modulus_1: float, poissons_ratio_1: float,
-                      youngs_modulus_2: float, poissons_ratio_2: float) -> float:
+def composite_modulus(
+    youngs_modulus_1: float, poissons_ratio_1: float, youngs_modulus_2: float, poissons_ratio_2: float
+) -> float:
     r"""Composite Young's modulus of paper 000, eq. 1 [Pa]: the Hertz E* with plain numbers.
 
     .. math:: E = \left(\frac{1 - \nu_1^2}{E_1} + \frac{1 - \nu_2^2}{E_2}\right)^{-1}
@@ -270,8 +285,10 @@ def composite_modulus(youngs_modulus_1: float, poissons_ratio_1: float,
     Seed paper 000, eq. 1. K. L. Johnson, *Contact Mechanics*, 1985, section 4.2.
     doi:10.1017/CBO9781139171731
     """
-    return contact_modulus(_numbered_material(youngs_modulus_1, poissons_ratio_1, 1),
-                           _numbered_material(youngs_modulus_2, poissons_ratio_2, 2))
+    return contact_modulus(
+        _numbered_material(youngs_modulus_1, poissons_ratio_1, 1),
+        _numbered_material(youngs_modulus_2, poissons_ratio_2, 2),
+    )
 
 
 def _numbered_material(youngs_modulus: float, poissons_ratio: float, number: int) -> Material:
@@ -376,11 +393,14 @@ def dundurs_beta(a: Material, b: Material | None = None) -> float:
     shear loading", J. Appl. Mech. 36 (1969) 650-652. doi:10.1115/1.3564739.
     K. L. Johnson, *Contact Mechanics*, 1985, section 5.4. doi:10.1017/CBO9781139171731
     """
+
     def terms(body: Material | None) -> tuple[float, float]:
         if body is None:
             return 0.0, 0.0
-        return ((1.0 - 2.0 * body.poissons_ratio) / body.shear_modulus,
-                (1.0 - body.poissons_ratio) / body.shear_modulus)
+        return (
+            (1.0 - 2.0 * body.poissons_ratio) / body.shear_modulus,
+            (1.0 - body.poissons_ratio) / body.shear_modulus,
+        )
 
     _deformable_bodies(a, b)
     (mismatch_a, compliance_a), (mismatch_b, compliance_b) = terms(a), terms(b)
@@ -390,8 +410,9 @@ def dundurs_beta(a: Material, b: Material | None = None) -> float:
 _WINKLER_READINGS = ("paper000_eq4_printed", "uniaxial_strain")
 
 
-def winkler_factor(poissons_ratio_1: float, poissons_ratio_2: float, *,
-                   reading: str = "paper000_eq4_printed") -> float:
+def winkler_factor(
+    poissons_ratio_1: float, poissons_ratio_2: float, *, reading: str = "paper000_eq4_printed"
+) -> float:
     r"""Factor k of the Winkler springs of paper 000 (eq. 3: P = E / (k h) dz) [-].
 
     ``"paper000_eq4_printed"`` (default, the paper's formula, with s = sqrt(nu1 nu2)):
@@ -434,11 +455,15 @@ def winkler_factor(poissons_ratio_1: float, poissons_ratio_2: float, *,
         field = f"poissons_ratio_{number}"
         _check_poissons_ratio(value, field)
         if value < 0:
-            raise InputError(field, f"{value!r} < 0: sqrt(nu1 * nu2) of paper 000 eq. 4 is undefined.",
-                             "give 0 <= nu <= 0.5; the Winkler factor has no reading for auxetic materials.")
+            raise InputError(
+                field,
+                f"{value!r} < 0: sqrt(nu1 * nu2) of paper 000 eq. 4 is undefined.",
+                "give 0 <= nu <= 0.5; the Winkler factor has no reading for auxetic materials.",
+            )
     if reading not in _WINKLER_READINGS:
-        raise InputError("reading", f"unknown reading {reading!r}.",
-                         f"choose one of {list(_WINKLER_READINGS)}.")
+        raise InputError(
+            "reading", f"unknown reading {reading!r}.", f"choose one of {list(_WINKLER_READINGS)}."
+        )
     product = poissons_ratio_1 * poissons_ratio_2
     root = math.sqrt(product)
     denominator = 1.0 - product if reading == "paper000_eq4_printed" else 1.0 - root
@@ -479,30 +504,48 @@ def reduced_modulus_to_youngs(reduced_modulus: float, indenter: Material, poisso
     _check_poissons_ratio(poissons_ratio)
     sample_compliance = 1.0 / reduced_modulus - _sum_over_bodies(indenter, None, _hertz_compliance)
     if sample_compliance <= 0:
-        raise InputError("reduced_modulus",
-                         f"{reduced_modulus:.4g} Pa is not below the indenter's own modulus "
-                         f"E_i/(1-nu_i^2) = {contact_modulus(indenter):.4g} Pa.",
-                         "check the units of the reduced modulus and the indenter properties.")
+        raise InputError(
+            "reduced_modulus",
+            f"{reduced_modulus:.4g} Pa is not below the indenter's own modulus "
+            f"E_i/(1-nu_i^2) = {contact_modulus(indenter):.4g} Pa.",
+            "check the units of the reduced modulus and the indenter properties.",
+        )
     return (1.0 - poissons_ratio**2) / sample_compliance
 
 
 # --- the papers' materials -----------------------------------------------------------------------
+
 
 def _library(*materials: Material) -> Mapping[str, Material]:
     return MappingProxyType({m.name.lower(): m for m in materials})
 
 
 MATERIALS: Mapping[str, Material] = _library(
-    Material(110e9, 0.22, "polysilicon",
-             source="seed paper 000, section 4 (E by Oliver-Pharr nanoindentation; nu from its ref. 38)"),
-    Material(70e9, 0.17, "SiO2", surface_energy=72e-3,
-             source="seed paper 000, section 4 (E, nu from its ref. 37; 72 mJ/m^2 used for the cantilever "
-                    "tip, from its ref. 40)"),
+    Material(
+        110e9,
+        0.22,
+        "polysilicon",
+        source="seed paper 000, section 4 (E by Oliver-Pharr nanoindentation; nu from its ref. 38)",
+    ),
+    Material(
+        70e9,
+        0.17,
+        "SiO2",
+        surface_energy=72e-3,
+        source="seed paper 000, section 4 (E, nu from its ref. 37; 72 mJ/m^2 used for the cantilever "
+        "tip, from its ref. 40)",
+    ),
     Material(130e9, 0.28, "silicon wafer", source="seed paper 001, Table 2 (supplier values)"),
     Material(0.98e9, 0.5, "HDPE", source="seed paper 001, Table 2 (nanoindentation, nu assumed 0.5)"),
     Material(1.38e9, 0.5, "POM", source="seed paper 001, Table 2 (nanoindentation, nu assumed 0.5)"),
-    Material(7.64e9, 0.22, "SU-8", hardness=0.462e9, yield_strength=0.165e9,
-             source="seed paper 002, Table I (E, H, Y measured; nu from Kim et al.)"),
+    Material(
+        7.64e9,
+        0.22,
+        "SU-8",
+        hardness=0.462e9,
+        yield_strength=0.165e9,
+        source="seed paper 002, Table I (E, H, Y measured; nu from Kim et al.)",
+    ),
     Material(1140e9, 0.07, "diamond flat tip", source="seed paper 002, Table I (Hysitron)"),
     Material(1141e9, 0.07, "diamond Berkovich", source="seed paper 001, text of eq. 8"),
 )
@@ -529,6 +572,9 @@ def get_material(name: str) -> Material:
     """
     key = " ".join(str(name).replace("_", " ").lower().split())
     if key not in MATERIALS:
-        raise InputError("material", f"unknown material {name!r}.",
-                         f"use one of {[m.name for m in MATERIALS.values()]} or define a Material.")
+        raise InputError(
+            "material",
+            f"unknown material {name!r}.",
+            f"use one of {[m.name for m in MATERIALS.values()]} or define a Material.",
+        )
     return MATERIALS[key]

@@ -76,7 +76,14 @@ _FACTOR_RE = re.compile(r"^([^^]+?)(?:\^([-+]?\d+))?$")
 
 
 def _normalise(unit: str) -> str:
-    return unit.replace("**", "^").replace("µ", "u").replace("μ", "u").replace("·", "*").replace(" ", "").replace("²", "^2")
+    return (
+        unit.replace("**", "^")
+        .replace("µ", "u")
+        .replace("μ", "u")
+        .replace("·", "*")
+        .replace(" ", "")
+        .replace("²", "^2")
+    )
 
 
 def _symbol(symbol: str) -> tuple[Decimal, Dimension]:
@@ -85,7 +92,7 @@ def _symbol(symbol: str) -> tuple[Decimal, Dimension]:
     if symbol in _BASE_UNITS:
         return _BASE_UNITS[symbol]
     for prefix in sorted(_PREFIXES, key=len, reverse=True):
-        rest = symbol[len(prefix):]
+        rest = symbol[len(prefix) :]
         if symbol.startswith(prefix) and rest in _BASE_UNITS:
             factor, dimension = _BASE_UNITS[rest]
             return _PREFIXES[prefix] * factor, dimension
@@ -123,13 +130,16 @@ def unit_factor(unit: str) -> tuple[Decimal, Dimension]:
     for part, sign in parts:
         match = _FACTOR_RE.match(part)
         if match is None:
-            raise UnitError("unit", f"cannot read {unit!r}.", "write units like 'nm', 'GPa', 'mJ/m^2', 'um/s'.")
+            raise UnitError(
+                "unit", f"cannot read {unit!r}.", "write units like 'nm', 'GPa', 'mJ/m^2', 'um/s'."
+            )
         symbol, power = match.group(1), int(match.group(2) or 1) * sign
         try:
             sym_factor, sym_dim = _symbol(symbol)
         except KeyError:
             raise UnitError(
-                "unit", f"unknown unit symbol {symbol!r} in {unit!r}.",
+                "unit",
+                f"unknown unit symbol {symbol!r} in {unit!r}.",
                 "use SI symbols with prefixes (nm, um, mm, m, uN, mN, N, MPa, GPa, mJ/m^2, s).",
             ) from None
         factor *= sym_factor**power
@@ -179,7 +189,8 @@ def quantity(value: str | Real, expected: str, *, field: str = "value") -> float
         match = _QUANTITY_RE.match(value)
         if match is None:
             raise UnitError(
-                field, f"cannot read {value!r} as a {expected}.",
+                field,
+                f"cannot read {value!r} as a {expected}.",
                 f"write a number and a unit, e.g. {_EXAMPLES.get(expected, '1')!r}.",
             )
         number, unit = match.groups()
@@ -189,7 +200,8 @@ def quantity(value: str | Real, expected: str, *, field: str = "value") -> float
             raise UnitError(field, f"{error.problem} (in {value!r})", error.fix) from None
         if unit and dimension != DIMENSIONS[expected]:
             raise UnitError(
-                field, f"{value!r} is a {_dimension_name(dimension)}, expected a {expected}.",
+                field,
+                f"{value!r} is a {_dimension_name(dimension)}, expected a {expected}.",
                 f"give a {expected}, e.g. {_EXAMPLES.get(expected, '1')!r}.",
             )
         result = float(Decimal(number) * factor)
@@ -224,8 +236,16 @@ _EXAMPLES = {
 }
 
 
-_DISPLAY_PREFIXES = (("G", 1e9), ("M", 1e6), ("k", 1e3), ("", 1.0), ("m", 1e-3), ("µ", 1e-6), ("n", 1e-9),
-                     ("p", 1e-12))
+_DISPLAY_PREFIXES = (
+    ("G", 1e9),
+    ("M", 1e6),
+    ("k", 1e3),
+    ("", 1.0),
+    ("m", 1e-3),
+    ("µ", 1e-6),
+    ("n", 1e-9),
+    ("p", 1e-12),
+)
 
 
 def format_si(value: float, unit: str, *, digits: int = 4) -> str:

@@ -14,8 +14,12 @@ from roughcontact.topography.io import (
     save_topography,
 )
 
-INFO = {"name": "test", "history": ("generated", "detrended"),
-        "nested": {"list": [1, 2.5, None], "flag": True}, "tuple_in_list": [(1, "a")]}
+INFO = {
+    "name": "test",
+    "history": ("generated", "detrended"),
+    "nested": {"list": [1, 2.5, None], "flag": True},
+    "tuple_in_list": [(1, "a")],
+}
 
 
 def _topography(shape, periodic):
@@ -142,8 +146,9 @@ def test_foreign_netcdf_is_refused(tmp_path):
 
 def test_newer_version_and_non_netcdf_are_refused(tmp_path):
     newer = tmp_path / "newer.nc"
-    xr.Dataset({"heights": ("x", np.arange(3.0))},
-               attrs={"format": NATIVE_FORMAT, "format_version": 2}).to_netcdf(newer, engine="h5netcdf")
+    xr.Dataset(
+        {"heights": ("x", np.arange(3.0))}, attrs={"format": NATIVE_FORMAT, "format_version": 2}
+    ).to_netcdf(newer, engine="h5netcdf")
     with pytest.raises(UnsupportedFormatError, match="version 2"):
         load_topography(newer)
     text = tmp_path / "text.nc"

@@ -60,7 +60,7 @@ def test_reads_grid_size_and_unit(shared_topographies, name):
     grid, size, unit, options, rel = READABLE[name]
     topography = read_topography(shared_topographies / name, **options)
     assert topography.shape == grid
-    assert topography.size == pytest.approx(size, rel=rel)
+    assert topography.size == pytest.approx(size, rel=rel, abs=0)
     assert length_unit_factor(topography.info["height_unit"]) == length_unit_factor(unit)
     assert np.all(np.isfinite(topography.heights))
     assert np.ptp(topography.heights) > 0
@@ -78,7 +78,7 @@ def test_list_channels_agrees_with_read(shared_topographies, name):
     assert len(default) == 1
     assert default[0].shape == grid
     if "size" not in options:
-        assert default[0].size == pytest.approx(size, rel=rel)
+        assert default[0].size == pytest.approx(size, rel=rel, abs=0)
 
 
 def test_periodic_flag_is_passed_on(shared_topographies):
@@ -143,7 +143,7 @@ def test_multi_channel_files(shared_topographies, name):
 def test_di_channel_sizes_and_units(shared_topographies):
     channels = list_channels(shared_topographies / "di-3.di")
     zsensor = channels[0]
-    assert zsensor.size == pytest.approx((10 * UM, 10 * UM), rel=1e-12)  # 10000 nm exactly in the file
+    assert zsensor.size == pytest.approx((10 * UM, 10 * UM), rel=1e-12, abs=0)  # 10000 nm exactly in the file
     assert (zsensor.height_unit, zsensor.size_unit) == ("nm", "nm")
     assert channels[2].height_unit is None  # Phase: the file gives no unit for its values
 
@@ -192,7 +192,7 @@ def test_user_size_wins_over_the_file(shared_topographies):
     path = shared_topographies / "di-3.di"
     topography = read_topography(path, size=("20 um", 30e-6))
     assert topography.size == (20e-6, 30e-6)
-    assert topography.info["size_in_file"] == pytest.approx((10 * UM, 10 * UM), rel=1e-12)
+    assert topography.info["size_in_file"] == pytest.approx((10 * UM, 10 * UM), rel=1e-12, abs=0)
     assert np.array_equal(topography.heights, read_topography(path).heights)
 
 
@@ -259,9 +259,18 @@ def test_broken_files(shared_topographies, name):
         assert caught.value.__cause__ is not None
 
 
-@pytest.mark.parametrize(("name", "fraction"), [("di-3.di", 0.5), ("sur-2.sur", 0.9), ("x3p-2.x3p", 0.5),
-                                                ("top-1.top", 0.99), ("spot_1-1000nm.ibw", 0.5),
-                                                ("matrix-4.txt.gz", 0.5), ("afm-slippy.txt", 0.5)])
+@pytest.mark.parametrize(
+    ("name", "fraction"),
+    [
+        ("di-3.di", 0.5),
+        ("sur-2.sur", 0.9),
+        ("x3p-2.x3p", 0.5),
+        ("top-1.top", 0.99),
+        ("spot_1-1000nm.ibw", 0.5),
+        ("matrix-4.txt.gz", 0.5),
+        ("afm-slippy.txt", 0.5),
+    ],
+)
 def test_truncated_copies(shared_topographies, tmp_path, name, fraction):
     content = (shared_topographies / name).read_bytes()
     path = tmp_path / name
@@ -276,8 +285,12 @@ def test_empty_missing_and_folder(shared_topographies, tmp_path):
     empty.write_bytes(b"")
     empty_gzip = tmp_path / "empty.txt.gz"
     empty_gzip.write_bytes(gzip.compress(b""))
-    for path, words in [(empty, "empty"), (empty_gzip, "empty"), (tmp_path / "nothing.di", "no such file"),
-                        (tmp_path, "folder")]:
+    for path, words in [
+        (empty, "empty"),
+        (empty_gzip, "empty"),
+        (tmp_path / "nothing.di", "no such file"),
+        (tmp_path, "folder"),
+    ]:
         with pytest.raises(UnsupportedFormatError, match=words) as caught:
             read_topography(path)
         assert caught.value.field == str(path)

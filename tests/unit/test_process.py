@@ -23,12 +23,15 @@ def grid(n=(48, 40), size=(SIZE, 0.8 * SIZE)):
 def periodic_waves(n, size=SIZE, periodic=True):
     """Band-limited periodic surface: three waves with wavelengths >= size / 4."""
     x, y = Topography(np.zeros((n, n)), size).meshgrid()
-    heights = sum(a * np.cos(2 * np.pi * (k * x + m * y) / size + phase)
-                  for a, k, m, phase in [(1e-9, 1, 2, 0.3), (5e-10, 3, -1, 1.0), (3e-10, 2, 3, 2.0)])
+    heights = sum(
+        a * np.cos(2 * np.pi * (k * x + m * y) / size + phase)
+        for a, k, m, phase in [(1e-9, 1, 2, 0.3), (5e-10, 3, -1, 1.0), (3e-10, 2, 3, 2.0)]
+    )
     return Topography(heights, size, periodic=periodic, info={"name": f"waves{n}"})
 
 
 # --- detrend -------------------------------------------------------------------------------------
+
 
 def test_detrend_removes_plane():
     x, y = grid()
@@ -51,7 +54,8 @@ def test_detrend_profile_modes():
     line, parabola = 1e-8 + 0.1 * x, 1e-8 + 0.1 * x + 1e4 * x**2
     assert np.abs(detrend(Topography(line, 64e-7), "plane").heights).max() <= 1e-12 * np.abs(line).max()
     assert np.abs(detrend(Topography(parabola, 64e-7), "curvature").heights).max() <= (
-        1e-12 * np.abs(parabola).max())
+        1e-12 * np.abs(parabola).max()
+    )
     mean = detrend(Topography(parabola, 64e-7), "mean").heights
     # a least-squares constant is the mean up to rounding: 1e-12 of the range
     assert mean == pytest.approx(parabola - parabola.mean(), abs=1e-12 * np.abs(parabola).max())
@@ -77,6 +81,7 @@ def test_detrend_periodicity():
 
 # --- remove_sphere -------------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("fit", ["paraboloid", "sphere"])
 def test_remove_sphere_recovers_radius(fit):
     radius = 5e-3
@@ -85,7 +90,7 @@ def test_remove_sphere_recovers_radius(fit):
     exact = {"paraboloid": 1e-6 - r2 / (2 * radius), "sphere": 1e-6 + np.sqrt(radius**2 - r2) - radius}[fit]
     flattened, fitted = remove_sphere(Topography(exact, 1.1e-3), fit=fit)
     # noiseless data of the fitted model: recovered to rounding (measured ~1e-15), well below 1e-6
-    assert fitted == pytest.approx(radius, rel=1e-6)
+    assert fitted == pytest.approx(radius, rel=1e-6, abs=0)
     # the cap is ~60 um deep; what is left is rounding, below 1 pm
     assert np.abs(flattened.heights).max() < 1e-12
     assert not flattened.periodic
@@ -96,7 +101,7 @@ def test_remove_sphere_keeps_roughness_and_signs_concave():
     roughness = 1e-8 * np.sin(2 * np.pi * 8 * x / 1e-3) * np.sin(2 * np.pi * 8 * y / 1e-3)
     dimple = Topography((x**2 + y**2) / (2 * 2e-2) + roughness, 1e-3)
     flattened, fitted = remove_sphere(dimple, fit="paraboloid")
-    assert fitted == pytest.approx(-2e-2, rel=1e-3)  # roughness nearly orthogonal to the quadratic
+    assert fitted == pytest.approx(-2e-2, rel=1e-3, abs=0)  # roughness nearly orthogonal to the quadratic
     assert np.abs(flattened.heights - roughness).max() < 0.05 * np.abs(roughness).max()
 
 
@@ -112,12 +117,13 @@ def test_remove_sphere_refuses_flat_and_unknown_fit():
 
 # --- crop ----------------------------------------------------------------------------------------
 
+
 def test_crop_half_open_pixels():
     heights = np.arange(100.0).reshape(10, 10) * 1e-9
     topography = Topography(heights, (1e-6, 2e-6), periodic=True)  # spacing 0.1 um x 0.2 um
     result = crop(topography, x=(0.3e-6, 0.7e-6), y=(0.2e-6, 1.0e-6))
     assert result.shape == (4, 4)  # x 0.3, 0.4, 0.5, 0.6 um; y 0.2 .. 0.8 um (stop excluded)
-    assert result.size == pytest.approx((0.4e-6, 0.8e-6), rel=1e-12)
+    assert result.size == pytest.approx((0.4e-6, 0.8e-6), rel=1e-12, abs=0)
     np.testing.assert_array_equal(result.heights, heights[3:7, 1:5])
     assert not result.periodic
     np.testing.assert_array_equal(crop(topography, y=(0.0, 1.0e-6)).heights, heights[:, :5])
@@ -138,6 +144,7 @@ def test_crop_errors():
 
 # --- resample ------------------------------------------------------------------------------------
 
+
 def test_resample_unchanged_spacing_is_exact():
     rough = Topography(np.random.default_rng(2).normal(size=(30, 20)) * 1e-9, (3e-6, 2e-6))
     same = resample(rough, (1e-7, 1e-7))
@@ -157,9 +164,9 @@ def test_resample_on_original_points_reproduces_heights():
 def test_resample_preserves_rms_of_band_limited_surface(factor):
     waves = periodic_waves(64)
     result = resample(waves, factor * waves.spacing[0])
-    assert result.periodic and result.size == pytest.approx(waves.size, rel=1e-12)
+    assert result.periodic and result.size == pytest.approx(waves.size, rel=1e-12, abs=0)
     # >= 8 new pixels per wavelength: cubic-spline amplitude error measured <= 1e-4; 1e-3 is the margin
-    assert result.heights.std() == pytest.approx(waves.heights.std(), rel=1e-3)
+    assert result.heights.std() == pytest.approx(waves.heights.std(), rel=1e-3, abs=0)
 
 
 def test_resample_spacing_errors():
@@ -171,6 +178,7 @@ def test_resample_spacing_errors():
 
 
 # --- combine -------------------------------------------------------------------------------------
+
 
 def test_combine_same_grid_sums_and_removes_mean():
     rng = np.random.default_rng(4)
@@ -209,15 +217,16 @@ def test_combine_resample_periodic_equal_period():
 def test_combine_resample_overlap_window():
     a = periodic_waves(40, periodic=False)  # 10 um, spacing 0.25 um
     b = crop(periodic_waves(50, periodic=False), x=(0, 6e-6))  # 6 um x 10 um, spacing 0.2 um
-    assert common_spacing(a, b) == pytest.approx((0.2e-6, 0.2e-6), rel=1e-12)
+    assert common_spacing(a, b) == pytest.approx((0.2e-6, 0.2e-6), rel=1e-12, abs=0)
     result = combine(a, b, resample=True)
     # up to the last point of the smaller extent: x <= 5.8 um -> 30 points; y <= 9.75 um -> 49 points
     assert result.shape == (30, 49) and not result.periodic
-    assert result.size == pytest.approx((6e-6, 9.8e-6), rel=1e-12)
+    assert result.size == pytest.approx((6e-6, 9.8e-6), rel=1e-12, abs=0)
     np.testing.assert_array_equal(combine(b, a, resample=True).heights, result.heights)
 
 
 # --- fill_undefined ------------------------------------------------------------------------------
+
 
 def test_fill_undefined_reproduces_plane_in_hole():
     x, y = grid((30, 30), (3e-6, 3e-6))

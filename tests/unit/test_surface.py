@@ -10,8 +10,8 @@ def test_geometry_of_a_map():
     assert t.dim == 2
     assert t.shape == (4, 8)
     assert t.spacing == (0.5e-6, 0.5e-6)
-    assert t.pixel_area == pytest.approx(0.25e-12, rel=1e-15)
-    assert t.area == pytest.approx(8e-12, rel=1e-15)
+    assert t.pixel_area == pytest.approx(0.25e-12, rel=1e-15, abs=0)
+    assert t.area == pytest.approx(8e-12, rel=1e-15, abs=0)
     x, y = t.coordinates()
     assert x[1] == 0.5e-6 and len(y) == 8
     xx, yy = t.meshgrid()
@@ -20,7 +20,7 @@ def test_geometry_of_a_map():
 
 def test_profile_and_scalar_size():
     t = Topography(np.arange(5.0), 5e-6)
-    assert t.dim == 1 and t.size == (5e-6,) and t.spacing == pytest.approx((1e-6,), rel=1e-15)
+    assert t.dim == 1 and t.size == (5e-6,) and t.spacing == pytest.approx((1e-6,), rel=1e-15, abs=0)
     square = Topography(np.zeros((3, 3)), 3e-6)
     assert square.size == (3e-6, 3e-6)
 

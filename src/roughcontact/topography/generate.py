@@ -53,20 +53,28 @@ _PERIOD_TOLERANCE = 1e-9  # relative: a size within this of a whole number of wa
 
 # --- validation ----------------------------------------------------------------------------------
 
-def _grid(shape: int | tuple[int, ...], size: float | tuple[float, ...]) -> tuple[tuple[int, ...],
-                                                                                   tuple[float, ...]]:
+
+def _grid(
+    shape: int | tuple[int, ...], size: float | tuple[float, ...]
+) -> tuple[tuple[int, ...], tuple[float, ...]]:
     """Validate ``shape`` (1 or 2 ints >= 2) and ``size`` (positive lengths [m], one or one per axis)."""
     dims = (shape,) if isinstance(shape, (int, np.integer)) else tuple(shape)
     integers = all(isinstance(n, (int, np.integer)) and not isinstance(n, bool) for n in dims)
     if len(dims) not in (1, 2) or not integers or min(dims) < 2:
-        raise InputError("shape", f"{shape!r} is not 1 or 2 integers >= 2.",
-                         "give (nx,) for a profile or (nx, ny) for a map, at least 2 points per axis.")
+        raise InputError(
+            "shape",
+            f"{shape!r} is not 1 or 2 integers >= 2.",
+            "give (nx,) for a profile or (nx, ny) for a map, at least 2 points per axis.",
+        )
     lengths = np.atleast_1d(np.asarray(size, dtype=float))
     if lengths.size == 1:
         lengths = np.repeat(lengths, len(dims))
     if lengths.shape != (len(dims),) or not np.all(np.isfinite(lengths)) or np.any(lengths <= 0):
-        raise InputError("size", f"{size!r} is not {len(dims)} positive finite length(s).",
-                         "give the physical size in metres, one value or one per axis.")
+        raise InputError(
+            "size",
+            f"{size!r} is not {len(dims)} positive finite length(s).",
+            "give the physical size in metres, one value or one per axis.",
+        )
     return tuple(int(n) for n in dims), tuple(float(s) for s in lengths)
 
 
@@ -74,16 +82,20 @@ def _positive(value: float, field: str, *, allow_zero: bool = False) -> float:
     value = float(value)
     if not math.isfinite(value) or value < 0 or (value == 0 and not allow_zero):
         bound = "non-negative" if allow_zero else "positive"
-        raise InputError(field, f"must be {bound} and finite, got {value!r}.",
-                         f"give a {bound} value in SI units.")
+        raise InputError(
+            field, f"must be {bound} and finite, got {value!r}.", f"give a {bound} value in SI units."
+        )
     return value
 
 
 def _hurst(hurst: float) -> float:
     hurst = float(hurst)
     if not 0 < hurst <= 1:
-        raise InputError("hurst", f"Hurst exponent {hurst!r} is outside (0, 1].",
-                         "give 0 < hurst <= 1 (0.8 is typical of many engineering surfaces).")
+        raise InputError(
+            "hurst",
+            f"Hurst exponent {hurst!r} is outside (0, 1].",
+            "give 0 < hurst <= 1 (0.8 is typical of many engineering surfaces).",
+        )
     return hurst
 
 
@@ -98,6 +110,7 @@ def _per_axis(value: float | tuple[float, ...], dim: int, field: str) -> tuple[f
 
 # --- random fields -------------------------------------------------------------------------------
 
+
 def _wavevector_magnitude(shape: tuple[int, ...], size: tuple[float, ...]) -> np.ndarray:
     """Return |q| [rad/m] on the real-FFT grid (last axis halved)."""
     axes = [2.0 * np.pi * fft.fftfreq(n, d=s / n) for n, s in zip(shape[:-1], size[:-1], strict=True)]
@@ -106,9 +119,13 @@ def _wavevector_magnitude(shape: tuple[int, ...], size: tuple[float, ...]) -> np
     return np.sqrt(sum(g**2 for g in grids))
 
 
-def _filtered_noise(shape: tuple[int, ...], size: tuple[float, ...],
-                    psd_shape: Callable[[np.ndarray], np.ndarray], seed: int | None,
-                    field: str) -> np.ndarray:
+def _filtered_noise(
+    shape: tuple[int, ...],
+    size: tuple[float, ...],
+    psd_shape: Callable[[np.ndarray], np.ndarray],
+    seed: int | None,
+    field: str,
+) -> np.ndarray:
     """Real periodic random heights whose PSD is proportional to ``psd_shape(|q|)`` (unscaled).
 
     The q = 0 component is always zero, so the heights have zero mean.
@@ -120,8 +137,11 @@ def _filtered_noise(shape: tuple[int, ...], size: tuple[float, ...],
     amplitude[nonzero] = np.sqrt(psd_shape(magnitude[nonzero]))
     heights = fft.irfftn(fft.rfftn(noise) * amplitude, s=shape)
     if not np.any(heights):
-        raise InputError(field, "no wavevector of the grid lies in the requested band: the surface is flat.",
-                         "widen the band between short_cutoff and long_cutoff, or refine / enlarge the grid.")
+        raise InputError(
+            field,
+            "no wavevector of the grid lies in the requested band: the surface is flat.",
+            "widen the band between short_cutoff and long_cutoff, or refine / enlarge the grid.",
+        )
     return heights
 
 
@@ -136,17 +156,28 @@ def _scaled(topography: Topography, rms_height: float | None, rms_slope: float |
 
 def _one_target(rms_height: float | None, rms_slope: float | None) -> tuple[float | None, float | None]:
     if (rms_height is None) == (rms_slope is None):
-        raise InputError("rms_height", "give exactly one of rms_height and rms_slope.",
-                         "pass rms_height [m] or rms_slope [-], not both and not neither.")
+        raise InputError(
+            "rms_height",
+            "give exactly one of rms_height and rms_slope.",
+            "pass rms_height [m] or rms_slope [-], not both and not neither.",
+        )
     if rms_height is not None:
         return _positive(rms_height, "rms_height"), None
     return None, _positive(rms_slope, "rms_slope")
 
 
-def self_affine(shape: int | tuple[int, ...], size: float | tuple[float, ...], *, hurst: float,
-                rms_height: float | None = None, rms_slope: float | None = None,
-                short_cutoff: float | None = None, long_cutoff: float | None = None,
-                rolloff: float | None = None, seed: int | None = None) -> Topography:
+def self_affine(
+    shape: int | tuple[int, ...],
+    size: float | tuple[float, ...],
+    *,
+    hurst: float,
+    rms_height: float | None = None,
+    rms_slope: float | None = None,
+    short_cutoff: float | None = None,
+    long_cutoff: float | None = None,
+    rolloff: float | None = None,
+    seed: int | None = None,
+) -> Topography:
     r"""Periodic, isotropic, self-affine random surface by Fourier filtering.
 
     The target PSD is a power law between the long and short cutoff wavevectors
@@ -214,9 +245,11 @@ def self_affine(shape: int | tuple[int, ...], size: float | tuple[float, ...], *
     q_short = math.inf if short_cutoff is None else 2.0 * math.pi / _positive(short_cutoff, "short_cutoff")
     q_long = 0.0 if long_cutoff is None else 2.0 * math.pi / _positive(long_cutoff, "long_cutoff")
     if q_long >= q_short:
-        raise InputError("long_cutoff", f"{long_cutoff!r} m is not longer than short_cutoff "
-                                        f"{short_cutoff!r} m.",
-                         "give long_cutoff > short_cutoff.")
+        raise InputError(
+            "long_cutoff",
+            f"{long_cutoff!r} m is not longer than short_cutoff {short_cutoff!r} m.",
+            "give long_cutoff > short_cutoff.",
+        )
     plateau = 0.0 if rolloff is None else _positive(rolloff, "rolloff", allow_zero=True)
     exponent = 2.0 * (1.0 + hurst) if len(shape) == 2 else 1.0 + 2.0 * hurst
 
@@ -225,13 +258,26 @@ def self_affine(shape: int | tuple[int, ...], size: float | tuple[float, ...], *
         return np.where(q > q_short, 0.0, np.where(q < q_long, plateau * power_law, power_law))
 
     heights = _filtered_noise(shape, size, psd_shape, seed, "short_cutoff")
-    info = {"name": "self-affine", "generator": "self_affine", "hurst": hurst, "seed": seed,
-            "short_cutoff": short_cutoff, "long_cutoff": long_cutoff, "rolloff": rolloff}
+    info = {
+        "name": "self-affine",
+        "generator": "self_affine",
+        "hurst": hurst,
+        "seed": seed,
+        "short_cutoff": short_cutoff,
+        "long_cutoff": long_cutoff,
+        "rolloff": rolloff,
+    }
     return _scaled(Topography(heights, size, periodic=True, info=info), rms_height, rms_slope)
 
 
-def gaussian_random(shape: int | tuple[int, ...], size: float | tuple[float, ...], *, rms_height: float,
-                    correlation_length: float, seed: int | None = None) -> Topography:
+def gaussian_random(
+    shape: int | tuple[int, ...],
+    size: float | tuple[float, ...],
+    *,
+    rms_height: float,
+    correlation_length: float,
+    seed: int | None = None,
+) -> Topography:
     r"""Periodic Gaussian random surface with a Gaussian autocorrelation function.
 
     .. math:: R(r) = h_\mathrm{rms}^2 \exp(-r^2/\xi^2) \quad\Longleftrightarrow\quad
@@ -267,17 +313,24 @@ def gaussian_random(shape: int | tuple[int, ...], size: float | tuple[float, ...
     shape, size = _grid(shape, size)
     rms_height = _positive(rms_height, "rms_height")
     correlation_length = _positive(correlation_length, "correlation_length")
-    heights = _filtered_noise(shape, size, lambda q: np.exp(-(q * correlation_length) ** 2 / 4.0), seed,
-                              "correlation_length")
-    info = {"name": "gaussian", "generator": "gaussian_random", "correlation_length": correlation_length,
-            "seed": seed}
+    heights = _filtered_noise(
+        shape, size, lambda q: np.exp(-((q * correlation_length) ** 2) / 4.0), seed, "correlation_length"
+    )
+    info = {
+        "name": "gaussian",
+        "generator": "gaussian_random",
+        "correlation_length": correlation_length,
+        "seed": seed,
+    }
     return _scaled(Topography(heights, size, periodic=True, info=info), rms_height, None)
 
 
 # --- deterministic shapes ------------------------------------------------------------------------
 
-def _radial_distance(shape: tuple[int, ...], size: tuple[float, ...], centre: tuple[float, ...] | None,
-                     periodic: bool) -> np.ndarray:
+
+def _radial_distance(
+    shape: tuple[int, ...], size: tuple[float, ...], centre: tuple[float, ...] | None, periodic: bool
+) -> np.ndarray:
     """Return the distance [m] of each grid point from ``centre`` (default: near the middle).
 
     The default centre is ``(n // 2) * spacing`` per axis, a grid point, so the apex is sampled.
@@ -288,8 +341,11 @@ def _radial_distance(shape: tuple[int, ...], size: tuple[float, ...], centre: tu
         centre = tuple((n // 2) * h for n, h in zip(shape, spacing, strict=True))
     centre = np.atleast_1d(np.asarray(centre, dtype=float))
     if centre.shape != (len(shape),) or not np.all(np.isfinite(centre)):
-        raise InputError("centre", f"{tuple(centre)} is not {len(shape)} finite coordinates.",
-                         f"give the apex position in metres, {len(shape)} values.")
+        raise InputError(
+            "centre",
+            f"{tuple(centre)} is not {len(shape)} finite coordinates.",
+            f"give the apex position in metres, {len(shape)} values.",
+        )
     squared = 0.0
     for axis, (n, h, c, s) in enumerate(zip(shape, spacing, centre, size, strict=True)):
         d = np.arange(n) * h - c
@@ -299,9 +355,15 @@ def _radial_distance(shape: tuple[int, ...], size: tuple[float, ...], centre: tu
     return np.sqrt(np.broadcast_to(squared, shape))
 
 
-def sphere(shape: int | tuple[int, ...], size: float | tuple[float, ...], *, radius: float,
-           centre: tuple[float, ...] | None = None, kind: str = "sphere",
-           periodic: bool = False) -> Topography:
+def sphere(
+    shape: int | tuple[int, ...],
+    size: float | tuple[float, ...],
+    *,
+    radius: float,
+    centre: tuple[float, ...] | None = None,
+    kind: str = "sphere",
+    periodic: bool = False,
+) -> Topography:
     r"""Sphere (or cylinder, for a profile) with its apex at height 0.
 
     .. math::
@@ -349,9 +411,12 @@ def sphere(shape: int | tuple[int, ...], size: float | tuple[float, ...], *, rad
         heights = -(distance**2) / (2.0 * radius)
     else:
         if distance.max() > radius:
-            raise InputError("radius", f"the grid reaches {distance.max():.6g} m from the apex, beyond the "
-                                       f"sphere radius {radius:.6g} m.",
-                             "use a smaller size, a larger radius, or kind='paraboloid'.")
+            raise InputError(
+                "radius",
+                f"the grid reaches {distance.max():.6g} m from the apex, beyond the "
+                f"sphere radius {radius:.6g} m.",
+                "use a smaller size, a larger radius, or kind='paraboloid'.",
+            )
         heights = np.sqrt(radius**2 - distance**2) - radius
     info = {"name": kind, "generator": "sphere", "radius": radius}
     return Topography(heights, size, periodic=periodic, info=info)
@@ -362,8 +427,14 @@ def _divides(size: tuple[float, ...], wavelength: tuple[float, ...]) -> bool:
     return all(abs(c - round(c)) <= _PERIOD_TOLERANCE * max(c, 1.0) for c in cycles)
 
 
-def sinusoid(shape: int | tuple[int, ...], size: float | tuple[float, ...], *, amplitude: float,
-             wavelength: float, axis: int = 0) -> Topography:
+def sinusoid(
+    shape: int | tuple[int, ...],
+    size: float | tuple[float, ...],
+    *,
+    amplitude: float,
+    wavelength: float,
+    axis: int = 0,
+) -> Topography:
     r"""Single sinusoidal wave along one axis.
 
     .. math:: z = A \cos(2\pi x_\mathrm{axis} / \lambda)
@@ -393,18 +464,29 @@ def sinusoid(shape: int | tuple[int, ...], size: float | tuple[float, ...], *, a
     amplitude = _positive(amplitude, "amplitude")
     wavelength = _positive(wavelength, "wavelength")
     if axis not in range(len(shape)):
-        raise InputError("axis", f"axis {axis!r} does not exist on a {len(shape)}D grid.",
-                         "use 0 (x), or 1 (y) for a map.")
+        raise InputError(
+            "axis", f"axis {axis!r} does not exist on a {len(shape)}D grid.", "use 0 (x), or 1 (y) for a map."
+        )
     x = np.arange(shape[axis]) * size[axis] / shape[axis]
     wave = amplitude * np.cos(2.0 * np.pi * x / wavelength)
     heights = np.broadcast_to(np.expand_dims(wave, tuple(a for a in range(len(shape)) if a != axis)), shape)
-    info = {"name": "sinusoid", "generator": "sinusoid", "amplitude": amplitude, "wavelength": wavelength,
-            "axis": axis}
-    return Topography(heights, size, periodic=_divides(size[axis:axis + 1], (wavelength,)), info=info)
+    info = {
+        "name": "sinusoid",
+        "generator": "sinusoid",
+        "amplitude": amplitude,
+        "wavelength": wavelength,
+        "axis": axis,
+    }
+    return Topography(heights, size, periodic=_divides(size[axis : axis + 1], (wavelength,)), info=info)
 
 
-def bisinusoid(shape: tuple[int, int], size: float | tuple[float, float], *, amplitude: float,
-               wavelength: float | tuple[float, float]) -> Topography:
+def bisinusoid(
+    shape: tuple[int, int],
+    size: float | tuple[float, float],
+    *,
+    amplitude: float,
+    wavelength: float | tuple[float, float],
+) -> Topography:
     r"""Egg-box surface, the product of two cosines.
 
     .. math:: z = A \cos(2\pi x/\lambda_x)\cos(2\pi y/\lambda_y)
@@ -434,14 +516,21 @@ def bisinusoid(shape: tuple[int, int], size: float | tuple[float, float], *, amp
     amplitude = _positive(amplitude, "amplitude")
     wavelength = _per_axis(wavelength, 2, "wavelength")
     x, y = (np.arange(n) * s / n for n, s in zip(shape, size, strict=True))
-    heights = amplitude * np.outer(np.cos(2.0 * np.pi * x / wavelength[0]),
-                                   np.cos(2.0 * np.pi * y / wavelength[1]))
+    heights = amplitude * np.outer(
+        np.cos(2.0 * np.pi * x / wavelength[0]), np.cos(2.0 * np.pi * y / wavelength[1])
+    )
     info = {"name": "bisinusoid", "generator": "bisinusoid", "amplitude": amplitude, "wavelength": wavelength}
     return Topography(heights, size, periodic=_divides(size, wavelength), info=info)
 
 
-def flat_punch(shape: int | tuple[int, ...], size: float | tuple[float, ...], *, radius: float,
-               depth: float, centre: tuple[float, ...] | None = None) -> Topography:
+def flat_punch(
+    shape: int | tuple[int, ...],
+    size: float | tuple[float, ...],
+    *,
+    radius: float,
+    depth: float,
+    centre: tuple[float, ...] | None = None,
+) -> Topography:
     """Flat circular punch face: height 0 within ``radius`` of the centre, ``-depth`` outside.
 
     A grid point at distance r belongs to the face when r <= radius. For a profile the face is the
@@ -479,9 +568,17 @@ def flat_punch(shape: int | tuple[int, ...], size: float | tuple[float, ...], *,
     return Topography(heights, size, periodic=False, info=info)
 
 
-def raised_island(shape: int | tuple[int, ...], size: float | tuple[float, ...], *, island_size: float,
-                  thickness: float, rms_height: float = 0.0, hurst: float = 0.8, seed: int | None = None,
-                  substrate_height: float = 0.0) -> Topography:
+def raised_island(
+    shape: int | tuple[int, ...],
+    size: float | tuple[float, ...],
+    *,
+    island_size: float,
+    thickness: float,
+    rms_height: float = 0.0,
+    hurst: float = 0.8,
+    seed: int | None = None,
+    substrate_height: float = 0.0,
+) -> Topography:
     r"""Make a raised square island on a flat substrate, rough on top: the SU-8 sample of paper 002.
 
     Heights are ``substrate_height`` outside the island and ``substrate_height + thickness +
@@ -530,8 +627,11 @@ def raised_island(shape: int | tuple[int, ...], size: float | tuple[float, ...],
     if not math.isfinite(substrate_height):
         raise InputError("substrate_height", "must be finite.", "give a height in metres.")
     if island_size > min(size):
-        raise InputError("island_size", f"{island_size:.6g} m is wider than the scan {size} m.",
-                         "use a smaller island or a larger size.")
+        raise InputError(
+            "island_size",
+            f"{island_size:.6g} m is wider than the scan {size} m.",
+            "use a smaller island or a larger size.",
+        )
     on_island = np.ones(shape, dtype=bool)
     for axis, (n, s) in enumerate(zip(shape, size, strict=True)):
         x = np.arange(n) * s / n - (n // 2) * s / n
@@ -543,15 +643,30 @@ def raised_island(shape: int | tuple[int, ...], size: float | tuple[float, ...],
         roughness = self_affine(shape, size, hurst=hurst, rms_height=1.0, seed=seed).heights[on_island]
         roughness = roughness - roughness.mean()
         heights[on_island] += roughness * rms_height / np.sqrt(np.mean(roughness**2))
-    info = {"name": "raised island", "generator": "raised_island", "island_size": island_size,
-            "thickness": thickness, "rms_height": rms_height, "hurst": hurst, "seed": seed}
+    info = {
+        "name": "raised island",
+        "generator": "raised_island",
+        "island_size": island_size,
+        "thickness": thickness,
+        "rms_height": rms_height,
+        "hurst": hurst,
+        "seed": seed,
+    }
     return Topography(heights, size, periodic=False, info=info)
 
 
-def sphere_with_roughness(shape: int | tuple[int, ...], size: float | tuple[float, ...], *, radius: float,
-                          rms_height: float, hurst: float = 0.8, seed: int | None = None,
-                          kind: str = "paraboloid", short_cutoff: float | None = None,
-                          long_cutoff: float | None = None) -> Topography:
+def sphere_with_roughness(
+    shape: int | tuple[int, ...],
+    size: float | tuple[float, ...],
+    *,
+    radius: float,
+    rms_height: float,
+    hurst: float = 0.8,
+    seed: int | None = None,
+    kind: str = "paraboloid",
+    short_cutoff: float | None = None,
+    long_cutoff: float | None = None,
+) -> Topography:
     """Rough sphere: :func:`sphere` plus :func:`self_affine` roughness of exact rms ``rms_height``.
 
     Models the AFM tip of paper 000 (a sphere with roughness, 20 nm pixels over 5 um scans) and
@@ -589,8 +704,21 @@ def sphere_with_roughness(shape: int | tuple[int, ...], size: float | tuple[floa
     doi:10.1115/1.4045900
     """
     body = sphere(shape, size, radius=radius, kind=kind)
-    roughness = self_affine(shape, size, hurst=hurst, rms_height=rms_height, seed=seed,
-                            short_cutoff=short_cutoff, long_cutoff=long_cutoff)
-    info = {**dict(body.info), "name": f"rough {kind}", "generator": "sphere_with_roughness",
-            "rms_height": rms_height, "hurst": hurst, "seed": seed}
+    roughness = self_affine(
+        shape,
+        size,
+        hurst=hurst,
+        rms_height=rms_height,
+        seed=seed,
+        short_cutoff=short_cutoff,
+        long_cutoff=long_cutoff,
+    )
+    info = {
+        **dict(body.info),
+        "name": f"rough {kind}",
+        "generator": "sphere_with_roughness",
+        "rms_height": rms_height,
+        "hurst": hurst,
+        "seed": seed,
+    }
     return Topography(body.heights + roughness.heights, body.size, periodic=False, info=info)

@@ -56,8 +56,10 @@ _GZIP_MAGIC = b"\x1f\x8b"
 _HDF5_MAGIC = b"\x89HDF\r\n\x1a\n"
 _TUPLE_TAG = "__tuple__"  # JSON has no tuples: {"__tuple__": [...]} keeps info round trips exact
 _UNDEFINED_CHOICES = ("refuse", "interpolate")
-_REREAD_FIX = ("copy the file again from the instrument or export it again (e.g. as .x3p, .sur or a "
-               "plain-text height matrix); roughcontact reads the formats SurfaceTopography reads.")
+_REREAD_FIX = (
+    "copy the file again from the instrument or export it again (e.g. as .x3p, .sur or a "
+    "plain-text height matrix); roughcontact reads the formats SurfaceTopography reads."
+)
 
 PathLike = str | os.PathLike
 SizeLike = float | str | tuple[float | str, ...]
@@ -120,16 +122,31 @@ def list_channels(path: PathLike) -> list[ChannelInfo]:
     path = _existing_file(path)
     if _is_native(path):
         topography = load_topography(path)
-        return [ChannelInfo(0, str(topography.info.get("channel", "heights")), topography.shape,
-                            topography.size, "m", "m", True)]
+        return [
+            ChannelInfo(
+                0,
+                str(topography.info.get("channel", "heights")),
+                topography.shape,
+                topography.size,
+                "m",
+                "m",
+                True,
+            )
+        ]
     with _open_reader(path) as reader:
         default = reader.default_channel.index
         return [_channel_info(channel, channel.index == default) for channel in reader.channels]
 
 
-def read_topography(path: PathLike, *, channel: int | str | None = None, size: SizeLike | None = None,
-                    height_unit: str | None = None, undefined: str = "refuse",
-                    periodic: bool = False) -> Topography:
+def read_topography(
+    path: PathLike,
+    *,
+    channel: int | str | None = None,
+    size: SizeLike | None = None,
+    height_unit: str | None = None,
+    undefined: str = "refuse",
+    periodic: bool = False,
+) -> Topography:
     """Read one channel of a topography file into a :class:`Topography` in SI units.
 
     Sizes and heights are converted to metres from the units the file declares:
@@ -198,8 +215,9 @@ def read_topography(path: PathLike, *, channel: int | str | None = None, size: S
         measured = reader.topography(channel_index=selected.index, physical_sizes=dummy_size)
         heights, extent, steps = _uniform_heights(measured)
         periodic = periodic or bool(measured.is_periodic)
-        info = _file_info(path, reader, selected, measured.info, (file_size_unit, file_height_unit),
-                          height_unit)
+        info = _file_info(
+            path, reader, selected, measured.info, (file_size_unit, file_height_unit), height_unit
+        )
     heights = heights * height_factor
     file_size = _size_in_metres(extent, file_size_unit) if selected.physical_sizes is not None else None
     info["size_from"] = "file" if user_size is None else "user"
@@ -245,17 +263,26 @@ def save_topography(topography: Topography, path: PathLike) -> None:
     import xarray as xr
 
     if not isinstance(topography, Topography):
-        raise InputError("topography", f"expected a Topography, got {type(topography).__name__}.",
-                         "read or generate a Topography first.")
+        raise InputError(
+            "topography",
+            f"expected a Topography, got {type(topography).__name__}.",
+            "read or generate a Topography first.",
+        )
     path = Path(path)
     dims = ("x", "y")[: topography.dim]
     coordinates = {d: (d, c, {"units": "m"}) for d, c in zip(dims, topography.coordinates(), strict=True)}
     heights = (dims, np.asarray(topography.heights, dtype=np.float64), {"units": "m", "long_name": "height"})
     dataset = xr.Dataset(
-        {"heights": heights}, coords=coordinates,
-        attrs={"format": NATIVE_FORMAT, "format_version": NATIVE_VERSION,
-               "size": list(topography.size), "size_units": "m", "periodic": int(topography.periodic),
-               "info": _encode_info(topography.info)},
+        {"heights": heights},
+        coords=coordinates,
+        attrs={
+            "format": NATIVE_FORMAT,
+            "format_version": NATIVE_VERSION,
+            "size": list(topography.size),
+            "size_units": "m",
+            "periodic": int(topography.periodic),
+            "info": _encode_info(topography.info),
+        },
     )
     encoding = {name: {"_FillValue": None} for name in (*dims, "heights")}
     _write_atomically(dataset, path, encoding)
@@ -287,23 +314,29 @@ def load_topography(path: PathLike) -> Topography:
         with xr.open_dataset(path, engine="h5netcdf") as dataset:
             dataset.load()
     except Exception as error:  # any failure of the HDF5 stack means the same to the user
-        raise UnsupportedFormatError(str(path), f"cannot be opened as a NetCDF file ({_first_line(error)}).",
-                                     "load .nc files written by save_topography(); read instrument files "
-                                     "with read_topography().") from error
+        raise UnsupportedFormatError(
+            str(path),
+            f"cannot be opened as a NetCDF file ({_first_line(error)}).",
+            "load .nc files written by save_topography(); read instrument files with read_topography().",
+        ) from error
     attrs = dataset.attrs
     if attrs.get("format") != NATIVE_FORMAT or "heights" not in dataset:
-        raise UnsupportedFormatError(str(path), f"is NetCDF but not a roughcontact topography (no format "
-                                                f"marker {NATIVE_FORMAT!r}).",
-                                     "read instrument files with read_topography(); write this format with "
-                                     "save_topography().")
+        raise UnsupportedFormatError(
+            str(path),
+            f"is NetCDF but not a roughcontact topography (no format marker {NATIVE_FORMAT!r}).",
+            "read instrument files with read_topography(); write this format with save_topography().",
+        )
     version = attrs.get("format_version")
     if version != NATIVE_VERSION:
-        raise UnsupportedFormatError(str(path), f"has format version {version}; this roughcontact reads "
-                                                f"version {NATIVE_VERSION}.",
-                                     "open it with the roughcontact version that wrote it.")
+        raise UnsupportedFormatError(
+            str(path),
+            f"has format version {version}; this roughcontact reads version {NATIVE_VERSION}.",
+            "open it with the roughcontact version that wrote it.",
+        )
     size = tuple(float(s) for s in np.atleast_1d(attrs["size"]))
-    return Topography(dataset["heights"].values, size, periodic=bool(attrs["periodic"]),
-                      info=_decode_info(attrs["info"]))
+    return Topography(
+        dataset["heights"].values, size, periodic=bool(attrs["periodic"]), info=_decode_info(attrs["info"])
+    )
 
 
 # --- files and SurfaceTopography -----------------------------------------------------------------
@@ -315,8 +348,9 @@ def _existing_file(path: PathLike) -> Path:
     if not path.exists():
         raise UnsupportedFormatError(str(path), "no such file.", "check the path and the file name.")
     if path.is_dir():
-        raise UnsupportedFormatError(str(path), "is a folder, not a file.",
-                                     "give the path of one topography file inside it.")
+        raise UnsupportedFormatError(
+            str(path), "is a folder, not a file.", "give the path of one topography file inside it."
+        )
     if path.stat().st_size == 0:
         raise UnsupportedFormatError(str(path), "the file is empty (0 bytes).", _REREAD_FIX)
     return path
@@ -357,14 +391,19 @@ def _reader_errors(path: Path) -> Iterator[None]:
     except (InputError, MemoryError):
         raise
     except CannotDetectFileFormat as error:
-        raise UnsupportedFormatError(str(path), "no reader recognises this file (unknown format, or the file "
-                                                "is damaged or truncated).", _REREAD_FIX) from error
+        raise UnsupportedFormatError(
+            str(path),
+            "no reader recognises this file (unknown format, or the file is damaged or truncated).",
+            _REREAD_FIX,
+        ) from error
     except CorruptFile as error:
-        raise UnsupportedFormatError(str(path), f"the file is damaged: {_first_line(error)}",
-                                     _REREAD_FIX) from error
+        raise UnsupportedFormatError(
+            str(path), f"the file is damaged: {_first_line(error)}", _REREAD_FIX
+        ) from error
     except Exception as error:
-        raise UnsupportedFormatError(str(path), f"reading failed ({type(error).__name__}: "
-                                                f"{_first_line(error)}).", _REREAD_FIX) from error
+        raise UnsupportedFormatError(
+            str(path), f"reading failed ({type(error).__name__}: {_first_line(error)}).", _REREAD_FIX
+        ) from error
 
 
 def _decompressed(path: Path) -> io.BytesIO | str:
@@ -375,8 +414,9 @@ def _decompressed(path: Path) -> io.BytesIO | str:
     try:
         content = gzip.decompress(path.read_bytes())
     except (OSError, EOFError, zlib.error) as error:
-        raise UnsupportedFormatError(str(path), f"the gzip archive is damaged or truncated "
-                                                f"({_first_line(error)}).", _REREAD_FIX) from error
+        raise UnsupportedFormatError(
+            str(path), f"the gzip archive is damaged or truncated ({_first_line(error)}).", _REREAD_FIX
+        ) from error
     if not content:
         raise UnsupportedFormatError(str(path), "the gzip archive holds an empty file.", _REREAD_FIX)
     return io.BytesIO(content)
@@ -437,9 +477,15 @@ def _grid_extent(channel) -> tuple[float, ...]:
 def _channel_info(channel, is_default: bool) -> ChannelInfo:
     size_unit, height_unit = _file_units(channel)
     size = None if channel.physical_sizes is None else _size_in_metres(_grid_extent(channel), size_unit)
-    return ChannelInfo(index=int(channel.index), name=str(channel.name),
-                       shape=tuple(int(n) for n in channel.nb_grid_pts), size=size,
-                       height_unit=height_unit, size_unit=size_unit, is_default=is_default)
+    return ChannelInfo(
+        index=int(channel.index),
+        name=str(channel.name),
+        shape=tuple(int(n) for n in channel.nb_grid_pts),
+        size=size,
+        height_unit=height_unit,
+        size_unit=size_unit,
+        is_default=is_default,
+    )
 
 
 def _channel_names(reader) -> str:
@@ -456,11 +502,17 @@ def _select_channel(reader, channel: int | str | None, path: Path):
     elif isinstance(channel, int | np.integer) and not isinstance(channel, bool):
         matches = [c for c in channels if c.index == channel]
     else:
-        raise InputError("channel", f"expected a channel index or name, got {type(channel).__name__}.",
-                         f"choose one of {_channel_names(reader)}.")
+        raise InputError(
+            "channel",
+            f"expected a channel index or name, got {type(channel).__name__}.",
+            f"choose one of {_channel_names(reader)}.",
+        )
     if not matches:
-        raise InputError("channel", f"{path.name} has no channel {channel!r}.",
-                         f"choose one of {_channel_names(reader)} (by index or name).")
+        raise InputError(
+            "channel",
+            f"{path.name} has no channel {channel!r}.",
+            f"choose one of {_channel_names(reader)} (by index or name).",
+        )
     return matches[0]
 
 
@@ -474,19 +526,31 @@ def _check_height_channel(channel, file_height_unit: str | None, reader) -> None
     if file_height_unit is None or _length_factor(file_height_unit) is not None:
         return
     names = ", ".join(map(repr, _height_channel_names(reader))) or "none in this file"
-    raise InputError("channel", f"channel {channel.name!r} holds values in {file_height_unit!r}, "
-                                "not heights.", f"choose a height channel: {names}.")
+    raise InputError(
+        "channel",
+        f"channel {channel.name!r} holds values in {file_height_unit!r}, not heights.",
+        f"choose a height channel: {names}.",
+    )
 
 
-def _require_metadata(path: Path, reader, channel, file_units: tuple[str | None, str | None],
-                      size: SizeLike | None, height_unit: str | None) -> None:
+def _require_metadata(
+    path: Path,
+    reader,
+    channel,
+    file_units: tuple[str | None, str | None],
+    size: SizeLike | None,
+    height_unit: str | None,
+) -> None:
     """Raise one InputError listing everything the file lacks and the user did not give."""
     file_size_unit, file_height_unit = file_units
     size_known = channel.physical_sizes is not None and _length_factor(file_size_unit) is not None
     missing, notes = [], []
     if size is None and not size_known:
-        in_file = "" if channel.physical_sizes is None else (
-            f" (it gives {' x '.join(f'{float(s):g}' for s in channel.physical_sizes)} without a unit)")
+        in_file = (
+            ""
+            if channel.physical_sizes is None
+            else (f" (it gives {' x '.join(f'{float(s):g}' for s in channel.physical_sizes)} without a unit)")
+        )
         missing.append(("size", f"no physical scan size{in_file}", 'size="5 um"', '--size "5 um"'))
         if channel.dim == 2:
             notes.append('a non-square scan takes size=("5 um", "10 um") or --size "5 um x 10 um"')
@@ -501,10 +565,14 @@ def _require_metadata(path: Path, reader, channel, file_units: tuple[str | None,
     what = " and ".join(m[1] for m in missing)
     python = ", ".join(m[2] for m in missing)
     cli = " ".join(m[3] for m in missing)
-    raise InputError(missing[0][0], f"{path} has {what}.",
-                     f"give the real values, e.g. read_topography({str(path)!r}, {python}) in Python, or "
-                     f"roughcontact inspect {shlex.quote(str(path))} {cli} at the command line"
-                     + "".join(f"; {note}" for note in notes) + ".")
+    raise InputError(
+        missing[0][0],
+        f"{path} has {what}.",
+        f"give the real values, e.g. read_topography({str(path)!r}, {python}) in Python, or "
+        f"roughcontact inspect {shlex.quote(str(path))} {cli} at the command line"
+        + "".join(f"; {note}" for note in notes)
+        + ".",
+    )
 
 
 def _height_factor(path: Path, file_unit: str | None, user_unit: str | None) -> float:
@@ -514,10 +582,12 @@ def _height_factor(path: Path, file_unit: str | None, user_unit: str | None) -> 
         return user_factor
     file_factor = length_unit_factor(file_unit, field=str(path))
     if user_factor is not None and not np.isclose(user_factor, file_factor, rtol=1e-12, atol=0.0):
-        raise InputError("height_unit", f"{path.name} stores heights in {file_unit!r}, but height_unit="
-                                        f"{user_unit!r} was given.",
-                         "leave height_unit out (the file's unit is used); rescale the heights afterwards "
-                         "if the file's unit is wrong.")
+        raise InputError(
+            "height_unit",
+            f"{path.name} stores heights in {file_unit!r}, but height_unit={user_unit!r} was given.",
+            "leave height_unit out (the file's unit is used); rescale the heights afterwards "
+            "if the file's unit is wrong.",
+        )
     return file_factor
 
 
@@ -537,8 +607,10 @@ def _uniform_heights(measured) -> tuple[np.ndarray, tuple[float, ...], list[str]
     n = len(positions)
     grid = np.linspace(positions[0], positions[-1], n)
     spacing = (positions[-1] - positions[0]) / (n - 1)
-    step = (f"interpolated {n} non-uniformly spaced points linearly onto a uniform grid "
-            f"(largest shift {np.max(np.abs(positions - grid)) / spacing:.2g} pixel)")
+    step = (
+        f"interpolated {n} non-uniformly spaced points linearly onto a uniform grid "
+        f"(largest shift {np.max(np.abs(positions - grid)) / spacing:.2g} pixel)"
+    )
     return np.interp(grid, positions, heights), (n * spacing,), [step]
 
 
@@ -547,15 +619,23 @@ def _handle_undefined(heights: np.ndarray, undefined: str, path: Path) -> tuple[
     if count == 0:
         return heights, 0
     if undefined == "refuse":
-        raise InputError(str(path), f"{count} of {heights.size} points are undefined (missing in the "
-                                    f"measurement).",
-                         "pass undefined='interpolate' (command line: --fill-undefined) to fill them by "
-                         "harmonic interpolation from their neighbours, or crop them away.")
+        raise InputError(
+            str(path),
+            f"{count} of {heights.size} points are undefined (missing in the measurement).",
+            "pass undefined='interpolate' (command line: --fill-undefined) to fill them by "
+            "harmonic interpolation from their neighbours, or crop them away.",
+        )
     return fill_undefined(heights, field=str(path)), count
 
 
-def _file_info(path: Path, reader, channel, measured_info: Mapping[str, Any],
-               file_units: tuple[str | None, str | None], user_height_unit: str | None) -> dict[str, Any]:
+def _file_info(
+    path: Path,
+    reader,
+    channel,
+    measured_info: Mapping[str, Any],
+    file_units: tuple[str | None, str | None],
+    user_height_unit: str | None,
+) -> dict[str, Any]:
     file_size_unit, file_height_unit = file_units
     info: dict[str, Any] = {
         "name": path.name,
@@ -596,18 +676,23 @@ def _user_size(size: SizeLike, dim: int) -> tuple[float, ...]:
     if len(metres) == 1:
         metres = metres * dim
     if len(metres) != dim:
-        raise InputError("size", f"got {len(metres)} values for a {dim}D topography.",
-                         f"give one value or {dim} values, e.g. '5 um'.")
+        raise InputError(
+            "size",
+            f"got {len(metres)} values for a {dim}D topography.",
+            f"give one value or {dim} values, e.g. '5 um'.",
+        )
     return metres
 
 
-def _read_native(path: Path, channel: int | str | None, size: SizeLike | None, height_unit: str | None,
-                 periodic: bool) -> Topography:
+def _read_native(
+    path: Path, channel: int | str | None, size: SizeLike | None, height_unit: str | None, periodic: bool
+) -> Topography:
     """Apply read_topography's options to a roughcontact .nc file (one channel, heights in m)."""
     topography = load_topography(path)
     if channel not in (None, 0, topography.info.get("channel", "heights")):
-        raise InputError("channel", f"{path.name} is a roughcontact file with a single channel.",
-                         "leave channel out.")
+        raise InputError(
+            "channel", f"{path.name} is a roughcontact file with a single channel.", "leave channel out."
+        )
     _height_factor(path, "m", height_unit)
     changes: dict[str, Any] = {}
     if size is not None:
@@ -628,8 +713,9 @@ def _encode_info(info: Mapping[str, Any]) -> str:
         if isinstance(value, Mapping):
             for key in value:
                 if not isinstance(key, str):
-                    raise InputError("topography.info", f"key {key!r} in {where} is not a string.",
-                                     "use str keys in info.")
+                    raise InputError(
+                        "topography.info", f"key {key!r} in {where} is not a string.", "use str keys in info."
+                    )
             return {k: encode(v, f"{where}[{k!r}]") for k, v in value.items()}
         if isinstance(value, tuple):
             return {_TUPLE_TAG: [encode(v, where) for v in value]}
@@ -639,9 +725,11 @@ def _encode_info(info: Mapping[str, Any]) -> str:
             return value.item()
         if value is None or isinstance(value, str | bool | int | float):
             return value
-        raise InputError("topography.info", f"{where} holds a {type(value).__name__}, which the .nc "
-                                            "format cannot store.",
-                         "keep info to str, numbers, None, lists, tuples and dicts with str keys.")
+        raise InputError(
+            "topography.info",
+            f"{where} holds a {type(value).__name__}, which the .nc format cannot store.",
+            "keep info to str, numbers, None, lists, tuples and dicts with str keys.",
+        )
 
     return json.dumps(encode(dict(info), "info"))
 
@@ -657,16 +745,18 @@ def _write_atomically(dataset, path: Path, encoding: dict) -> None:
     """Write ``dataset`` next to ``path`` under a temporary name, then rename it into place."""
     folder = path.parent
     if not folder.is_dir():
-        raise InputError("path", f"folder {folder} does not exist.",
-                         "create it first or choose another path.")
+        raise InputError(
+            "path", f"folder {folder} does not exist.", "create it first or choose another path."
+        )
     temporary = folder / f".{path.name}.{uuid.uuid4().hex}.tmp"
     try:
         dataset.to_netcdf(temporary, engine="h5netcdf", encoding=encoding)
         os.replace(temporary, path)
     except OSError as error:
         temporary.unlink(missing_ok=True)
-        raise InputError("path", f"cannot write {path}: {_first_line(error)}",
-                         "choose a writable folder with free space.") from error
+        raise InputError(
+            "path", f"cannot write {path}: {_first_line(error)}", "choose a writable folder with free space."
+        ) from error
     except BaseException:
         temporary.unlink(missing_ok=True)
         raise

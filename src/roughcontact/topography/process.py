@@ -51,8 +51,11 @@ def fill_undefined(heights: np.ndarray, *, field: str = "heights") -> np.ndarray
     if not missing.any():
         return heights
     if missing.all():
-        raise InputError(field, "every point is undefined; there is nothing to interpolate from.",
-                         "check the file and the channel.")
+        raise InputError(
+            field,
+            "every point is undefined; there is nothing to interpolate from.",
+            "check the file and the channel.",
+        )
     index = np.full(heights.shape, -1)
     index[missing] = np.arange(int(missing.sum()))
     coords = np.argwhere(missing)
@@ -146,8 +149,11 @@ def detrend(topography: Topography, mode: str = "plane") -> Topography:
     if mode == "curvature":
         terms += [a * b for i, a in enumerate(coordinates) for b in coordinates[i:]]
     background, _ = _least_squares(topography.heights, terms)
-    return topography.with_heights(topography.heights - background, step=f"detrend(mode={mode!r})",
-                                   periodic=topography.periodic and mode == "mean")
+    return topography.with_heights(
+        topography.heights - background,
+        step=f"detrend(mode={mode!r})",
+        periodic=topography.periodic and mode == "mean",
+    )
 
 
 def remove_sphere(topography: Topography, *, fit: str = "sphere") -> tuple[Topography, float]:
@@ -197,21 +203,34 @@ def remove_sphere(topography: Topography, *, fit: str = "sphere") -> tuple[Topog
     coordinates = _normalised_coordinates(topography, scale=scale)
     heights = topography.heights / scale
     radial = sum(c**2 for c in coordinates)
-    background, (offset, *slopes, quadratic) = _least_squares(heights, [np.ones(heights.shape), *coordinates,
-                                                                        radial])
+    background, (offset, *slopes, quadratic) = _least_squares(
+        heights, [np.ones(heights.shape), *coordinates, radial]
+    )
     if quadratic == 0:
-        raise InputError("topography", "the surface has no curvature to fit a sphere to.",
-                         "use detrend(topography, mode='plane') for a flat surface.")
+        raise InputError(
+            "topography",
+            "the surface has no curvature to fit a sphere to.",
+            "use detrend(topography, mode='plane') for a flat surface.",
+        )
     curvature = -2.0 * quadratic  # dimensionless: kappa * scale
     if fit == "sphere":
         apex = [-s / (2.0 * quadratic) for s in slopes]
         start = [*apex, offset - sum(s**2 for s in slopes) / (4.0 * quadratic), curvature]
-        solution = optimize.least_squares(lambda p: (_spherical_cap(coordinates, p) - heights).ravel(), start,
-                                          x_scale="jac", ftol=1e-15, xtol=1e-15, gtol=1e-15)
+        solution = optimize.least_squares(
+            lambda p: (_spherical_cap(coordinates, p) - heights).ravel(),
+            start,
+            x_scale="jac",
+            ftol=1e-15,
+            xtol=1e-15,
+            gtol=1e-15,
+        )
         background, curvature = _spherical_cap(coordinates, solution.x), solution.x[-1]
     radius = scale / curvature
-    flattened = topography.with_heights(topography.heights - background * scale, periodic=False,
-                                        step=f"remove_sphere(fit={fit!r}) radius={radius:.6g} m")
+    flattened = topography.with_heights(
+        topography.heights - background * scale,
+        periodic=False,
+        step=f"remove_sphere(fit={fit!r}) radius={radius:.6g} m",
+    )
     return flattened, float(radius)
 
 
@@ -227,8 +246,9 @@ def _spherical_cap(coordinates: list[np.ndarray], parameters: np.ndarray) -> np.
 _PIXEL_TOLERANCE = 1e-9  # fraction of a pixel below which a coordinate counts as on a grid point
 
 
-def crop(topography: Topography, x: tuple[float, float] | None = None,
-         y: tuple[float, float] | None = None) -> Topography:
+def crop(
+    topography: Topography, x: tuple[float, float] | None = None, y: tuple[float, float] | None = None
+) -> Topography:
     """Cut out a rectangular window given in metres.
 
     Intervals are half-open: grid point i along x (at ``x_i = i * spacing[0]``, the first point at
@@ -258,17 +278,21 @@ def crop(topography: Topography, x: tuple[float, float] | None = None,
     if y is not None and topography.dim == 1:
         raise InputError("y", "a profile (1D topography) has no y axis.", "crop a profile along x only.")
     slices = []
-    for field, window, n, spacing in zip(("x", "y"), (x, y), topography.shape, topography.spacing,
-                                         strict=False):
+    for field, window, n, spacing in zip(
+        ("x", "y"), (x, y), topography.shape, topography.spacing, strict=False
+    ):
         if window is None:
             slices.append(slice(None))
             continue
         start, stop = (float(v) for v in window)
         first, last = (max(0, min(n, math.ceil(v / spacing - _PIXEL_TOLERANCE))) for v in (start, stop))
         if not start < stop or last - first < 2:
-            raise InputError(field, f"window ({start:.6g}, {stop:.6g}) m keeps {max(last - first, 0)} points "
-                                    f"of a grid of {n} points spaced {spacing:.6g} m.",
-                             "give start < stop [m] spanning at least 2 grid points inside the topography.")
+            raise InputError(
+                field,
+                f"window ({start:.6g}, {stop:.6g}) m keeps {max(last - first, 0)} points "
+                f"of a grid of {n} points spaced {spacing:.6g} m.",
+                "give start < stop [m] spanning at least 2 grid points inside the topography.",
+            )
         slices.append(slice(first, last))
     heights = topography.heights[tuple(slices)]
     size = tuple(n * s for n, s in zip(heights.shape, topography.spacing, strict=True))
@@ -280,8 +304,11 @@ def _spacing_tuple(spacing: float | tuple[float, ...], dim: int, field: str) -> 
     if values.size == 1:
         values = np.repeat(values, dim)
     if values.shape != (dim,) or not np.all(np.isfinite(values)) or np.any(values <= 0):
-        raise InputError(field, f"{spacing!r} is not {dim} positive finite length(s).",
-                         f"give the pixel size in metres, one value or one per axis ({dim}).")
+        raise InputError(
+            field,
+            f"{spacing!r} is not {dim} positive finite length(s).",
+            f"give the pixel size in metres, one value or one per axis ({dim}).",
+        )
     return tuple(float(v) for v in values)
 
 
@@ -300,8 +327,9 @@ def _sample(topography: Topography, shape: tuple[int, ...], spacing: tuple[float
     return ndimage.map_coordinates(topography.heights, grid, order=3, mode=mode)
 
 
-def _shape_for(topography: Topography,
-               spacing: tuple[float, ...]) -> tuple[tuple[int, ...], tuple[float, ...]]:
+def _shape_for(
+    topography: Topography, spacing: tuple[float, ...]
+) -> tuple[tuple[int, ...], tuple[float, ...]]:
     """Return the shape and spacing of the resampled grid (see resample)."""
     if topography.periodic:
         shape = tuple(max(2, round(s / h)) for s, h in zip(topography.size, spacing, strict=True))
@@ -311,8 +339,10 @@ def _shape_for(topography: Topography,
 
 def _points_within(topography: Topography, spacing: tuple[float, ...]) -> tuple[int, ...]:
     """Count the points ``j * spacing`` per axis up to the last grid point of ``topography``."""
-    return tuple(math.floor((n - 1) * old / new + _PIXEL_TOLERANCE) + 1
-                 for n, old, new in zip(topography.shape, topography.spacing, spacing, strict=True))
+    return tuple(
+        math.floor((n - 1) * old / new + _PIXEL_TOLERANCE) + 1
+        for n, old, new in zip(topography.shape, topography.spacing, spacing, strict=True)
+    )
 
 
 def resample(topography: Topography, spacing: float | tuple[float, ...]) -> Topography:
@@ -426,9 +456,12 @@ def combine(a: Topography, b: Topography, *, resample: bool = False) -> Topograp
     if not resample:
         if a.shape != b.shape or not same_size:
             which = "shape" if a.shape != b.shape else "size"
-            raise InputError("b", f"grid {which} differs: a is {a.shape} points over {a.size} m, "
-                                  f"b is {b.shape} points over {b.size} m.",
-                             "pass resample=True to interpolate both onto a common grid.")
+            raise InputError(
+                "b",
+                f"grid {which} differs: a is {a.shape} points over {a.size} m, "
+                f"b is {b.shape} points over {b.size} m.",
+                "pass resample=True to interpolate both onto a common grid.",
+            )
         heights_a, heights_b, size, periodic = a.heights, b.heights, a.size, a.periodic and b.periodic
     else:
         spacing = common_spacing(a, b)

@@ -91,6 +91,7 @@ MCCOOL_MIN_BANDWIDTH = 0.8968  # sigma_s = 0 at this bandwidth (McCool 1986; pap
 
 # --- amplitude parameters ------------------------------------------------------------------------
 
+
 def _centred(topography: Topography) -> np.ndarray:
     """Heights about the mean plane [m]."""
     return topography.heights - topography.heights.mean()
@@ -110,8 +111,11 @@ def _standardised_moment(topography: Topography, order: int) -> float:
     z = _centred(topography)
     variance = np.mean(z**2)
     if variance <= (np.finfo(float).eps * np.abs(topography.heights).max()) ** 2:
-        raise InputError("topography", "the surface is flat (Rq = 0): skewness and kurtosis are undefined.",
-                         "pass a rough surface.")
+        raise InputError(
+            "topography",
+            "the surface is flat (Rq = 0): skewness and kurtosis are undefined.",
+            "pass a rough surface.",
+        )
     return float(np.mean(z**order) / variance ** (order / 2))
 
 
@@ -149,10 +153,12 @@ def rz(topography: Topography) -> float:
 
 # --- finite differences --------------------------------------------------------------------------
 
+
 def _check_derivative(derivative: str) -> None:
     if derivative not in DERIVATIVES:
-        raise InputError("derivative", f"unknown finite-difference scheme {derivative!r}.",
-                         f"choose one of {DERIVATIVES}.")
+        raise InputError(
+            "derivative", f"unknown finite-difference scheme {derivative!r}.", f"choose one of {DERIVATIVES}."
+        )
 
 
 def _shifted(heights: np.ndarray, axis: int, shift: int, periodic: bool) -> np.ndarray:
@@ -173,8 +179,9 @@ _FIRST = {"central": ((1, 0.5), (-1, -0.5)), "forward": ((1, 1.0), (0, -1.0))}  
 _SECOND = ((1, 1.0), (0, -2.0), (-1, 1.0))  # (shift, weight) / h**2
 
 
-def _derivatives(topography: Topography, order: int,
-                 derivative: str = "forward") -> tuple[list[np.ndarray], np.ndarray]:
+def _derivatives(
+    topography: Topography, order: int, derivative: str = "forward"
+) -> tuple[list[np.ndarray], np.ndarray]:
     """Finite-difference derivatives of order 1 or 2 along each axis and the mask of valid points.
 
     Returns one array per axis (``d^order z / dx_k^order`` [m^(1-order)]) and a boolean mask of the
@@ -187,8 +194,9 @@ def _derivatives(topography: Topography, order: int,
     valid = np.ones(heights.shape, dtype=bool)
     slopes = []
     for axis, spacing in enumerate(topography.spacing):
-        slopes.append(sum(w * _shifted(heights, axis, s, topography.periodic) for s, w in stencil)
-                      / spacing**order)
+        slopes.append(
+            sum(w * _shifted(heights, axis, s, topography.periodic) for s, w in stencil) / spacing**order
+        )
         if not topography.periodic:
             low, high = min(s for s, _ in stencil), max(s for s, _ in stencil)
             edge = [slice(None)] * heights.ndim
@@ -197,9 +205,12 @@ def _derivatives(topography: Topography, order: int,
             edge[axis] = slice(heights.shape[axis] - high, None)
             valid[tuple(edge)] = False
     if not valid.any():
-        raise InputError("topography", f"grid {heights.shape} is too small for {derivative} differences "
-                                       f"of order {order} on a non-periodic surface.",
-                         "use a larger grid (at least 3 points per axis).")
+        raise InputError(
+            "topography",
+            f"grid {heights.shape} is too small for {derivative} differences "
+            f"of order {order} on a non-periodic surface.",
+            "use a larger grid (at least 3 points per axis).",
+        )
     return slopes, valid
 
 
@@ -253,6 +264,7 @@ def rms_curvature(topography: Topography) -> float:
 
 
 # --- spectral moments and McCool -----------------------------------------------------------------
+
 
 @dataclass(frozen=True)
 class SpectralMoments:
@@ -395,10 +407,13 @@ def mccool_parameters(*, m0: float, m2: float, m4: float) -> McCoolParameters:
     m4 = _positive_finite(m4, "m4", "1/m^2")
     bandwidth = m0 * m4 / m2**2
     if bandwidth < MCCOOL_MIN_BANDWIDTH:
-        raise InputError("m2", f"bandwidth alpha = m0 m4 / m2^2 = {bandwidth:.4g} is below "
-                               f"{MCCOOL_MIN_BANDWIDTH}, so sigma_s is undefined.",
-                         "check the units of the moments (SI: m^2, -, 1/m^2) and that they come from one "
-                         "surface on a grid fine enough to resolve its curvatures.")
+        raise InputError(
+            "m2",
+            f"bandwidth alpha = m0 m4 / m2^2 = {bandwidth:.4g} is below "
+            f"{MCCOOL_MIN_BANDWIDTH}, so sigma_s is undefined.",
+            "check the units of the moments (SI: m^2, -, 1/m^2) and that they come from one "
+            "surface on a grid fine enough to resolve its curvatures.",
+        )
     return McCoolParameters(
         bandwidth=bandwidth,
         summit_density=m4 / (6.0 * math.pi * math.sqrt(3.0) * m2),
@@ -427,12 +442,15 @@ def mccool_parameters_of(topography: Topography, **kwargs) -> McCoolParameters:
     try:
         return mccool_parameters(m0=moments.m0, m2=moments.m2, m4=moments.m4)
     except InputError as error:
-        raise InputError("topography", f"its spectral moments are unusable ({error.field}: {error.problem})",
-                         "pass a rough, non-flat surface sampled finely enough to resolve its curvatures."
-                         ) from error
+        raise InputError(
+            "topography",
+            f"its spectral moments are unusable ({error.field}: {error.problem})",
+            "pass a rough, non-flat surface sampled finely enough to resolve its curvatures.",
+        ) from error
 
 
 # --- power spectra --------------------------------------------------------------------------------
+
 
 def _default_window(topography: Topography, window: str | None) -> str | None:
     if window == "default":
@@ -454,8 +472,9 @@ def _windowed(topography: Topography, axes: tuple[int, ...], window: str | None)
     return z
 
 
-def psd_1d(topography: Topography, *, window: str | None = "default",
-           workers: int = -1) -> tuple[np.ndarray, np.ndarray]:
+def psd_1d(
+    topography: Topography, *, window: str | None = "default", workers: int = -1
+) -> tuple[np.ndarray, np.ndarray]:
     r"""One-dimensional power spectral density along x (averaged over the y-lines of a map).
 
     .. math:: C^\mathrm{1D}(q) = \frac{1}{L_x}\left|\Delta x \sum_i z_i e^{-i q x_i}\right|^2
@@ -497,8 +516,9 @@ def psd_1d(topography: Topography, *, window: str | None = "default",
     return q, psd
 
 
-def psd_2d(topography: Topography, *, window: str | None = "default",
-           workers: int = -1) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def psd_2d(
+    topography: Topography, *, window: str | None = "default", workers: int = -1
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     r"""Two-dimensional power spectral density on the full DFT grid (numpy FFT order).
 
     .. math:: C^\mathrm{2D}(\mathbf q) = \frac{1}{L_x L_y}\left|\Delta x\Delta y
@@ -537,13 +557,15 @@ def psd_2d(topography: Topography, *, window: str | None = "default",
     window = _default_window(topography, window)
     z = _windowed(topography, (0, 1), window)
     psd = np.abs(fft.fft2(z, workers=workers)) ** 2 * topography.pixel_area**2 / topography.area
-    qx, qy = (2.0 * np.pi * fft.fftfreq(n, d=h) for n, h in zip(topography.shape, topography.spacing,
-                                                                strict=True))
+    qx, qy = (
+        2.0 * np.pi * fft.fftfreq(n, d=h) for n, h in zip(topography.shape, topography.spacing, strict=True)
+    )
     return qx, qy, psd
 
 
-def psd_radial(topography: Topography, nbins: int | None = None, *, window: str | None = "default",
-               workers: int = -1) -> tuple[np.ndarray, np.ndarray]:
+def psd_radial(
+    topography: Topography, nbins: int | None = None, *, window: str | None = "default", workers: int = -1
+) -> tuple[np.ndarray, np.ndarray]:
     r"""Radially averaged 2D power spectral density :math:`C^\mathrm{iso}(q)` of a map.
 
     The wavevectors of :func:`psd_2d` (except q = 0, which carries only the removed mean) are put
@@ -626,6 +648,7 @@ def autocorrelation(topography: Topography, *, workers: int = -1) -> tuple[np.nd
 
 # --- summits ---------------------------------------------------------------------------------------
 
+
 @dataclass(frozen=True)
 class Summits:
     """Local maxima of a surface.
@@ -689,6 +712,7 @@ def summits(topography: Topography) -> Summits:
 
 # --- summary ---------------------------------------------------------------------------------------
 
+
 def summary(topography: Topography) -> dict[str, float]:
     """All scalar statistics of a surface, SI, for the CLI.
 
@@ -713,13 +737,20 @@ def summary(topography: Topography) -> dict[str, float]:
         result |= {"Rsk": rsk(topography), "Rku": rku(topography)}
     except InputError:
         pass  # flat surface: skewness and kurtosis undefined, left out as documented
-    result |= {"Rz": rz(topography), "rms_slope": rms_slope(topography),
-               "rms_curvature": rms_curvature(topography)}
+    result |= {
+        "Rz": rz(topography),
+        "rms_slope": rms_slope(topography),
+        "rms_curvature": rms_curvature(topography),
+    }
     moments = spectral_moments(topography)
     result |= {"m0": moments.m0, "m2": moments.m2, "m4": moments.m4}
     try:
         mccool = mccool_parameters(m0=moments.m0, m2=moments.m2, m4=moments.m4)
     except InputError:
         return result  # McCool entries undefined for these moments, left out as documented
-    return result | {"bandwidth": mccool.bandwidth, "summit_density": mccool.summit_density,
-                     "summit_radius": mccool.summit_radius, "summit_height_std": mccool.summit_height_std}
+    return result | {
+        "bandwidth": mccool.bandwidth,
+        "summit_density": mccool.summit_density,
+        "summit_radius": mccool.summit_radius,
+        "summit_height_std": mccool.summit_height_std,
+    }

@@ -63,27 +63,38 @@ class Topography:
         heights = np.array(self.heights, dtype=float)  # always a private copy
         if heights.ndim not in (1, 2):
             raise InputError(
-                "heights", f"expected a 1D profile or a 2D map, got an array with {heights.ndim} dimensions.",
+                "heights",
+                f"expected a 1D profile or a 2D map, got an array with {heights.ndim} dimensions.",
                 "pass heights of shape (nx,) or (nx, ny).",
             )
         if heights.size == 0 or min(heights.shape) < 2:
-            raise InputError("heights", f"grid {heights.shape} has fewer than 2 points along an axis.",
-                             "give at least 2 x 2 points (2 for a profile).")
+            raise InputError(
+                "heights",
+                f"grid {heights.shape} has fewer than 2 points along an axis.",
+                "give at least 2 x 2 points (2 for a profile).",
+            )
         bad = ~np.isfinite(heights)
         if bad.any():
             raise InputError(
-                "heights", f"{int(bad.sum())} of {heights.size} heights are NaN or infinite.",
+                "heights",
+                f"{int(bad.sum())} of {heights.size} heights are NaN or infinite.",
                 "fill them first (read_topography(..., undefined='interpolate')) or crop them away.",
             )
         size = np.atleast_1d(np.asarray(self.size, dtype=float))
         if size.size == 1 and heights.ndim == 2:
             size = np.repeat(size, 2)
         if size.shape != (heights.ndim,):
-            raise InputError("size", f"got {size.size} values for a {heights.ndim}D topography.",
-                             f"give {heights.ndim} physical lengths in metres.")
+            raise InputError(
+                "size",
+                f"got {size.size} values for a {heights.ndim}D topography.",
+                f"give {heights.ndim} physical lengths in metres.",
+            )
         if not np.all(np.isfinite(size)) or np.any(size <= 0):
-            raise InputError("size", f"physical size {tuple(size)} must be positive and finite.",
-                             "give the scan size in metres (or with a unit at the CLI, e.g. '10 um').")
+            raise InputError(
+                "size",
+                f"physical size {tuple(size)} must be positive and finite.",
+                "give the scan size in metres (or with a unit at the CLI, e.g. '10 um').",
+            )
         heights.flags.writeable = False
         object.__setattr__(self, "heights", heights)
         object.__setattr__(self, "size", tuple(float(s) for s in size))
@@ -139,8 +150,11 @@ class Topography:
         """
         heights = np.asarray(heights, dtype=float)
         if "size" not in changes and heights.shape != self.shape:
-            raise InputError("heights", f"shape {heights.shape} does not match the grid {self.shape}.",
-                             "pass a new size together with a new grid.")
+            raise InputError(
+                "heights",
+                f"shape {heights.shape} does not match the grid {self.shape}.",
+                "pass a new size together with a new grid.",
+            )
         info = dict(changes.pop("info", self.info))
         if step:
             info["history"] = (*info.get("history", ()), step)
@@ -156,7 +170,11 @@ class Topography:
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Topography):
             return NotImplemented
-        return (self.size == other.size and self.periodic == other.periodic
-                and np.array_equal(self.heights, other.heights) and dict(self.info) == dict(other.info))
+        return (
+            self.size == other.size
+            and self.periodic == other.periodic
+            and np.array_equal(self.heights, other.heights)
+            and dict(self.info) == dict(other.info)
+        )
 
     __hash__ = None  # mutable-looking numpy content; equality is by value
