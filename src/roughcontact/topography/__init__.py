@@ -1,5 +1,25 @@
-"""Surfaces: the :class:`Topography` container, instrument readers, generators, processing and statistics."""
+"""Surfaces: the :class:`Topography` container, instrument readers, generators, processing and statistics.
 
+The submodules hold the functions: ``io`` (read/save/load), ``generate`` (synthetic surfaces),
+``process`` (detrend, sphere removal, crop, resample, combine) and ``statistics`` (roughness
+parameters, spectral moments, McCool asperity parameters, PSD). The most used are re-exported here.
+"""
+
+from .io import list_channels, load_topography, read_topography, save_topography
+from .process import combine, detrend, remove_sphere
+from .statistics import mccool_parameters, spectral_moments, summary
 from .surface import Topography
 
-__all__ = ["Topography"]
+__all__ = [
+    "Topography",
+    "combine",
+    "detrend",
+    "list_channels",
+    "load_topography",
+    "mccool_parameters",
+    "read_topography",
+    "remove_sphere",
+    "save_topography",
+    "spectral_moments",
+    "summary",
+]

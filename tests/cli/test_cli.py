@@ -1,0 +1,138 @@
+"""The command line end to end, on real instrument files and small grids."""
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from roughcontact.cli import EXIT_INPUT_ERROR, main
+
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+
+
+def run(capsys, *argv):
+    status = main([str(a) for a in argv])
+    captured = capsys.readouterr()
+    return status, captured.out, captured.err
+
+
+def test_inspect_lists_channels_units_and_statistics(capsys, shared_topographies):
+    status, out, err = run(capsys, "inspect", shared_topographies / "di-3.di")
+    assert status == 0, err
+    assert "ZSensor" in out and "*" in out  # default channel marked
+    assert "256 x 256 points" in out
+    assert "10 µm x 10 µm" in out
+    assert "Rq" in out and "summit_radius" in out
+
+
+def test_inspect_json_is_si(capsys, shared_topographies):
+    status, out, _ = run(capsys, "inspect", shared_topographies / "top-1.top", "--json")
+    assert status == 0
+    doc = json.loads(out)
+    assert doc["grid"] == [256, 256]
+    assert doc["size_m"] == pytest.approx([600e-9, 600e-9], rel=1e-9, abs=0)
+    # README: rms 3.15 nm; 1e-2 relative covers the README's 3-digit rounding.
+    assert doc["statistics"]["Rq"] == pytest.approx(3.15e-9, rel=1e-2, abs=0)
+
+
+def test_inspect_selects_channel_by_name_and_index(capsys, shared_topographies):
+    path = shared_topographies / "di-3.di"
+    status, out, err = run(capsys, "inspect", path, "--json", "--channel", "3")
+    assert status == 0, err
+    by_index = json.loads(out)
+    name = next(c["name"] for c in by_index["channels"] if c["index"] == 3)
+    assert name == "Height"
+    status, out, err = run(capsys, "inspect", path, "--json", "--channel", name)
+    assert status == 0, err
+    by_name = json.loads(out)
+    assert by_name["statistics"] == by_index["statistics"]
+    status, out, _ = run(capsys, "inspect", path, "--json")
+    default = json.loads(out)
+    assert default["statistics"]["Rq"] != by_index["statistics"]["Rq"]  # ZSensor is another channel
+
+
+def test_non_height_channel_is_refused(capsys, shared_topographies):
+    status, _, err = run(capsys, "inspect", shared_topographies / "di-3.di", "--channel", "Phase")
+    assert status == EXIT_INPUT_ERROR
+    assert "Phase" in err
+
+
+def test_missing_size_says_how_to_pass_it(capsys, shared_topographies):
+    status, _, err = run(capsys, "inspect", shared_topographies / "afm-slippy.txt")
+    assert status == EXIT_INPUT_ERROR
+    assert "--size" in err
+    assert "afm-slippy.txt" in err
+    status, out, err = run(
+        capsys,
+        "inspect",
+        shared_topographies / "afm-slippy.txt",
+        "--size",
+        "5 um",
+        "--height-unit",
+        "nm",
+        "--json",
+    )
+    assert status == 0, err
+    assert json.loads(out)["size_m"] == pytest.approx([5e-6, 5e-6], rel=1e-12, abs=0)
+
+
+def test_undefined_points_need_an_explicit_choice(capsys, shared_topographies):
+    status, _, err = run(capsys, "inspect", shared_topographies / "sur-2.sur")
+    assert status == EXIT_INPUT_ERROR
+    assert "undefined" in err and "--fill-undefined" in err
+    status, out, err = run(capsys, "inspect", shared_topographies / "sur-2.sur", "--fill-undefined", "--json")
+    assert status == 0, err
+    assert json.loads(out)["undefined_points_filled"] > 0
+
+
+@pytest.mark.parametrize(
+    "name", ["di_corrupted.di", "nonsense_txt_file.txt", "wrongnpyfile.npy", "no-such-file.di"]
+)
+def test_broken_files_give_one_clear_line(capsys, shared_topographies, name):
+    status, out, err = run(capsys, "inspect", shared_topographies / name)
+    assert status == EXIT_INPUT_ERROR
+    assert name in err
+    assert "Traceback" not in err
+    assert len(err.strip().splitlines()) <= 3
+
+
+def test_plot_writes_a_png(capsys, shared_topographies, tmp_path):
+    target = tmp_path / "figs" / "top.png"
+    status, out, err = run(capsys, "plot", shared_topographies / "top-1.top", "-o", target)
+    assert status == 0, err
+    assert target.read_bytes().startswith(PNG_MAGIC)
+
+
+def test_plot_a_line_scan(capsys, shared_topographies, tmp_path):
+    target = tmp_path / "profile.png"
+    status, _, err = run(capsys, "plot", shared_topographies / "opdx-3.opdx", "-o", target)
+    assert status == 0, err
+    assert target.read_bytes().startswith(PNG_MAGIC)
+
+
+def test_bad_size_argument_is_refused(capsys, shared_topographies):
+    status, _, err = run(
+        capsys, "inspect", shared_topographies / "afm-slippy.txt", "--size", "5 GPa", "--height-unit", "nm"
+    )
+    assert status == EXIT_INPUT_ERROR
+    assert "expected a length" in err
+
+
+def test_demo_prints_statistics_and_writes_figures(capsys, tmp_path):
+    status, out, err = run(capsys, "demo", "-o", tmp_path)
+    assert status == 0, err
+    assert "Rq" in out
+    assert "R_asp" in out and "5.08" in out  # paper 002 reproduction
+    pngs = sorted(p.name for p in tmp_path.glob("*.png"))
+    assert len(pngs) >= 2
+    for png in tmp_path.glob("*.png"):
+        assert png.read_bytes().startswith(PNG_MAGIC)
+
+
+def test_console_script_runs_as_module():
+    done = subprocess.run(
+        [sys.executable, "-m", "roughcontact", "--version"], capture_output=True, text=True, check=False
+    )
+    assert done.returncode == 0
+    assert done.stdout.startswith("roughcontact ")
