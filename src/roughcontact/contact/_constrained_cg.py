@@ -1,0 +1,196 @@
+r"""The one constrained conjugate-gradient engine behind every normal contact solve.
+
+It solves the discrete contact problem of a rigid flat pressed onto a surface of initial
+separation h0 >= 0 (min h0 = 0 at the first point to touch) [m] with a compliance operator K:
+
+.. math::
+
+    g = K p + h_0 - \delta, \qquad 0 \le p \le p_{max}, \qquad
+    g \ge 0 \text{ where } p = 0, \quad g = 0 \text{ where } 0 < p < p_{max}, \quad
+    g \le 0 \text{ where } p = p_{max}
+
+(paper 001 eq. 4 with an optional pressure cap, the hardness of an elastic-perfectly-plastic
+surface, where the overlap -g is plastic flow), either at a given total force (load control:
+the approach delta is the Lagrange multiplier of the force) or at a given approach delta
+(displacement control). The iteration is Polonsky and Keer's (1999) conjugate gradient
+projected on the feasible set, with the box constraint of Almqvist et al. (2007) for the cap:
+
+1. u = K p (one FFT pair); g = u + h0 - delta with delta = mean of u + h0 over the free set
+   {0 < p < p_max} (load control) or the given delta.
+2. Residual (below); stop when it is below the tolerance.
+3. Conjugate direction t = g + beta t_old on the free set (beta = G / G_old, reset to 0 after a
+   step that changed the active set); r = K t (one FFT pair), with its free-set mean removed
+   under load control; step tau = (g.t) / (r.t).
+4. p -= tau t on the free set; clip to [0, p_max]; points at a bound whose gap says they should
+   leave it (p = 0 with g < 0, p = p_max with g > 0) move by -tau g; clip again.
+5. Load control: rescale the pressure to the target force (Polonsky-Keer). A cap is only
+   supported under displacement control (the caller finds the approach of a force by root
+   finding, :mod:`roughcontact.contact.plastic`).
+
+Residual (scale-free: the same number in nm or m, at any load):
+
+.. math::
+
+    r = \max\left(\frac{\sum_{p_i < p_{max}} p_i |g_i|}{\sum_i p_i}, \;
+                 \max_{p_i = 0} (-g_i)^+, \; \max_{p_i = p_{max}} (g_i)^+\right) / s_h
+
+with s_h the rms of h0 about its mean plus the rms of u about its mean (a height scale of the
+problem). The first term is the pressure-weighted mean gap over the contact (zero at the
+solution), the others the worst violation of the gap conditions. Each iteration costs two
+FFT pairs; the returned pressure and gap are from the same iterate (never a mixed state).
+
+References
+----------
+Polonsky, I. A. and Keer, L. M. (1999). Wear 231, 206-219. doi:10.1016/S0043-1648(99)00113-1
+Almqvist, A., Sahlin, F., Larsson, R. and Glavatskih, S. (2007). Tribol. Int. 40, 574-579.
+doi:10.1016/j.triboint.2005.11.008
+Rey, V., Anciaux, G. and Molinari, J.-F. (2017). Comput. Mech. 60, 69-81.
+doi:10.1007/s00466-017-1392-5
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import ConvergenceError
+
+
+@dataclass(frozen=True)
+class EngineResult:
+    """Raw solution of :func:`solve`: fields of one iterate, approach, iterations, residual."""
+
+    pressure: np.ndarray
+    displacement: np.ndarray
+    gap: np.ndarray
+    approach: float
+    iterations: int
+    residual: float
+
+
+def _rms(values: np.ndarray) -> float:
+    return float(np.sqrt(np.mean((values - values.mean()) ** 2)))
+
+
+def _residual(pressure, gap, height_scale, cap) -> float:
+    total = pressure.sum()
+    elastic = (
+        pressure if cap is None else np.where(pressure < cap, pressure, 0.0)
+    )  # overlap at the cap is plastic
+    weighted = float(np.sum(elastic * np.abs(gap)) / total) if total > 0 else 0.0
+    free_overlap = float(np.max(-gap, where=pressure <= 0, initial=0.0))
+    worst = max(weighted, free_overlap)
+    if cap is not None:
+        worst = max(worst, float(np.max(gap, where=pressure >= cap, initial=0.0)))
+    return worst / height_scale if height_scale > 0 else 0.0
+
+
+def solve(
+    compliance: Callable[[np.ndarray], np.ndarray],
+    separation: np.ndarray,
+    *,
+    pixel_area: float,
+    force: float | None = None,
+    approach: float | None = None,
+    cap: float | None = None,
+    initial_pressure: np.ndarray | None = None,
+    stiffness: float,
+    tolerance: float = 1e-8,
+    max_iterations: int = 10_000,
+    solver: str = "normal contact",
+) -> EngineResult:
+    """Solve the contact problem of the module docstring.
+
+    Parameters
+    ----------
+    compliance : callable
+        p [Pa] -> u [m], the linear surface compliance (e.g. a SurfaceCompliance).
+    separation : ndarray
+        Initial separation h0 [m] (>= 0, 0 at the highest point).
+    pixel_area : float
+        Area of one pixel [m^2]; force = pixel_area * sum(p).
+    force, approach : float
+        Exactly one: total force [N] (load control) or rigid approach [m] (displacement control).
+    cap : float, optional
+        Largest pressure [Pa] (hardness); None for elastic contact.
+    initial_pressure : ndarray, optional
+        Warm start [Pa] (e.g. the previous step of a load path).
+    stiffness : float
+        A pressure per length [Pa/m] to turn the initial overlap into a first pressure guess
+        under displacement control (E* / pixel size is a good one); any positive value works.
+    tolerance : float
+        Stop when the residual of the module docstring is below it.
+    max_iterations : int
+        Raise :class:`ConvergenceError` beyond this.
+    solver : str
+        Name used in error messages.
+
+    Returns
+    -------
+    EngineResult
+
+    Raises
+    ------
+    ConvergenceError
+        Not converged in ``max_iterations`` (residual and iterations reported).
+    """
+    load_control = force is not None
+    if load_control and cap is not None:
+        raise ValueError("a pressure cap needs displacement control")
+    h0 = separation
+    if initial_pressure is not None:
+        p = np.clip(initial_pressure, 0.0, cap if cap is not None else np.inf)
+    elif load_control:
+        p = np.full(h0.shape, 0.0)
+    else:
+        p = np.maximum(approach - h0, 0.0) * stiffness
+    if load_control:
+        target = force / pixel_area  # target sum of pixel pressures
+        if p.sum() <= 0:
+            p = np.full(h0.shape, target / h0.size)
+        p = _rescale(p, target)
+    height_scale = _rms(h0)
+    t = np.zeros_like(h0)
+    g_norm_old = 1.0
+    conjugate = False
+    delta = approach
+    for iteration in range(max_iterations + 1):
+        u = compliance(p)
+        free = p > 0 if cap is None else (p > 0) & (p < cap)
+        if load_control:
+            delta = float(np.mean((u + h0)[free])) if free.any() else float(np.min(u + h0))
+        g = u + h0 - delta
+        residual = _residual(p, g, height_scale + _rms(u), cap)
+        if residual <= tolerance:
+            return EngineResult(p, u, g, float(delta), iteration, residual)
+        if iteration == max_iterations:
+            break
+        g_norm = float(np.sum(g[free] ** 2))
+        t = np.where(free, g + (g_norm / g_norm_old) * t if conjugate else g, 0.0)
+        g_norm_old = g_norm
+        r = compliance(t)
+        if load_control and free.any():
+            r -= np.mean(r[free])
+        rt = float(np.sum(r[free] * t[free]))
+        tau = float(np.sum(g[free] * t[free])) / rt if rt > 0 else 0.0
+        p = p - tau * t
+        p = np.clip(p, 0.0, cap if cap is not None else np.inf)
+        leaving = (p <= 0) & (g < 0)
+        if cap is not None:
+            leaving |= (p >= cap) & (g > 0)
+        conjugate = not leaving.any()
+        if not conjugate:
+            step = tau if tau > 0 else 1.0 / stiffness
+            p = np.where(leaving, p - step * g, p)
+            p = np.clip(p, 0.0, cap if cap is not None else np.inf)
+        if load_control:
+            p = _rescale(p, target)
+    raise ConvergenceError(solver, residual, max_iterations, tolerance)
+
+
+def _rescale(p: np.ndarray, target: float) -> np.ndarray:
+    """Scale p so that sum(p) = target."""
+    total = p.sum()
+    return p * (target / total) if total > 0 else p

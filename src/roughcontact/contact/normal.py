@@ -1,0 +1,260 @@
+r"""Normal contact of a rough surface against a rigid flat: :func:`solve_normal`.
+
+The surface is an elastic half-space (or a layer, see
+:class:`roughcontact.elasticity.halfspace.ElasticLayer`) whose undeformed heights are the
+topography; the counter-body is a flat. Two rough elastic bodies are handled through their
+composite topography (:func:`roughcontact.topography.process.combine`) and the contact modulus
+of the pair, which is exact for the normal problem of two elastic half-spaces under the
+small-slope assumption of the boundary-element method, when the tangential tractions are
+ignored (Johnson 1985 sec. 13.1; with the Dundurs beta != 0 coupling see the tangential solver).
+
+The contact conditions are paper 001 eq. 4 (complementarity of gap and pressure); with a
+hardness the pressure is capped and the overlap becomes plastic deformation (paper 002's
+elastic-perfectly-plastic surface model, see :mod:`roughcontact.contact.plastic`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy import optimize
+
+from .. import __version__
+from ..elasticity.halfspace import ElasticLayer, SurfaceCompliance
+from ..errors import InputError
+from ..materials import Material, contact_modulus
+from ..topography import Topography
+from . import _constrained_cg
+from .result import NormalContactResult
+
+# Width given to the y axis of a line scan solved as a (n, 1) grid; any value gives the same answer.
+_LINE_WIDTH = 1.0
+
+
+def _boundary(topography: Topography, boundary: str | None) -> str:
+    boundary = boundary or ("periodic" if topography.periodic else "free")
+    if topography.dim == 1 and boundary == "free":
+        raise InputError(
+            "boundary",
+            "a line scan is solved as a periodic plane-strain line contact only.",
+            "pass a periodic profile (periodic=True) or a 2D map.",
+        )
+    return boundary
+
+
+def compliance_for(
+    topography: Topography,
+    material: Material | float | None,
+    *,
+    counter_body: Material | None = None,
+    layer: ElasticLayer | None = None,
+    boundary: str | None = None,
+    workers: int | None = None,
+) -> SurfaceCompliance:
+    """Build the surface compliance operator of a topography's grid for a body (and counter-body).
+
+    Parameters
+    ----------
+    topography : Topography
+        Gives the grid and physical size.
+    material : Material or float or None
+        The body's material, or directly the contact modulus E* [Pa]; None when ``layer`` is given.
+    counter_body : Material, optional
+        The flat (default: rigid).
+    layer : ElasticLayer, optional
+        The body is this layer instead of a half-space.
+    boundary : {"periodic", "free"}, optional
+        Default: "periodic" for a periodic topography, else "free".
+    workers : int, optional
+        Threads for scipy.fft.
+    """
+    boundary = _boundary(topography, boundary)
+    shape = topography.shape if topography.dim == 2 else (topography.shape[0], 1)
+    size = topography.size if topography.dim == 2 else (topography.size[0], _LINE_WIDTH)
+    if layer is not None:
+        if material is not None:
+            raise InputError("material", "both a material and a layer were given.", "pass material=None.")
+        return SurfaceCompliance(
+            shape, size, layer=layer, counter_body=counter_body, boundary=boundary, workers=workers
+        )
+    if isinstance(material, Material):
+        modulus = contact_modulus(material, counter_body)
+    else:
+        if counter_body is not None:
+            raise InputError(
+                "counter_body", "a contact modulus already includes both bodies.", "pass a Material instead."
+            )
+        modulus = material
+    return SurfaceCompliance(shape, size, modulus, boundary=boundary, workers=workers)
+
+
+def _one_target(**targets) -> tuple[str, float]:
+    given = {k: v for k, v in targets.items() if v is not None}
+    if len(given) != 1:
+        raise InputError(
+            "load",
+            f"give exactly one of {', '.join(targets)}; got {', '.join(given) or 'none'}.",
+            "e.g. mean_pressure=1e6 (Pa), force=1e-3 (N) or approach=1e-8 (m).",
+        )
+    name, value = next(iter(given.items()))
+    if not np.isfinite(value) or value < 0:
+        raise InputError(name, f"must be finite and >= 0, got {value!r}.", "give a non-negative value in SI.")
+    return name, float(value)
+
+
+def _check_heights(topography: Topography) -> None:
+    if not np.all(np.isfinite(topography.heights)):
+        raise InputError(
+            "heights",
+            "the topography has undefined (NaN or infinite) heights.",
+            "fill them first (read_topography(..., undefined='interpolate')).",
+        )
+
+
+def solve_normal(
+    topography: Topography,
+    material: Material | float | None = None,
+    *,
+    mean_pressure: float | None = None,
+    force: float | None = None,
+    approach: float | None = None,
+    counter_body: Material | None = None,
+    layer: ElasticLayer | None = None,
+    hardness: float | None = None,
+    boundary: str | None = None,
+    tolerance: float = 1e-8,
+    max_iterations: int = 10_000,
+    initial: NormalContactResult | np.ndarray | None = None,
+    compliance: SurfaceCompliance | None = None,
+) -> NormalContactResult:
+    """Solve the normal contact of ``topography`` against a flat.
+
+    Parameters
+    ----------
+    topography : Topography
+        Heights [m] pointing towards the flat (2D map, or a periodic 1D profile solved as a
+        plane-strain line contact). Detrend it first; undefined heights are refused.
+    material : Material or float
+        The body's material (against a rigid flat unless ``counter_body``), or the contact
+        modulus E* [Pa] directly.
+    mean_pressure, force, approach : float
+        Exactly one. Load control by the nominal mean pressure [Pa] or the total force [N]
+        (per unit length [N/m] for a profile); displacement control by the rigid approach [m]
+        from the first touch.
+    counter_body : Material, optional
+        Material of the flat (default rigid); E* combines both.
+    layer : ElasticLayer, optional
+        The body is an elastic layer of finite thickness (on a rigid base or a substrate).
+    hardness : float, optional
+        Caps the pressure [Pa] (elastic-perfectly-plastic surface, paper 002); the overlap at
+        the cap is the plastic deformation. Load control then finds the approach by root finding.
+    boundary : {"periodic", "free"}, optional
+        Default: the topography's periodic flag.
+    tolerance : float
+        Scale-free residual to reach (see :mod:`roughcontact.contact._constrained_cg`).
+    max_iterations : int
+        Iteration limit; beyond it :class:`~roughcontact.errors.ConvergenceError` is raised.
+    initial : NormalContactResult or ndarray, optional
+        Warm start (a previous solution on the same grid, e.g. the last step of a load path).
+    compliance : SurfaceCompliance, optional
+        A prebuilt operator for this grid (reuse it along load paths; overrides the material).
+
+    Returns
+    -------
+    NormalContactResult
+
+    Raises
+    ------
+    InputError
+        No or several load targets, negative loads, undefined heights, a load the capped
+        surface cannot carry, grids that do not match the operator.
+    ConvergenceError
+        The solver did not reach the tolerance.
+
+    References
+    ----------
+    Polonsky, I. A. and Keer, L. M. (1999). Wear 231, 206-219. doi:10.1016/S0043-1648(99)00113-1
+    Seed paper 001, eq. 4; seed paper 002 (elastic-plastic compression).
+    """
+    name, value = _one_target(mean_pressure=mean_pressure, force=force, approach=approach)
+    _check_heights(topography)
+    if compliance is None:
+        compliance = compliance_for(
+            topography, material, counter_body=counter_body, layer=layer, boundary=boundary
+        )
+    shape = compliance.shape
+    if int(np.prod(shape)) != topography.heights.size or shape[0] != topography.shape[0]:
+        raise InputError("compliance", f"operator grid {shape} does not match {topography.shape}.", None)
+    if hardness is not None and not (np.isfinite(hardness) and hardness > 0):
+        raise InputError("hardness", f"must be positive, got {hardness!r}.", "give it in Pa, or None.")
+    heights = topography.heights.reshape(shape)
+    separation = heights.max() - heights
+    measure = topography.pixel_area if topography.dim == 2 else topography.spacing[0]
+    nominal = topography.area if topography.dim == 2 else topography.size[0]
+    target_force = value * nominal if name == "mean_pressure" else value
+    if initial is not None:
+        initial = (initial.pressure if isinstance(initial, NormalContactResult) else initial).reshape(shape)
+    common = dict(
+        pixel_area=measure,
+        cap=hardness,
+        stiffness=compliance.contact_modulus / min(topography.spacing),
+        tolerance=tolerance,
+        max_iterations=max_iterations,
+        solver="solve_normal",
+    )
+    if name == "approach":
+        raw = _constrained_cg.solve(
+            compliance, separation, approach=value, initial_pressure=initial, **common
+        )
+    elif hardness is None:
+        raw = _constrained_cg.solve(
+            compliance, separation, force=target_force, initial_pressure=initial, **common
+        )
+    else:
+        raw = _capped_at_force(compliance, separation, target_force, initial, measure, hardness, common)
+    return NormalContactResult(
+        topography=topography,
+        pressure=raw.pressure.reshape(topography.shape),
+        gap=raw.gap.reshape(topography.shape),
+        displacement=raw.displacement.reshape(topography.shape),
+        approach=raw.approach,
+        contact_modulus=compliance.contact_modulus,
+        boundary=compliance.boundary,
+        iterations=raw.iterations,
+        residual=raw.residual,
+        tolerance=tolerance,
+        hardness=hardness,
+        parameters={name: value, "version": __version__},
+    )
+
+
+def _capped_at_force(compliance, separation, target_force, initial, measure, hardness, common):
+    """Displacement-controlled capped solves, with the approach found by Brent's method."""
+    capacity = hardness * separation.size * measure
+    if target_force >= capacity:
+        raise InputError(
+            "force",
+            f"{target_force:.4g} N needs a mean pressure at or above the hardness over the whole "
+            f"surface (capacity {capacity:.4g} N).",
+            "lower the load or enlarge the nominal area.",
+        )
+    state = {"pressure": initial, "raw": None}
+
+    def excess(delta: float) -> float:
+        raw = _constrained_cg.solve(
+            compliance, separation, approach=delta, initial_pressure=state["pressure"], **common
+        )
+        state["pressure"], state["raw"] = raw.pressure, raw
+        return raw.pressure.sum() * measure - target_force
+
+    if target_force == 0:
+        return _constrained_cg.solve(compliance, separation, approach=0.0, **common)
+    high = float(np.ptp(separation)) or (target_force / capacity) * 1e-6
+    while excess(high) < 0:
+        high *= 2.0
+    relative = common["tolerance"]
+    delta = optimize.brentq(excess, 0.0, high, xtol=relative * high, rtol=max(relative, 4e-16))
+    raw = state["raw"]
+    if raw.approach != delta:
+        excess(delta)
+        raw = state["raw"]
+    return raw

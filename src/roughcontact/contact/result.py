@@ -1,0 +1,185 @@
+"""Immutable result of a normal contact solve, with its derived quantities and ``to_xarray()``."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from scipy import ndimage
+
+from ..topography import Topography
+
+
+def count_patches(mask: np.ndarray, *, periodic: bool) -> int:
+    """Count 4-connected contact patches; patches joined across a periodic edge count once."""
+    labels, count = ndimage.label(mask)
+    if not periodic or count == 0:
+        return int(count)
+    parent = np.arange(count + 1)
+
+    def root(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    pairs = [(labels[0, :], labels[-1, :])]
+    if labels.shape[1] > 1:
+        pairs.append((labels[:, 0], labels[:, -1]))
+    for first, last in pairs:
+        for a, b in zip(first, last, strict=True):
+            if a and b:
+                ra, rb = root(int(a)), root(int(b))
+                if ra != rb:
+                    parent[max(ra, rb)] = min(ra, rb)
+    return len({root(i) for i in range(1, count + 1)})
+
+
+@dataclass(frozen=True)
+class NormalContactResult:
+    """Converged normal contact of a surface against a rigid flat (all SI).
+
+    Attributes
+    ----------
+    topography : Topography
+        The surface that was solved (for two rough bodies: their composite).
+    pressure : ndarray
+        Contact pressure [Pa], >= 0 (<= hardness for elastic-plastic contact).
+    gap : ndarray
+        Gap between the deformed surface and the flat [m]; 0 in elastic contact, < 0 only where
+        the pressure is at the hardness (the overlap that became plastic deformation).
+    displacement : ndarray
+        Elastic surface displacement into the body [m].
+    approach : float
+        Rigid-body approach of the flat [m], from the first touch of the undeformed surface
+        (periodic half-space: with the mean elastic displacement taken as zero).
+    contact_modulus : float
+        E* [Pa] (of the layered body when a layer was given).
+    boundary : str
+        "periodic" or "free".
+    iterations : int
+        Conjugate-gradient iterations.
+    residual : float
+        Scale-free residual at the returned iterate (see ``roughcontact.contact._constrained_cg``).
+    tolerance : float
+        The tolerance it met.
+    hardness : float or None
+        Pressure cap [Pa] of elastic-perfectly-plastic contact.
+    parameters : dict
+        What was asked for (load or approach, options) and the package version.
+    """
+
+    topography: Topography
+    pressure: np.ndarray
+    gap: np.ndarray
+    displacement: np.ndarray
+    approach: float
+    contact_modulus: float
+    boundary: str
+    iterations: int
+    residual: float
+    tolerance: float
+    hardness: float | None = None
+    parameters: dict[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self):
+        for name in ("pressure", "gap", "displacement"):
+            getattr(self, name).setflags(write=False)
+
+    @property
+    def converged(self) -> bool:
+        """Always True: unconverged solves raise instead of returning."""
+        return self.residual <= self.tolerance
+
+    @property
+    def force(self) -> float:
+        """Total normal force [N] (for a line scan: per unit length [N/m])."""
+        return float(self.pressure.sum() * self._pixel_measure)
+
+    @property
+    def _pixel_measure(self) -> float:
+        return self.topography.pixel_area if self.topography.dim == 2 else self.topography.spacing[0]
+
+    @property
+    def mean_pressure(self) -> float:
+        """Force over the nominal area [Pa]."""
+        return float(self.pressure.mean())
+
+    @property
+    def contact_mask(self) -> np.ndarray:
+        """True where the pressure is positive."""
+        return self.pressure > 0
+
+    @property
+    def contact_fraction(self) -> float:
+        """Real over nominal contact area [-]."""
+        return float(np.count_nonzero(self.contact_mask) / self.pressure.size)
+
+    @property
+    def contact_area(self) -> float:
+        """Real contact area [m^2] (for a line scan: contact length [m])."""
+        return float(np.count_nonzero(self.contact_mask) * self._pixel_measure)
+
+    @property
+    def number_of_patches(self) -> int:
+        """Number of connected contact patches (4-connectivity, periodic wrap when periodic)."""
+        mask = self.contact_mask if self.contact_mask.ndim == 2 else self.contact_mask[:, None]
+        return count_patches(mask, periodic=self.boundary == "periodic")
+
+    @property
+    def mean_gap(self) -> float:
+        """Mean gap over the whole surface [m]."""
+        return float(self.gap.mean())
+
+    @property
+    def plastic_mask(self) -> np.ndarray:
+        """True where the pressure is at the hardness (all False for elastic contact)."""
+        if self.hardness is None:
+            return np.zeros(self.pressure.shape, dtype=bool)
+        return self.pressure >= self.hardness
+
+    @property
+    def plastic_deformation(self) -> np.ndarray:
+        """Plastic flow depth [m]: the overlap -gap where the pressure is at the hardness."""
+        return np.where(self.plastic_mask, np.maximum(-self.gap, 0.0), 0.0)
+
+    def scalars(self) -> dict[str, float]:
+        """Return the scalar results as a flat dictionary (SI)."""
+        return {
+            "force": self.force,
+            "mean_pressure": self.mean_pressure,
+            "approach": self.approach,
+            "contact_fraction": self.contact_fraction,
+            "contact_area": self.contact_area,
+            "number_of_patches": self.number_of_patches,
+            "mean_gap": self.mean_gap,
+            "max_pressure": float(self.pressure.max()),
+            "iterations": self.iterations,
+            "residual": self.residual,
+        }
+
+    def to_xarray(self):
+        """Return an ``xarray.Dataset``: fields on x (and y) coordinates, scalars as attributes."""
+        import xarray as xr
+
+        coords = {name: ("x", "y")[i] for i, name in enumerate(("x", "y")[: self.topography.dim])}
+        axes = tuple(coords.values())
+        grid = dict(zip(axes, self.topography.coordinates(), strict=True))
+        units = {"pressure": "Pa", "gap": "m", "displacement": "m", "heights": "m"}
+        fields = {
+            "pressure": self.pressure,
+            "gap": self.gap,
+            "displacement": self.displacement,
+            "heights": self.topography.heights,
+        }
+        data = {name: (axes, np.asarray(values), {"units": units[name]}) for name, values in fields.items()}
+        attributes = {k: v for k, v in self.scalars().items()}
+        attributes.update(
+            contact_modulus=self.contact_modulus,
+            boundary=self.boundary,
+            tolerance=self.tolerance,
+            hardness=np.nan if self.hardness is None else self.hardness,
+        )
+        attributes.update({f"parameter_{k}": str(v) for k, v in self.parameters.items()})
+        return xr.Dataset(data, coords={a: (a, c, {"units": "m"}) for a, c in grid.items()}, attrs=attributes)
