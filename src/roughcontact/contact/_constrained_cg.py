@@ -19,10 +19,11 @@ projected on the feasible set, with the box constraint of Almqvist et al. (2007)
    {0 < p < p_max} (load control) or the given delta.
 2. Residual (below); stop when it is below the tolerance.
 3. Conjugate direction t = g + beta t_old on the free set (beta = G / G_old, reset to 0 after a
-   step that changed the active set); r = K t (one FFT pair), with its free-set mean removed
-   under load control; step tau = (g.t) / (r.t).
-4. p -= tau t on the free set; clip to [0, p_max]; points at a bound whose gap says they should
-   leave it (p = 0 with g < 0, p = p_max with g > 0) move by -tau g; clip again.
+   step in which points entered the contact); points at the cap with g > 0 (which want to
+   unload) join the free set; r = K t (one FFT pair), with its free-set mean removed under load
+   control; step tau = (g.t) / (r.t).
+4. p -= tau t on the free set; clip to [0, p_max]; points out of contact that overlap
+   (p = 0 with g < 0) enter by -tau g (Polonsky-Keer's I_ol step); clip again.
 5. Load control: rescale the pressure to the target force (Polonsky-Keer). A cap is only
    supported under displacement control (the caller finds the approach of a force by root
    finding, :mod:`roughcontact.contact.plastic`).
@@ -96,7 +97,6 @@ def solve(
     approach: float | None = None,
     cap: float | None = None,
     initial_pressure: np.ndarray | None = None,
-    stiffness: float,
     tolerance: float = 1e-8,
     max_iterations: int = 10_000,
     solver: str = "normal contact",
@@ -117,9 +117,6 @@ def solve(
         Largest pressure [Pa] (hardness); None for elastic contact.
     initial_pressure : ndarray, optional
         Warm start [Pa] (e.g. the previous step of a load path).
-    stiffness : float
-        A pressure per length [Pa/m] to turn the initial overlap into a first pressure guess
-        under displacement control (E* / pixel size is a good one); any positive value works.
     tolerance : float
         Stop when the residual of the module docstring is below it.
     max_iterations : int
@@ -140,12 +137,17 @@ def solve(
     if load_control and cap is not None:
         raise ValueError("a pressure cap needs displacement control")
     h0 = separation
+    upper = cap if cap is not None else np.inf
+    # Pixel self-stiffness 1/K_ii [Pa/m]: turns an overlap into the pressure that closes it alone.
+    impulse = np.zeros_like(h0)
+    impulse.flat[0] = 1.0
+    stiffness = 1.0 / float(compliance(impulse).flat[0])
     if initial_pressure is not None:
-        p = np.clip(initial_pressure, 0.0, cap if cap is not None else np.inf)
+        p = np.clip(initial_pressure, 0.0, upper)
     elif load_control:
         p = np.full(h0.shape, 0.0)
     else:
-        p = np.maximum(approach - h0, 0.0) * stiffness
+        p = np.clip((approach - h0) * stiffness, 0.0, upper)
     if load_control:
         target = force / pixel_area  # target sum of pixel pressures
         if p.sum() <= 0:
@@ -167,6 +169,8 @@ def solve(
             return EngineResult(p, u, g, float(delta), iteration, residual)
         if iteration == max_iterations:
             break
+        if cap is not None:
+            free |= (p >= cap) & (g > 0)  # capped points that want to unload take part in the step
         g_norm = float(np.sum(g[free] ** 2))
         t = np.where(free, g + (g_norm / g_norm_old) * t if conjugate else g, 0.0)
         g_norm_old = g_norm
@@ -176,15 +180,13 @@ def solve(
         rt = float(np.sum(r[free] * t[free]))
         tau = float(np.sum(g[free] * t[free])) / rt if rt > 0 else 0.0
         p = p - tau * t
-        p = np.clip(p, 0.0, cap if cap is not None else np.inf)
-        leaving = (p <= 0) & (g < 0)
-        if cap is not None:
-            leaving |= (p >= cap) & (g > 0)
-        conjugate = not leaving.any()
+        p = np.clip(p, 0.0, upper)
+        entering = (p <= 0) & (g < 0)
+        conjugate = not entering.any()
         if not conjugate:
-            step = tau if tau > 0 else 1.0 / stiffness
-            p = np.where(leaving, p - step * g, p)
-            p = np.clip(p, 0.0, cap if cap is not None else np.inf)
+            step = tau if tau > 0 else 1.0 / stiffness  # Jacobi step when the free set is empty
+            p = np.where(entering, p - step * g, p)
+            p = np.clip(p, 0.0, upper)
         if load_control:
             p = _rescale(p, target)
     raise ConvergenceError(solver, residual, max_iterations, tolerance)

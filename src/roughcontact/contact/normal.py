@@ -196,7 +196,6 @@ def solve_normal(
     common = dict(
         pixel_area=measure,
         cap=hardness,
-        stiffness=compliance.contact_modulus / min(topography.spacing),
         tolerance=tolerance,
         max_iterations=max_iterations,
         solver="solve_normal",

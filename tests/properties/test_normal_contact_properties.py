@@ -1,0 +1,75 @@
+"""Invariants of every normal contact solution (hypothesis): load balance, signs, complementarity."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from roughcontact.contact import solve_normal
+from roughcontact.errors import InputError
+from roughcontact.topography import Topography
+
+TOLERANCE = 1e-10
+
+
+def _surface(seed: int, n: int, periodic: bool) -> Topography:
+    rng = np.random.default_rng(seed)
+    heights = rng.normal(size=(n, n)) * 1e-8
+    return Topography(heights, (1e-6, 1e-6), periodic=periodic)
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    seed=st.integers(0, 10_000),
+    n=st.sampled_from([8, 16, 24]),
+    periodic=st.booleans(),
+    load=st.floats(1e5, 1e9),
+)
+def test_solution_satisfies_the_contact_conditions(seed, n, periodic, load):
+    t = _surface(seed, n, periodic)
+    result = solve_normal(t, 1e10, mean_pressure=load, tolerance=TOLERANCE)
+    p, g = result.pressure, result.gap
+    height_scale = t.heights.std() + result.displacement.std()
+    assert result.mean_pressure == pytest.approx(load, rel=1e-12, abs=0)  # load balance
+    assert np.all(p >= 0)
+    assert np.all(g[p == 0] >= -TOLERANCE * height_scale)  # no overlap outside the contact
+    assert np.sum(p * np.abs(g)) / p.sum() <= TOLERANCE * height_scale  # zero gap where p > 0
+    assert result.residual <= TOLERANCE
+
+
+@settings(max_examples=15, deadline=None)
+@given(seed=st.integers(0, 10_000), hardness_ratio=st.floats(1.2, 5.0))
+def test_capped_pressure_never_exceeds_hardness_and_balances(seed, hardness_ratio):
+    t = _surface(seed, 16, True)
+    load = 1e8
+    result = solve_normal(t, 1e10, mean_pressure=load, hardness=hardness_ratio * load, tolerance=1e-9)
+    assert np.all(result.pressure <= hardness_ratio * load)
+    assert result.mean_pressure == pytest.approx(load, rel=1e-6, abs=0)
+    assert np.all(result.gap[result.plastic_mask] <= 1e-9 * t.heights.std())
+
+
+def test_load_above_capacity_is_refused():
+    t = _surface(1, 8, True)
+    with pytest.raises(InputError, match="hardness"):
+        solve_normal(t, 1e10, mean_pressure=2e9, hardness=1e9)
+
+
+def test_bad_input_names_the_field():
+    t = _surface(1, 8, True)
+    with pytest.raises(InputError, match="exactly one"):
+        solve_normal(t, 1e10, mean_pressure=1e6, approach=1e-9)
+    with pytest.raises(InputError, match="mean_pressure"):
+        solve_normal(t, 1e10, mean_pressure=-1.0)
+    with pytest.raises(InputError, match="heights"):  # undefined heights never reach the solver
+        t.with_heights(np.where(np.eye(8, dtype=bool), np.nan, t.heights))
+    with pytest.raises(InputError, match="contact_modulus"):
+        solve_normal(t, -1.0, mean_pressure=1e6)
+
+
+def test_non_convergence_raises_with_residual_and_iterations():
+    from roughcontact.errors import ConvergenceError
+
+    t = _surface(2, 32, True)
+    with pytest.raises(ConvergenceError) as error:
+        solve_normal(t, 1e10, mean_pressure=1e7, tolerance=1e-14, max_iterations=3)
+    assert error.value.iterations == 3 and error.value.residual > 1e-14
