@@ -71,6 +71,41 @@ def _write(topography: Topography, name: str, output: Path, report: Callable[[st
     report(f"wrote {figure_path} and {data_path}")
 
 
+def _rough_contact(surface: Topography, output: Path, report: Callable[[str], None]) -> None:
+    """Solve and report the normal contact of the composite surface, polysilicon on SiO2 (paper 000)."""
+    from .contact import solve_normal
+    from .elasticity.stress import subsurface_stress
+    from .plotting import plot_contact_overview, plot_von_mises
+    from .units import format_si
+
+    silicon, oxide = get_material("polysilicon"), get_material("SiO2")
+    result = solve_normal(surface, silicon, counter_body=oxide, mean_pressure=20e6, tolerance=1e-8)
+    report("\n== normal contact of the composite surface: polysilicon on SiO2, mean pressure 20 MPa ==")
+    rows = [
+        ("contact modulus E*", format_si(result.contact_modulus, "Pa")),
+        ("force", format_si(result.force, "N")),
+        ("real contact area", f"{100 * result.contact_fraction:.2f} % of nominal"),
+        ("contact patches", str(result.number_of_patches)),
+        ("largest pressure", format_si(float(result.pressure.max()), "Pa")),
+        ("approach", format_si(result.approach, "m")),
+        ("mean gap", format_si(result.mean_gap, "m")),
+        ("iterations / residual", f"{result.iterations} / {result.residual:.1e}"),
+    ]
+    report(_table(rows, ("quantity", "value")))
+    figure_path = output / "contact.png"
+    plot_contact_overview(result).savefig(figure_path, dpi=120)
+    depth = 20e-9
+    stress = subsurface_stress(
+        result.pressure, surface.size, [depth], poissons_ratio=silicon.poissons_ratio, boundary="periodic"
+    )
+    fig, _ = plot_von_mises(stress, 0)
+    stress_path = output / "von_mises_20nm.png"
+    fig.savefig(stress_path, dpi=120)
+    peak, _ = stress.max_von_mises()
+    report(f"largest von Mises stress at 20 nm depth: {format_si(peak, 'Pa')}")
+    report(f"wrote {figure_path} and {stress_path}")
+
+
 def run_demo(output: Path | str, report: Callable[[str], None] = print) -> None:
     """Run the demo, writing figures and surfaces into ``output`` and text through ``report``.
 
@@ -97,6 +132,8 @@ def run_demo(output: Path | str, report: Callable[[str], None] = print) -> None:
     report("\n== composite of two generated self-affine surfaces (H 0.8 + 0.7, rms 1.5 nm + 1.0 nm) ==")
     report(format_description(describe(composite)))
     _write(composite, "composite", output, report)
+
+    _rough_contact(composite, output, report)
 
     report("\n== seed paper 002: asperity parameters from the printed spectral moments ==")
     report(_table(paper_002_table(), ("quantity", "paper", "ours", "how")))

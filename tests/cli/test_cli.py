@@ -124,6 +124,8 @@ def test_demo_prints_statistics_and_writes_figures(capsys, tmp_path):
     assert status == 0, err
     assert "Rq" in out
     assert "R_asp" in out and "5.08" in out  # paper 002 reproduction
+    assert "real contact area" in out and "contact patches" in out  # rough-surface normal contact
+    assert (tmp_path / "contact.png").exists() and (tmp_path / "von_mises_20nm.png").exists()
     pngs = sorted(p.name for p in tmp_path.glob("*.png"))
     assert len(pngs) >= 2
     for png in tmp_path.glob("*.png"):

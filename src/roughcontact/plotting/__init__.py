@@ -4,6 +4,24 @@ Every function takes results (or a topography) and an optional ``ax`` and return
 ``(fig, ax)``; nothing is shown and no global pyplot state is touched.
 """
 
+from .contact import (
+    plot_contact_area,
+    plot_contact_overview,
+    plot_gap,
+    plot_load_approach,
+    plot_pressure,
+    plot_von_mises,
+)
 from .topography import plot_heights, plot_overview, plot_psd
 
-__all__ = ["plot_heights", "plot_overview", "plot_psd"]
+__all__ = [
+    "plot_contact_area",
+    "plot_contact_overview",
+    "plot_gap",
+    "plot_heights",
+    "plot_load_approach",
+    "plot_overview",
+    "plot_pressure",
+    "plot_psd",
+    "plot_von_mises",
+]

@@ -1,0 +1,42 @@
+"""Contact figures draw from real results and label their axes with units."""
+
+import numpy as np
+
+from roughcontact.contact import solve_normal
+from roughcontact.contact.plastic import load_unload
+from roughcontact.elasticity.stress import subsurface_stress
+from roughcontact.materials import Material
+from roughcontact.plotting import (
+    plot_contact_area,
+    plot_contact_overview,
+    plot_load_approach,
+    plot_von_mises,
+)
+from roughcontact.topography.generate import sphere
+
+
+def _ball():
+    return sphere((32, 32), (40e-6, 40e-6), radius=1e-3, kind="paraboloid")
+
+
+def test_contact_maps_and_curves_are_labelled(tmp_path):
+    result = solve_normal(_ball(), 1e9, force=1e-3)
+    fig = plot_contact_overview(result)
+    labels = [ax.get_ylabel() for ax in fig.axes]
+    assert any("pressure (MPa)" in label for label in labels)
+    assert any("gap" in label for label in labels)
+    fig.savefig(tmp_path / "maps.png")
+
+    path = load_unload(_ball(), Material(0.91e9, 0.3, hardness=4e6), max_force=1e-3, steps=3)
+    fig, ax = plot_load_approach(path.curve())
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == ["loading", "unloading"]
+    assert ax.get_xlabel().startswith("approach (")
+    fig, ax = plot_contact_area(path.curve())
+    assert ax.get_ylabel() == "real contact area (m²)"
+
+    stress = subsurface_stress(
+        result.pressure, result.topography.size, [5e-6], poissons_ratio=0.3, boundary="free"
+    )
+    fig, ax = plot_von_mises(stress, 0)
+    assert "von Mises" in ax.get_title()
+    assert np.isfinite(stress.von_mises()).all()
