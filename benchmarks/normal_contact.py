@@ -134,7 +134,8 @@ def main() -> None:
         f"{platform.processor() or platform.machine()}; times in s"
     )
     print(
-        f"{'case':<18} {'ours s':>8} {'iter':>5} {'it/FFTpair':>10} {'MB':>7}  peers (time ratio ours/theirs, max dp/p)"
+        f"{'case':<18} {'ours s':>8} {'iter':>5} {'it/FFTpair':>10} {'MB':>7}  "
+        "peers (time ratio ours/theirs, max dp/p)"
     )
     for r in rows:
         peer_text = "  ".join(
