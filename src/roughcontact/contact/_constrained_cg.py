@@ -75,13 +75,16 @@ def _rms(values: np.ndarray) -> float:
     return float(np.sqrt(np.mean((values - values.mean()) ** 2)))
 
 
+def _dot(a: np.ndarray, b: np.ndarray) -> float:
+    return float(np.dot(a.ravel(), b.ravel()))
+
+
 def _residual(pressure, gap, height_scale, cap) -> float:
     total = pressure.sum()
-    elastic = (
-        pressure if cap is None else np.where(pressure < cap, pressure, 0.0)
-    )  # overlap at the cap is plastic
-    weighted = float(np.sum(elastic * np.abs(gap)) / total) if total > 0 else 0.0
-    free_overlap = float(np.max(-gap, where=pressure <= 0, initial=0.0))
+    # The overlap at the cap is plastic flow, not an error.
+    elastic = pressure if cap is None else np.where(pressure < cap, pressure, 0.0)
+    weighted = _dot(elastic, np.abs(gap)) / total if total > 0 else 0.0
+    free_overlap = -float(np.min(gap, where=pressure <= 0, initial=0.0))
     worst = max(weighted, free_overlap)
     if cap is not None:
         worst = max(worst, float(np.max(gap, where=pressure >= cap, initial=0.0)))
@@ -161,32 +164,41 @@ def solve(
     for iteration in range(max_iterations + 1):
         u = compliance(p)
         free = p > 0 if cap is None else (p > 0) & (p < cap)
+        free_count = np.count_nonzero(free)
+        g = np.add(u, h0)
         if load_control:
-            delta = float(np.mean((u + h0)[free])) if free.any() else float(np.min(u + h0))
-        g = u + h0 - delta
-        residual = _residual(p, g, height_scale + _rms(u), cap)
+            delta = float(np.sum(g, where=free) / free_count) if free_count else float(np.min(g))
+        g -= delta
+        residual = _residual(p, g, height_scale + float(u.std()), cap)
         if residual <= tolerance:
             return EngineResult(p, u, g, float(delta), iteration, residual)
         if iteration == max_iterations:
             break
         if cap is not None:
             free |= (p >= cap) & (g > 0)  # capped points that want to unload take part in the step
-        g_norm = float(np.sum(g[free] ** 2))
-        t = np.where(free, g + (g_norm / g_norm_old) * t if conjugate else g, 0.0)
+            free_count = np.count_nonzero(free)
+        g_free = np.where(free, g, 0.0)
+        g_norm = _dot(g_free, g_free)
+        if conjugate:
+            t *= g_norm / g_norm_old
+            t += g_free
+            t *= free
+        else:
+            t = g_free
         g_norm_old = g_norm
         r = compliance(t)
-        if load_control and free.any():
-            r -= np.mean(r[free])
-        rt = float(np.sum(r[free] * t[free]))
-        tau = float(np.sum(g[free] * t[free])) / rt if rt > 0 else 0.0
+        if load_control and free_count:
+            r -= np.sum(r, where=free) / free_count
+        rt = _dot(r, t)  # t = 0 outside the free set
+        tau = _dot(g, t) / rt if rt > 0 else 0.0
         p = p - tau * t
-        p = np.clip(p, 0.0, upper)
+        np.clip(p, 0.0, upper, out=p)
         entering = (p <= 0) & (g < 0)
         conjugate = not entering.any()
         if not conjugate:
             step = tau if tau > 0 else 1.0 / stiffness  # Jacobi step when the free set is empty
             p = np.where(entering, p - step * g, p)
-            p = np.clip(p, 0.0, upper)
+            np.clip(p, 0.0, upper, out=p)
         if load_control:
             p = _rescale(p, target)
     raise ConvergenceError(solver, residual, max_iterations, tolerance)
