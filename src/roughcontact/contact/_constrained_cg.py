@@ -18,10 +18,12 @@ projected on the feasible set, with the box constraint of Almqvist et al. (2007)
 1. u = K p (one FFT pair); g = u + h0 - delta with delta = mean of u + h0 over the free set
    {0 < p < p_max} (load control) or the given delta.
 2. Residual (below); stop when it is below the tolerance.
-3. Conjugate direction t = g + beta t_old on the free set (beta = G / G_old, reset to 0 after a
-   step in which points entered the contact); points at the cap with g > 0 (which want to
-   unload) join the free set; r = K t (one FFT pair), with its free-set mean removed under load
-   control; step tau = (g.t) / (r.t).
+3. Conjugate direction t = z + beta t_old on the free set with z = g, or z = M g with the
+   preconditioner M = K^{-1} of the unrestricted operator applied in Fourier space and restricted
+   to the free set (Vollebregt 2014; one more FFT pair, several times fewer iterations on rough
+   surfaces); beta = (g.z) / (g.z)_old, reset to 0 after a step in which points entered the
+   contact; points at the cap with g > 0 (which want to unload) join the free set; r = K t
+   (one FFT pair), with its free-set mean removed under load control; step tau = (g.t) / (r.t).
 4. p -= tau t on the free set; clip to [0, p_max]; points out of contact that overlap
    (p = 0 with g < 0) enter by -tau g (Polonsky-Keer's I_ol step); clip again.
 5. Load control: rescale the pressure to the target force (Polonsky-Keer). A cap is only
@@ -32,19 +34,23 @@ Residual (scale-free: the same number in nm or m, at any load):
 
 .. math::
 
-    r = \max\left(\frac{\sum_{p_i < p_{max}} p_i |g_i|}{\sum_i p_i}, \;
-                 \max_{p_i = 0} (-g_i)^+, \; \max_{p_i = p_{max}} (g_i)^+\right) / s_h
+    r = \max\left(\frac{\sum_{E} p_i |g_i|}{\sum_{E} p_i}, \;
+                 \max_{p_i < p_{max}} (-g_i)^+, \; \max_{p_i = p_{max}} (g_i)^+\right) / s_h
 
-with s_h the rms of h0 about its mean plus the rms of u about its mean (a height scale of the
-problem). The first term is the pressure-weighted mean gap over the contact (zero at the
-solution), the others the worst violation of the gap conditions. Each iteration costs two
-FFT pairs; the returned pressure and gap are from the same iterate (never a mixed state).
+with E the elastic contact points (0 < p < p_max) and s_h the rms of h0 about its mean plus the
+rms of u about its mean (a height scale of the problem). The first term is the pressure-weighted
+mean gap over the elastic contact (zero at the solution), the others the worst violations of
+the gap conditions: overlap anywhere below the cap (so a point with a vanishing pressure cannot
+hide an overlap), and an open gap under a capped pressure. Each iteration costs two
+FFT pairs (three preconditioned); the returned pressure and gap are from the same iterate
+(never a mixed state).
 
 References
 ----------
 Polonsky, I. A. and Keer, L. M. (1999). Wear 231, 206-219. doi:10.1016/S0043-1648(99)00113-1
 Almqvist, A., Sahlin, F., Larsson, R. and Glavatskih, S. (2007). Tribol. Int. 40, 574-579.
 doi:10.1016/j.triboint.2005.11.008
+Vollebregt, E. A. H. (2014). J. Optim. Theory Appl. 162, 931-953. doi:10.1007/s10957-013-0499-x
 Rey, V., Anciaux, G. and Molinari, J.-F. (2017). Comput. Mech. 60, 69-81.
 doi:10.1007/s00466-017-1392-5
 """
@@ -80,12 +86,14 @@ def _dot(a: np.ndarray, b: np.ndarray) -> float:
 
 
 def _residual(pressure, gap, height_scale, cap) -> float:
-    total = pressure.sum()
-    # The overlap at the cap is plastic flow, not an error.
-    elastic = pressure if cap is None else np.where(pressure < cap, pressure, 0.0)
-    weighted = _dot(elastic, np.abs(gap)) / total if total > 0 else 0.0
-    free_overlap = -float(np.min(gap, where=pressure <= 0, initial=0.0))
-    worst = max(weighted, free_overlap)
+    elastic = pressure > 0 if cap is None else (pressure > 0) & (pressure < cap)
+    elastic_pressure = np.where(elastic, pressure, 0.0)
+    total = elastic_pressure.sum()
+    weighted = _dot(elastic_pressure, np.abs(gap)) / total if total > 0 else 0.0
+    # Overlap anywhere below the cap (at the cap it is plastic flow, not an error).
+    below = pressure < cap if cap is not None else True
+    overlap = -float(np.min(gap, where=below, initial=0.0))
+    worst = max(weighted, overlap)
     if cap is not None:
         worst = max(worst, float(np.max(gap, where=pressure >= cap, initial=0.0)))
     return worst / height_scale if height_scale > 0 else 0.0
@@ -103,6 +111,7 @@ def solve(
     tolerance: float = 1e-8,
     max_iterations: int = 10_000,
     solver: str = "normal contact",
+    preconditioner: Callable[[np.ndarray], np.ndarray] | None = None,
 ) -> EngineResult:
     """Solve the contact problem of the module docstring.
 
@@ -126,6 +135,9 @@ def solve(
         Raise :class:`ConvergenceError` beyond this.
     solver : str
         Name used in error messages.
+    preconditioner : callable, optional
+        An approximate inverse of the compliance (e.g. ``SurfaceCompliance.inverse``); the
+        conjugate directions are then built from M g restricted to the free set.
 
     Returns
     -------
@@ -178,13 +190,14 @@ def solve(
             free |= (p >= cap) & (g > 0)  # capped points that want to unload take part in the step
             free_count = np.count_nonzero(free)
         g_free = np.where(free, g, 0.0)
-        g_norm = _dot(g_free, g_free)
+        z = g_free if preconditioner is None else _preconditioned(preconditioner, g_free, free, load_control)
+        g_norm = _dot(g_free, z)
         if conjugate:
             t *= g_norm / g_norm_old
-            t += g_free
+            t += z
             t *= free
         else:
-            t = g_free
+            t = z
         g_norm_old = g_norm
         r = compliance(t)
         if load_control and free_count:
@@ -202,6 +215,15 @@ def solve(
         if load_control:
             p = _rescale(p, target)
     raise ConvergenceError(solver, residual, max_iterations, tolerance)
+
+
+def _preconditioned(preconditioner, g_free, free, load_control) -> np.ndarray:
+    """Return M g on the free set: the inverse of the full operator, restricted (Vollebregt 2014)."""
+    z = preconditioner(g_free)
+    z *= free
+    if load_control:  # keep the step inside the force constraint: zero sum over the free set
+        z -= free * (z.sum() / np.count_nonzero(free))
+    return z
 
 
 def _rescale(p: np.ndarray, target: float) -> np.ndarray:

@@ -125,6 +125,7 @@ def solve_normal(
     max_iterations: int = 10_000,
     initial: NormalContactResult | np.ndarray | None = None,
     compliance: SurfaceCompliance | None = None,
+    precondition: bool = True,
 ) -> NormalContactResult:
     """Solve the normal contact of ``topography`` against a flat.
 
@@ -157,6 +158,10 @@ def solve_normal(
         Warm start (a previous solution on the same grid, e.g. the last step of a load path).
     compliance : SurfaceCompliance, optional
         A prebuilt operator for this grid (reuse it along load paths; overrides the material).
+    precondition : bool
+        Build the conjugate directions from the Fourier-inverse preconditioned gap (default;
+        several times fewer iterations on rough surfaces, one more FFT pair each). False gives
+        plain Polonsky-Keer.
 
     Returns
     -------
@@ -196,6 +201,7 @@ def solve_normal(
     common = dict(
         pixel_area=measure,
         cap=hardness,
+        preconditioner=compliance.inverse if precondition else None,
         tolerance=tolerance,
         max_iterations=max_iterations,
         solver="solve_normal",

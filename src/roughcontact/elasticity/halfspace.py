@@ -152,6 +152,7 @@ class SurfaceCompliance:
                     layer.thickness, m.youngs_modulus, m.poissons_ratio, base=layer.base
                 )
         self.kernel = kernel
+        self._inverse_kernel = None
 
     def __call__(self, pressure: np.ndarray) -> np.ndarray:
         """Return the surface displacement [m] (into the body) of ``pressure`` [Pa]."""
@@ -161,6 +162,27 @@ class SurfaceCompliance:
         if self.boundary == "free":
             return displacement[: self.shape[0], : self.shape[1]]
         return displacement
+
+    def inverse(self, displacement: np.ndarray) -> np.ndarray:
+        """Apply the inverse kernel: the pressure [Pa] of a displacement [m] (used as a preconditioner).
+
+        Exact for a periodic half-space (the mean mode, undetermined there, is given the stiffness
+        of the longest wavelength); for a free boundary the inverse of the zero-padded operator,
+        restricted to the window, which approximates the inverse of the free operator.
+        """
+        if self._inverse_kernel is None:
+            inverse = np.zeros_like(self.kernel)
+            positive = self.kernel > 0
+            inverse[positive] = 1.0 / self.kernel[positive]
+            if not positive.flat[0]:
+                inverse.flat[0] = inverse[positive].min() if positive.any() else 0.0
+            self._inverse_kernel = inverse
+        spectrum = fft.rfft2(displacement, s=self._fft_shape, workers=self.workers)
+        spectrum *= self._inverse_kernel
+        pressure = fft.irfft2(spectrum, s=self._fft_shape, workers=self.workers)
+        if self.boundary == "free":
+            return pressure[: self.shape[0], : self.shape[1]]
+        return pressure
 
     @property
     def pixel_area(self) -> float:
