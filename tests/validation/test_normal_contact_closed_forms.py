@@ -164,3 +164,15 @@ def test_unit_invariance_nm_and_m():
     np.testing.assert_allclose(a.pressure, b.pressure, rtol=1e-9, atol=1e-9 * 1e7)
     assert a.iterations == b.iterations
     assert b.approach == pytest.approx(a.approach * 1e9, rel=1e-9, abs=0)
+
+
+@pytest.mark.parametrize("boundary", ["periodic", "free"])
+def test_preconditioning_changes_iterations_not_the_answer(boundary):
+    from roughcontact.topography.generate import self_affine
+
+    surface = self_affine((128, 128), (1e-4, 1e-4), hurst=0.8, rms_slope=0.1, seed=7)
+    common = dict(mean_pressure=5e6, tolerance=1e-10, boundary=boundary)
+    plain = solve_normal(surface, E_STAR, precondition=False, **common)
+    fast = solve_normal(surface, E_STAR, **common)
+    np.testing.assert_allclose(fast.pressure, plain.pressure, rtol=0, atol=1e-6 * plain.pressure.max())
+    assert fast.iterations < plain.iterations / 2
