@@ -63,3 +63,79 @@ def test_periodic_sinusoidal_pressure_is_exact():
         shear = -amplitude * k * depth * decay * np.sin(k * x)
         np.testing.assert_allclose(stress.component("xz")[i, :, 0], shear, rtol=0, atol=1e-9 * mean)
         np.testing.assert_allclose(stress.component("yz")[i], 0.0, atol=1e-9 * mean)
+
+
+def _smooth_field(rng, n):
+    """Random periodic field with only long wavelengths (so z-differences are accurate)."""
+    spectrum = np.fft.rfft2(rng.normal(size=(n, n)))
+    kx = np.fft.fftfreq(n)[:, None] * n
+    ky = np.fft.rfftfreq(n)[None, :] * n
+    spectrum[np.hypot(kx, ky) > 6] = 0
+    return np.fft.irfft2(spectrum, s=(n, n))
+
+
+def test_tractions_satisfy_surface_conditions_and_equilibrium():
+    rng = np.random.default_rng(5)
+    n, length = 64, 1e-5
+    p = 1e8 + 1e7 * _smooth_field(rng, n)
+    qx, qy = 1e7 * _smooth_field(rng, n), 1e7 * _smooth_field(rng, n)
+    h = 1e-4 * length
+    z0 = 0.05 * length
+    stress = subsurface_stress(
+        p, (length, length), [0.0, z0 - h, z0, z0 + h], poissons_ratio=NU, traction=(qx, qy)
+    )
+    scale = 1e8
+    np.testing.assert_allclose(stress.component("zz")[0], -p, atol=1e-9 * scale)
+    np.testing.assert_allclose(stress.component("xz")[0], -qx, atol=1e-9 * scale)
+    np.testing.assert_allclose(stress.component("yz")[0], -qy, atol=1e-9 * scale)
+
+    k = 2 * np.pi * np.fft.fftfreq(n, d=length / n)
+
+    def d(field, axis):
+        return np.real(
+            np.fft.ifft(1j * np.expand_dims(k, 1 - axis) * np.fft.fft(field, axis=axis), axis=axis)
+        )
+
+    def dz(name):
+        return (stress.component(name)[3] - stress.component(name)[1]) / (2 * h)
+
+    def at(name):
+        return stress.component(name)[2]
+
+    for row in (("xx", "xy", "xz"), ("xy", "yy", "yz"), ("xz", "yz", "zz")):
+        residual = d(at(row[0]), 0) + d(at(row[1]), 1) + dz(row[2])
+        assert np.max(np.abs(residual)) * length < 1e-5 * scale, row
+
+
+def test_sliding_line_contact_surface_stress():
+    """Johnson (1985) eq. 7.21 (q = mu p on a Hertz line contact): sigma_x(x, 0) = -p - 2 mu p0 x / a.
+
+    Periodic array of contacts 64 a apart: the mean pressure adds (1 - nu/(1 - nu)) mean(p) (the
+    q = 0 mode under uniaxial strain); the images' remaining effect is O((a/L)^2).
+    """
+    a, p0, mu, n = 1e-5, 1e8, 0.3, 8192
+    length = 64 * a
+    x = (np.arange(n) - n // 2) * length / n
+    p = p0 * np.sqrt(np.clip(1 - (x / a) ** 2, 0, None))
+    stress = subsurface_stress(
+        p[:, None],
+        (length, length / n),
+        [0.0],
+        poissons_ratio=NU,
+        traction=(mu * p[:, None], np.zeros((n, 1))),
+    )
+    inside = np.abs(x) < 0.95 * a
+    exact = -p - 2 * mu * p0 * x / a + (1 - NU / (1 - NU)) * p.mean()
+    error = np.abs(stress.component("xx")[0, :, 0] - exact)[inside]
+    assert np.max(error) < 2.5e-3 * p0
+    assert stress.component("xx")[0, np.argmin(np.abs(x + 0.999 * a)), 0] > 0  # tension at the trailing edge
+
+
+def test_shear_in_y_is_shear_in_x_transposed():
+    rng = np.random.default_rng(1)
+    p, q = rng.random((32, 32)), rng.random((32, 32))
+    a = subsurface_stress(p, (1.0, 1.0), [0.1], poissons_ratio=NU, traction=(q, np.zeros_like(q)))
+    b = subsurface_stress(p.T, (1.0, 1.0), [0.1], poissons_ratio=NU, traction=(np.zeros_like(q), q.T))
+    # Equal up to the Nyquist modes, where rfft2 treats the two axes differently.
+    for ca, cb in (("xx", "yy"), ("zz", "zz"), ("xz", "yz"), ("xy", "xy")):
+        np.testing.assert_allclose(a.component(ca)[0], b.component(cb)[0].T, atol=1e-4)

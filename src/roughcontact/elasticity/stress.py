@@ -21,7 +21,13 @@ zero-padded by ``padding`` per axis, i.e. the patch is one of a periodic array o
 padded window apart; the error falls as the padding grows (``padding=2`` puts the nearest
 image a window away; Hertz axis stresses agree to about 2 % of p0 with ``padding=4``).
 
-Only normal surface tractions are included; tangential tractions (paper 001) are not yet.
+Shear tractions q = (q_x, q_y) on the surface (paper 001's partial slip, friction) are split per
+mode into a component along the wavevector, a plane-strain problem with the Airy function
+(q/k) z e^{-kz}, giving sigma_zz = -q k z e^{-kz}, sigma_xixi = q (kz - 2) e^{-kz},
+sigma_xiz = q (1 - kz) e^{-kz} and sigma_etaeta = nu (sigma_xixi + sigma_zz) (for a surface
+shear stress q sin(k xi); Johnson 1985 sec. 2.8 in 2D), and a component across it, an antiplane
+shear u_eta ~ e^{-kz} with sigma_etaz = q e^{-kz} and sigma_xieta from it. A uniform shear
+traction gives a uniform shear stress through the depth.
 
 References
 ----------
@@ -81,16 +87,41 @@ class StressField:
         return float(vm[index]), (x, y, float(self.depths[index[0]]))
 
 
+def _local_modes(q, z, normal, along, across, nu):
+    """Local (xi, eta, z) stress spectra of one plane at depth z, tension positive.
+
+    ``normal`` is the spectrum of sigma_zz(0) = -p, ``along`` / ``across`` those of the surface
+    shear stresses sigma_xi_z(0) and sigma_eta_z(0) (= -q_xi, -q_eta).
+    """
+    qz = q * z
+    decay = np.exp(-qz)
+    # Normal traction (plane strain in xi-z).
+    xixi = (1.0 - qz) * normal
+    etaeta = 2.0 * nu * normal
+    zz = (1.0 + qz) * normal
+    xiz = -1j * qz * normal
+    # Shear along xi (plane strain in xi-z).
+    xixi = xixi + 1j * (qz - 2.0) * along
+    etaeta = etaeta - 2j * nu * along
+    zz = zz - 1j * qz * along
+    xiz = xiz + (1.0 - qz) * along
+    # Shear across (antiplane).
+    etaz = across
+    xieta = -1j * across
+    return tuple(decay * c for c in (xixi, etaeta, zz, xieta, xiz, etaz))
+
+
 def subsurface_stress(
     pressure: np.ndarray,
     size: tuple[float, float],
     depths: np.ndarray | list[float],
     *,
     poissons_ratio: float,
+    traction: tuple[np.ndarray, np.ndarray] | None = None,
     boundary: str = "periodic",
     padding: int = 2,
 ) -> StressField:
-    """Stress below the surface caused by a pixel-wise surface pressure.
+    """Stress below the surface caused by pixel-wise surface tractions.
 
     Parameters
     ----------
@@ -102,8 +133,11 @@ def subsurface_stress(
         Depths z >= 0 [m] of the planes to evaluate.
     poissons_ratio : float
         Poisson's ratio of the body.
+    traction : (ndarray, ndarray), optional
+        Shear tractions (q_x, q_y) [Pa] acting on the body's surface (force per area on the body,
+        in +x / +y), e.g. friction from a counter-body sliding in +x.
     boundary : {"periodic", "free"}
-        Periodic pressure, or a finite patch (zero-padded).
+        Periodic tractions, or a finite patch (zero-padded).
     padding : int
         Padding factor per axis for ``boundary="free"`` (>= 2).
 
@@ -120,31 +154,43 @@ def subsurface_stress(
     factor = 1 if boundary == "periodic" else max(int(padding), 2)
     shape = (factor * nx, factor * ny)
     window = (factor * size[0], factor * size[1])
-    spectrum = fft.rfft2(pressure, s=shape, workers=-1)
     qx, qy = wavevectors(shape, window)
     q = np.sqrt(qx**2 + qy**2)
     with np.errstate(invalid="ignore", divide="ignore"):
-        nx_, ny_ = np.where(q > 0, qx / q, 0.0), np.where(q > 0, qy / q, 0.0)
+        cx, cy = np.where(q > 0, qx / q, 0.0), np.where(q > 0, qy / q, 0.0)
+
+    def spectrum(field):
+        return fft.rfft2(field, s=shape, workers=-1)
+
+    normal = -spectrum(pressure)  # sigma_zz(0) = -p
+    if traction is None:
+        shear_x = shear_y = np.zeros_like(normal)
+    else:
+        if traction[0].shape != pressure.shape or traction[1].shape != pressure.shape:
+            raise InputError("traction", "traction fields must have the pressure's shape.", None)
+        shear_x, shear_y = -spectrum(traction[0]), -spectrum(traction[1])  # sigma_iz(0) = -q_i
+    along = cx * shear_x + cy * shear_y
+    across = -cy * shear_x + cx * shear_y
     nu = poissons_ratio
     out = np.empty((6, depths.size, nx, ny))
     # Mean lateral stress: uniaxial strain under a periodic (infinite) load; zero for a finite patch,
     # whose lateral stresses integrate to zero over a horizontal plane (Boussinesq).
-    lateral_mean = -nu / (1.0 - nu) * spectrum[0, 0] if boundary == "periodic" else 0.0
+    lateral_mean = nu / (1.0 - nu) * normal[0, 0] if boundary == "periodic" else 0.0
     for i, z in enumerate(depths):
-        decay = np.exp(-q * z) * spectrum
-        zz = -(1.0 + q * z) * decay
-        along = -(1.0 - q * z) * decay
-        across = -2.0 * nu * decay
-        shear = 1j * q * z * decay  # sigma_xi_z of the complex mode
+        xixi, etaeta, zz, xieta, xiz, etaz = _local_modes(q, z, normal, along, across, nu)
         fields = (
-            nx_**2 * along + ny_**2 * across,
-            ny_**2 * along + nx_**2 * across,
+            cx**2 * xixi + cy**2 * etaeta - 2 * cx * cy * xieta,
+            cy**2 * xixi + cx**2 * etaeta + 2 * cx * cy * xieta,
             zz,
-            nx_ * ny_ * (along - across),
-            nx_ * shear,
-            ny_ * shear,
+            cx * cy * (xixi - etaeta) + (cx**2 - cy**2) * xieta,
+            cx * xiz - cy * etaz,
+            cy * xiz + cx * etaz,
         )
-        fields[0][0, 0] = fields[1][0, 0] = lateral_mean  # q = 0 has no direction
+        # q = 0 has no direction: uniform normal and shear stresses through the depth.
+        fields[0][0, 0] = fields[1][0, 0] = lateral_mean
+        fields[3][0, 0] = 0.0
+        fields[2][0, 0] = normal[0, 0]
+        fields[4][0, 0], fields[5][0, 0] = shear_x[0, 0], shear_y[0, 0]
         for c, field in enumerate(fields):
             out[c, i] = fft.irfft2(field, s=shape, workers=-1)[:nx, :ny]
     return StressField(depths, out, (float(size[0]), float(size[1])))
