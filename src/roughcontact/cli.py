@@ -1,4 +1,4 @@
-"""Command line: ``roughcontact inspect | plot | demo``.
+"""Command line: ``roughcontact inspect | plot | contact | demo``.
 
 The edges of the program live here: unit strings from the user are converted once
 (through :mod:`roughcontact.units`), errors are turned into one readable line and an exit
@@ -16,13 +16,14 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from . import __version__
-from .errors import InputError
+from .errors import ConvergenceError, InputError
 from .topography import Topography
 from .units import format_si
 
 log = logging.getLogger("roughcontact")
 
 EXIT_INPUT_ERROR = 2
+EXIT_NOT_CONVERGED = 3
 
 # statistic -> (SI unit for display, description)
 _STATISTICS = {
@@ -185,6 +186,81 @@ def _plot(args: argparse.Namespace) -> int:
     return 0
 
 
+def _material(args: argparse.Namespace, prefix: str):
+    from .materials import Material, get_material
+
+    name = getattr(args, prefix)
+    modulus = getattr(args, f"{prefix}_youngs_modulus")
+    if name is not None and modulus is not None:
+        raise InputError(f"--{prefix}", "both a library name and a Young's modulus were given.", "give one.")
+    if name is not None:
+        return get_material(name)
+    if modulus is None:
+        return None
+    ratio = getattr(args, f"{prefix}_poissons_ratio")
+    if ratio is None:
+        raise InputError(
+            f"--{prefix}-poissons-ratio",
+            "missing.",
+            f"add --{prefix}-poissons-ratio with the Young's modulus.",
+        )
+    return Material.from_units(youngs_modulus=modulus, poissons_ratio=ratio, name=prefix)
+
+
+def _contact(args: argparse.Namespace) -> int:
+    from .contact import solve_normal
+    from .plotting import plot_contact_overview
+    from .units import quantity
+
+    material = _material(args, "material")
+    if material is None:
+        raise InputError(
+            "--material", "no material given.", "pass --material NAME or --material-youngs-modulus."
+        )
+    counter = _material(args, "counter")
+    targets = {
+        "mean_pressure": None
+        if args.pressure is None
+        else quantity(args.pressure, "pressure", field="--pressure"),
+        "force": None if args.force is None else quantity(args.force, "force", field="--force"),
+        "approach": None if args.approach is None else quantity(args.approach, "length", field="--approach"),
+    }
+    hardness = None if args.hardness is None else quantity(args.hardness, "pressure", field="--hardness")
+    topography = _read(args)
+    result = solve_normal(
+        topography,
+        material,
+        counter_body=counter,
+        hardness=hardness,
+        boundary=args.boundary,
+        tolerance=args.tolerance,
+        **targets,
+    )
+    scalars = result.scalars()
+    if args.output is not None:
+        args.output.mkdir(parents=True, exist_ok=True)
+        result.to_xarray().to_netcdf(args.output / "contact.nc", engine="h5netcdf")
+        if topography.dim == 2:
+            plot_contact_overview(result).savefig(args.output / "contact.png", dpi=args.dpi)
+    if args.json:
+        scalars["contact_modulus"] = result.contact_modulus
+        print(json.dumps(_json_safe(scalars), indent=2))
+        return 0
+    units = {"force": "N", "mean_pressure": "Pa", "approach": "m", "contact_area": "m^2", "mean_gap": "m"}
+    units["max_pressure"] = "Pa"
+    print(
+        f"contact of {args.file} ({material.name} against {counter.name if counter else 'a rigid flat'}, "
+        f"E* {format_si(result.contact_modulus, 'Pa')}, {result.boundary} boundary)"
+    )
+    for key, value in scalars.items():
+        unit = units.get(key, "")
+        shown = format_si(value, unit) if unit in ("m", "N", "Pa") else f"{value:.4g} {unit}".rstrip()
+        print(f"  {key:<18} {shown}")
+    if args.output is not None:
+        print(f"wrote {args.output / 'contact.nc'}" + (" and contact.png" if topography.dim == 2 else ""))
+    return 0
+
+
 def _demo(args: argparse.Namespace) -> int:
     from .demo import run_demo
 
@@ -217,6 +293,28 @@ def build_parser() -> argparse.ArgumentParser:
     plot.add_argument("--dpi", type=int, default=150)
     plot.set_defaults(handler=_plot)
 
+    contact = commands.add_parser(
+        "contact",
+        parents=[_read_options()],
+        help="solve the normal contact of a file's surface against a flat",
+        description="Elastic (or elastic-perfectly-plastic with --hardness) normal contact of the surface "
+        "against a flat. Give exactly one of --pressure, --force, --approach, with units.",
+    )
+    for prefix, what in (("material", "the surface's body"), ("counter", "the flat (default: rigid)")):
+        contact.add_argument(f"--{prefix}", help=f"library material of {what}, e.g. SU-8, polysilicon, SiO2")
+        contact.add_argument(f"--{prefix}-youngs-modulus", help=f"Young's modulus of {what}, e.g. '70 GPa'")
+        contact.add_argument(f"--{prefix}-poissons-ratio", type=float, help=f"Poisson's ratio of {what}")
+    contact.add_argument("--pressure", help="nominal mean pressure, e.g. '20 MPa'")
+    contact.add_argument("--force", help="total force, e.g. '10 uN'")
+    contact.add_argument("--approach", help="rigid approach from the first touch, e.g. '5 nm'")
+    contact.add_argument("--hardness", help="cap the pressure (elastic-perfectly-plastic), e.g. '0.46 GPa'")
+    contact.add_argument("--boundary", choices=("periodic", "free"), help="default: free unless --periodic")
+    contact.add_argument("--tolerance", type=float, default=1e-8, help="scale-free residual (default 1e-8)")
+    contact.add_argument("-o", "--output", type=Path, help="folder for contact.nc and contact.png")
+    contact.add_argument("--dpi", type=int, default=150)
+    contact.add_argument("--json", action="store_true", help="print the scalars as JSON (SI)")
+    contact.set_defaults(handler=_contact)
+
     demo = commands.add_parser("demo", help="run the embedded demo and write its figures")
     demo.add_argument("-o", "--output", type=Path, default=Path("demo-output"), help="output folder")
     demo.set_defaults(handler=_demo)
@@ -234,6 +332,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except InputError as error:
         print(f"roughcontact: error: {error}", file=sys.stderr)
         return EXIT_INPUT_ERROR
+    except ConvergenceError as error:
+        print(f"roughcontact: error: {error}", file=sys.stderr)
+        return EXIT_NOT_CONVERGED
 
 
 if __name__ == "__main__":

@@ -138,3 +138,53 @@ def test_console_script_runs_as_module():
     )
     assert done.returncode == 0
     assert done.stdout.startswith("roughcontact ")
+
+
+def test_contact_solves_a_real_scan_and_writes_results(capsys, shared_topographies, tmp_path):
+    import xarray as xr
+
+    status, out, err = run(
+        capsys,
+        "contact",
+        shared_topographies / "top-1.top",
+        "--material",
+        "polysilicon",
+        "--counter",
+        "SiO2",
+        "--pressure",
+        "50 MPa",
+        "-o",
+        tmp_path,
+        "--json",
+    )
+    assert status == 0, err
+    scalars = json.loads(out)
+    assert scalars["mean_pressure"] == pytest.approx(50e6, rel=1e-12, abs=0)
+    assert 0 < scalars["contact_fraction"] < 1
+    assert scalars["residual"] <= 1e-8
+    assert (tmp_path / "contact.png").read_bytes().startswith(PNG_MAGIC)
+    with xr.open_dataset(tmp_path / "contact.nc", engine="h5netcdf") as stored:
+        assert stored["pressure"].attrs["units"] == "Pa"
+        assert float(stored["pressure"].mean()) == pytest.approx(50e6, rel=1e-12, abs=0)
+
+
+def test_contact_with_user_material_and_bad_inputs(capsys, shared_topographies):
+    path = shared_topographies / "top-1.top"
+    status, out, err = run(
+        capsys, "contact", path, "--material-youngs-modulus", "70 GPa", "--material-poissons-ratio", "0.17",
+        "--force", "10 uN",
+    )  # fmt: skip
+    assert status == 0, err
+    assert "force" in out and "10 µN" in out
+    status, _, err = run(capsys, "contact", path, "--pressure", "1 MPa")
+    assert status == EXIT_INPUT_ERROR and "--material" in err
+    status, _, err = run(
+        capsys, "contact", path, "--material", "SU-8", "--pressure", "1 MPa", "--force", "1 N"
+    )
+    assert status == EXIT_INPUT_ERROR and "exactly one" in err
+    status, _, err = run(capsys, "contact", path, "--material", "SU-8", "--pressure", "1 nm")
+    assert status == EXIT_INPUT_ERROR and "--pressure" in err
+    status, _, err = run(
+        capsys, "contact", path, "--material-youngs-modulus", "70 GPa", "--pressure", "1 MPa"
+    )
+    assert status == EXIT_INPUT_ERROR and "poissons-ratio" in err
