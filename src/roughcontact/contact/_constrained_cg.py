@@ -157,7 +157,9 @@ def solve(
     impulse = np.zeros_like(h0)
     impulse.flat[0] = 1.0
     stiffness = 1.0 / float(compliance(impulse).flat[0])
-    if initial_pressure is not None:
+    if not load_control and approach <= h0.min():
+        p = np.zeros_like(h0)  # nothing overlaps: p = 0 is the exact solution, whatever the warm start
+    elif initial_pressure is not None:
         p = np.clip(initial_pressure, 0.0, upper)
     elif load_control:
         p = np.full(h0.shape, 0.0)
