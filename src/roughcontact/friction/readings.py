@@ -1,0 +1,187 @@
+"""Named readings of the disputed equations of paper 000 (the Winkler-Lennard-Jones friction model).
+
+Paper 000 has unit and sign problems and gaps (see ``docs/winkler_lj.md`` for the derivations).
+Every disputed choice is a field of :class:`Readings`; the default of each field is the physically
+consistent reading and the paper's printed form is always one of the choices. :data:`PRINTED`
+selects the printed form everywhere (where the paper is silent, the choice closest to its text).
+
+=====================  =======================  =====================================================
+field                  default                  alternatives (printed form first)
+=====================  =======================  =====================================================
+balance_terms          ``forces``               ``pressures_printed``: eqs. 2, 3, 7 summed as stresses
+adhesion_sign          ``attractive``           ``printed``: sum P + sum F = N with F > 0 attractive
+winkler_factor         ``uniaxial_strain``      ``paper000_eq4_printed``: denominator 1 - nu1 nu2
+work_of_adhesion       ``girifalco_good``       ``printed``: sqrt(gamma1 gamma2) instead of 2 sqrt(...)
+contact                ``epsilon``              ``zero_gap``: wall at l = 0, eq. 7 cut at 0 inside eps
+shear                  ``simple_shear``         ``eq12_printed``: diagonal strain C(alpha) of eqs. 10-12
+cuboid_height          ``layer``                ``printed``: z_i + dz_i from the lowest point
+energy_area            ``times_area``           ``printed``: energy per area in eqs. 13, 15, 17
+mechanical_height      ``cuboid``               ``printed_separation``: 1/d in eq. 17
+mechanical_energy      ``two_stage``            ``eq16_signed``: eq. 16's signed integral
+shear_poisson          ``geometric``            ``surface``, ``counter``: which nu enters G
+adhesive_cutoff        ``inf``                  a distance [m] beyond which springs do not count
+=====================  =======================  =====================================================
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import dataclass, fields
+
+from ..errors import InputError
+
+CHOICES: dict[str, tuple[str, ...]] = {
+    "balance_terms": ("forces", "pressures_printed"),
+    "adhesion_sign": ("attractive", "printed"),
+    "winkler_factor": ("uniaxial_strain", "paper000_eq4_printed"),
+    "work_of_adhesion": ("girifalco_good", "printed"),
+    "contact": ("epsilon", "zero_gap"),
+    "shear": ("simple_shear", "eq12_printed"),
+    "cuboid_height": ("layer", "printed"),
+    "energy_area": ("times_area", "printed"),
+    "mechanical_height": ("cuboid", "printed_separation"),
+    "mechanical_energy": ("two_stage", "eq16_signed"),
+    "shear_poisson": ("geometric", "surface", "counter"),
+}
+"""Allowed values of each string field of :class:`Readings`; the first is the default."""
+
+
+@dataclass(frozen=True)
+class Readings:
+    """How each disputed equation of paper 000 is read; see the module table and ``docs/winkler_lj.md``.
+
+    Parameters
+    ----------
+    balance_terms : {"forces", "pressures_printed"}
+        Eqs. 3 and 7 are stresses; ``"forces"`` multiplies them by the spring area S before they
+        enter the force balance of eq. 2. ``"pressures_printed"`` sums the stresses against N as
+        printed: dimensionally inconsistent, so its results depend on the unit system (SI here).
+    adhesion_sign : {"attractive", "printed"}
+        ``"attractive"``: the attraction of eq. 7 (F > 0) pulls the bodies together and adds to the
+        load, sum P - sum F = N. ``"printed"``: eq. 2 as printed, sum P + sum F = N (adhesion
+        carrying load, which follows only if eq. 5 is read with the opposite sign).
+    winkler_factor : {"uniaxial_strain", "paper000_eq4_printed"}
+        Denominator of eq. 4, see :func:`roughcontact.materials.winkler_factor`.
+    work_of_adhesion : {"girifalco_good", "printed"}
+        dgamma = 2 sqrt(gamma1 gamma2) (Girifalco-Good / Berthelot: 2 gamma for identical
+        surfaces) or sqrt(gamma1 gamma2) as printed below eq. 7.
+    contact : {"epsilon", "zero_gap"}
+        When a spring is in mechanical contact. ``"epsilon"``: where the undeformed gap
+        l_i = d - z_i is <= epsilon (a hard wall at the zero of eq. 7, paper: "no initial
+        mechanical contact l_i > epsilon"). ``"zero_gap"``: where l_i <= 0; springs with
+        0 < l_i < epsilon then feel no force (eq. 7's repulsive branch is cut) and carry the full
+        energy dgamma.
+    shear : {"simple_shear", "eq12_printed"}
+        Shear compliance of a cuboid of height H: simple shear ds = Q H / (G S), or eq. 12
+        ds = Q H / (2 C G S), which equates the diagonal strain of eq. 10 with the 45-degree
+        principal strain of eq. 11 (equal only for a cube, C = 1/2).
+    cuboid_height : {"layer", "printed"}
+        Height H of the sheared cuboid in eqs. 10-15: the Winkler layer thickness plus the
+        spring's extension, h + dz_i, or z_i + dz_i as printed with z_i from the lowest point.
+    energy_area : {"times_area", "printed"}
+        Eqs. 14 and 16 are energies per area; ``"times_area"`` multiplies them by S before
+        equating them with the work of eq. 13, so Q is in N. ``"printed"`` leaves them per area
+        (Q then carries N/m, read as N).
+    mechanical_height : {"cuboid", "printed_separation"}
+        Height in eq. 17: the same cuboid height as in eq. 15, or 1/d as printed.
+    mechanical_energy : {"two_stage", "eq16_signed"}
+        Energy to break a mechanical contact held at l_im < epsilon: the text's two stages,
+        |work from l_im to epsilon| + dgamma = 2 dgamma - e(l_im), or eq. 16 as printed,
+        e(l_im), which turns negative above a stress of 16 dgamma / epsilon (such springs then
+        add no friction and are counted in the result).
+    shear_poisson : {"geometric", "surface", "counter"}
+        Poisson's ratio in G = E / (2 (1 + nu)) with E from eq. 1: sqrt(nu1 nu2) as in eq. 4,
+        the surface's nu1, or the counter-body's nu2.
+    adhesive_cutoff : float
+        Gap [m] beyond which springs are not counted as adhesive (default: all springs).
+
+    Raises
+    ------
+    InputError
+        An unknown value (the message lists the allowed ones) or a cutoff that is not positive.
+    """
+
+    balance_terms: str = "forces"
+    adhesion_sign: str = "attractive"
+    winkler_factor: str = "uniaxial_strain"
+    work_of_adhesion: str = "girifalco_good"
+    contact: str = "epsilon"
+    shear: str = "simple_shear"
+    cuboid_height: str = "layer"
+    energy_area: str = "times_area"
+    mechanical_height: str = "cuboid"
+    mechanical_energy: str = "two_stage"
+    shear_poisson: str = "geometric"
+    adhesive_cutoff: float = math.inf
+
+    def __post_init__(self):
+        for name, allowed in CHOICES.items():
+            value = getattr(self, name)
+            if value not in allowed:
+                raise InputError(
+                    f"readings.{name}", f"unknown reading {value!r}.", f"choose one of {list(allowed)}."
+                )
+        cutoff = float(self.adhesive_cutoff)
+        if not cutoff > 0:
+            raise InputError(
+                "readings.adhesive_cutoff",
+                f"{self.adhesive_cutoff!r} is not a positive distance.",
+                "give a gap in metres (e.g. 20e-9) or inf for no cutoff.",
+            )
+        object.__setattr__(self, "adhesive_cutoff", cutoff)
+
+    @classmethod
+    def from_strings(cls, items: Iterable[str]) -> Readings:
+        """Build readings from ``"name=value"`` strings (the CLI's ``--reading``).
+
+        Parameters
+        ----------
+        items : iterable of str
+            e.g. ``["contact=zero_gap", "adhesive_cutoff=2e-8"]``; the cutoff is in metres.
+
+        Returns
+        -------
+        Readings
+
+        Raises
+        ------
+        InputError
+            A malformed item or an unknown name or value.
+        """
+        known = [f.name for f in fields(cls)]
+        values: dict[str, object] = {}
+        for item in items:
+            name, separator, value = item.partition("=")
+            name = name.strip().replace("-", "_")
+            if not separator or name not in known:
+                raise InputError(
+                    "--reading", f"cannot read {item!r}.", f"write NAME=VALUE with NAME one of {known}."
+                )
+            values[name] = float(value) if name == "adhesive_cutoff" else value.strip()
+        return cls(**values)
+
+    def changed(self) -> dict[str, object]:
+        """Return the fields that differ from the defaults, ``{name: value}``."""
+        default = Readings()
+        return {
+            f.name: getattr(self, f.name)
+            for f in fields(self)
+            if getattr(self, f.name) != getattr(default, f.name)
+        }
+
+
+PRINTED = Readings(
+    balance_terms="pressures_printed",
+    adhesion_sign="printed",
+    winkler_factor="paper000_eq4_printed",
+    work_of_adhesion="printed",
+    shear="eq12_printed",
+    cuboid_height="printed",
+    energy_area="printed",
+    mechanical_height="printed_separation",
+    mechanical_energy="eq16_signed",
+    shear_poisson="surface",
+)
+"""Every equation as printed in paper 000 (``contact="epsilon"`` is the printed text's criterion;
+the paper does not say which Poisson's ratio enters G, ``"surface"`` is the closest to its text)."""

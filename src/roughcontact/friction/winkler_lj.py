@@ -1,0 +1,702 @@
+r"""Winkler-layer + Lennard-Jones adhesive friction model of paper 000, equation by equation.
+
+The two rough surfaces are merged into one composite surface z_i (paper 000, Fig. 1;
+:func:`roughcontact.topography.process.combine`) that faces a rigid flat at distance d from its
+base. Each pixel is a spring (a cuboid of top area S = pixel area and height h, the Winkler layer):
+
+* eq. 1: composite modulus E (:func:`roughcontact.materials.composite_modulus`);
+* eqs. 3-4: spring stress P = E / (k h) dz, k from :func:`roughcontact.materials.winkler_factor`;
+* eqs. 5-7: attractive stress f(l) of the n = 2, m = 8 Lennard-Jones law
+  (:mod:`roughcontact.friction.lennard_jones`), with dgamma from the surface energies;
+* eq. 2: force balance sum P_i S - sum f(l_i) S = N for the separation d (default reading),
+  solved by bracketing and :func:`scipy.optimize.brentq` on the apex overlap, with the heights
+  sorted once and cumulative sums for the mechanical springs;
+* eq. 8: extension dz_i = f(l_i) k h / E of the springs in strictly adhesive contact;
+* eqs. 9-15: lateral force Q_i = sqrt(2 W_i / (H_i c)) that makes the shear work Q ds / 2 of a
+  cuboid (height H_i, shear compliance ds = c Q H_i) equal to the energy W_i that breaks its
+  adhesive bond (eq. 14 at l_ia = d - z_i - dz_i);
+* eqs. 16-17: the same for springs in mechanical contact, with the energy from the distance l_im
+  where the repulsion of eq. 7 carries the spring's stress P_i;
+* friction F = sum Q (adhesive part + mechanical part) and mu = F / N.
+
+Every disputed reading is a field of :class:`~roughcontact.friction.readings.Readings`; the
+derivations are in ``docs/winkler_lj.md``. Hold time: pass ``relaxation`` (E(t), e.g. a
+:class:`~roughcontact.friction.viscoelastic.PronySeries`) and ``hold_time``.
+
+References
+----------
+Seed paper 000, "Simulation model for frictional contact of two elastic surfaces in micro/nanoscale
+and its validation", eqs. 1-17.
+K. L. Johnson, *Contact Mechanics*, Cambridge University Press, 1985, section 5.9 (elastic
+foundation). doi:10.1017/CBO9781139171731.
+J. A. Greenwood, Proc. R. Soc. Lond. A 453 (1997) 1277-1297. doi:10.1098/rspa.1997.0070.
+L. A. Girifalco, R. J. Good, J. Phys. Chem. 61 (1957) 904-909. doi:10.1021/j150553a013.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy import optimize
+
+from ..errors import InputError
+from ..materials import Material, composite_modulus, winkler_factor
+from ..topography import Topography
+from ..topography.process import combine
+from . import lennard_jones as lj
+from .readings import Readings
+from .viscoelastic import material_after_hold
+
+
+def _positive_length(value: float, field_name: str, example: str) -> float:
+    value = float(value)
+    if not (math.isfinite(value) and value > 0):
+        raise InputError(field_name, f"{value!r} is not a positive finite length.", f"give e.g. {example}.")
+    return value
+
+
+def _surface_energy(value: float | None, body: Material | None, field_name: str) -> float:
+    if value is None and body is not None:
+        value = body.surface_energy
+    if value is None:
+        raise InputError(
+            field_name,
+            "no surface energy given" + (f" and {body.name!r} has none." if body is not None else "."),
+            f"pass {field_name}= in J/m^2 (e.g. 0.05), or a Material with surface_energy.",
+        )
+    value = float(value)
+    if not (math.isfinite(value) and value > 0):
+        raise InputError(
+            field_name,
+            f"{value!r} J/m^2 is not a positive surface energy.",
+            "surface energies are positive (tens of mJ/m^2 for oxides and silicon, e.g. 0.05).",
+        )
+    return value
+
+
+def work_of_adhesion(
+    surface_energy_1: float, surface_energy_2: float, *, reading: str = "girifalco_good"
+) -> float:
+    r"""Work of adhesion dgamma of two surfaces [J/m^2] (paper 000, below eq. 7).
+
+    ``"girifalco_good"`` (default): dgamma = 2 sqrt(gamma1 gamma2), the dispersive
+    (Berthelot / Girifalco-Good) estimate of gamma1 + gamma2 - gamma12, which gives 2 gamma for two
+    identical surfaces. ``"printed"``: dgamma = sqrt(gamma1 gamma2), as printed (half of it).
+
+    Parameters
+    ----------
+    surface_energy_1, surface_energy_2 : float
+        Surface free energies [J/m^2].
+    reading : {"girifalco_good", "printed"}
+        See above.
+
+    Returns
+    -------
+    float
+        dgamma [J/m^2].
+
+    References
+    ----------
+    L. A. Girifalco, R. J. Good, J. Phys. Chem. 61 (1957) 904-909. doi:10.1021/j150553a013.
+    J. N. Israelachvili, *Intermolecular and Surface Forces*, 3rd ed., 2011, ch. 17.
+    doi:10.1016/C2009-0-21560-1.
+    """
+    factor = 2.0 if reading == "girifalco_good" else 1.0
+    return factor * math.sqrt(surface_energy_1 * surface_energy_2)
+
+
+@dataclass(frozen=True, eq=False)
+class WinklerLJResult:
+    """Friction of the Winkler-Lennard-Jones model at one normal load (SI).
+
+    Attributes
+    ----------
+    load : float
+        Normal load N [N].
+    separation : float
+        d: distance from the flat to the base (lowest point) of the composite surface [m].
+    approach : float
+        Overlap of the highest point with the contact wall (epsilon or 0, see ``readings.contact``) [m];
+        > 0 when springs are compressed.
+    mechanical, adhesive : ndarray of bool
+        Springs in mechanical contact and in strictly adhesive contact (disjoint; springs beyond
+        ``readings.adhesive_cutoff`` are in neither).
+    gap : ndarray
+        Undeformed gap l_i = d - z_i [m].
+    stress : ndarray
+        Normal stress on each spring [Pa]: compression (> 0) of mechanical springs, minus the
+        attraction of eq. 7 on adhesive ones, 0 elsewhere.
+    extension : ndarray
+        Spring extension dz_i [m]: eq. 8 for adhesive springs (> 0, towards the flat), minus the
+        compression for mechanical ones.
+    lateral_force : ndarray
+        Q_i [N] (eqs. 15 and 17).
+    mechanical_force, adhesive_force : float
+        Sum of the spring forces P_i S [N] and of the attractions f(l_i) S [N] (stresses summed
+        without S under ``balance_terms="pressures_printed"``).
+    adhesive_friction, mechanical_friction, friction : float
+        Sums of Q_i over adhesive springs, over mechanical springs, and both [N].
+    mu : float
+        friction / load.
+    residual : float
+        Force-balance residual of eq. 2 at ``separation``, relative to the largest term.
+    max_strain : float
+        Largest compression of a spring relative to the layer thickness.
+    negative_energy_springs : int
+        Mechanical springs whose eq. 16 energy was negative (only ``mechanical_energy="eq16_signed"``);
+        they add no friction.
+    pulled_in_springs : int
+        Adhesive springs whose eq. 8 extension reaches the wall (their bond energy is taken at it).
+    parameters : dict
+        Derived constants and inputs: contact_modulus, winkler_factor, shear_modulus,
+        work_of_adhesion, spring_stiffness (E / (k h), Pa/m), epsilon, layer_thickness,
+        spring_area, readings.
+    topography : Topography
+        The composite surface.
+    """
+
+    load: float
+    separation: float
+    approach: float
+    mechanical: np.ndarray
+    adhesive: np.ndarray
+    gap: np.ndarray
+    stress: np.ndarray
+    extension: np.ndarray
+    lateral_force: np.ndarray
+    mechanical_force: float
+    adhesive_force: float
+    adhesive_friction: float
+    mechanical_friction: float
+    friction: float
+    mu: float
+    residual: float
+    max_strain: float
+    negative_energy_springs: int
+    pulled_in_springs: int
+    parameters: dict = field(repr=False)
+    topography: Topography = field(repr=False)
+
+    def scalars(self) -> dict[str, float]:
+        """Return the scalar results as a flat dictionary (SI)."""
+        return {
+            "load": self.load,
+            "mu": self.mu,
+            "friction": self.friction,
+            "adhesive_friction": self.adhesive_friction,
+            "mechanical_friction": self.mechanical_friction,
+            "separation": self.separation,
+            "approach": self.approach,
+            "mechanical_springs": int(self.mechanical.sum()),
+            "adhesive_springs": int(self.adhesive.sum()),
+            "mechanical_force": self.mechanical_force,
+            "adhesive_force": self.adhesive_force,
+            "residual": self.residual,
+            "max_strain": self.max_strain,
+            "negative_energy_springs": self.negative_energy_springs,
+            "pulled_in_springs": self.pulled_in_springs,
+        }
+
+    def to_xarray(self):
+        """Return an ``xarray.Dataset``: spring fields on (x, y), scalars and parameters as attributes."""
+        import xarray as xr
+
+        grid = dict(zip(("x", "y"), self.topography.coordinates(), strict=True))
+        fields_ = {
+            "heights": (self.topography.heights, "m"),
+            "gap": (self.gap, "m"),
+            "stress": (self.stress, "Pa"),
+            "extension": (self.extension, "m"),
+            "lateral_force": (self.lateral_force, "N"),
+            "mechanical": (self.mechanical.astype(np.int8), ""),
+            "adhesive": (self.adhesive.astype(np.int8), ""),
+        }
+        data = {name: (("x", "y"), values, {"units": unit}) for name, (values, unit) in fields_.items()}
+        attributes = dict(self.scalars())
+        attributes.update({k: v for k, v in self.parameters.items() if k != "readings"})
+        attributes.update({f"reading_{k}": str(v) for k, v in vars(self.parameters["readings"]).items()})
+        coords = {axis: (axis, values, {"units": "m"}) for axis, values in grid.items()}
+        return xr.Dataset(data, coords=coords, attrs=attributes)
+
+
+@dataclass(frozen=True, eq=False)
+class FrictionSweep:
+    """Friction of the model over a list of loads (arrays of one value per load, SI)."""
+
+    load: np.ndarray
+    friction: np.ndarray
+    adhesive_friction: np.ndarray
+    mechanical_friction: np.ndarray
+    mu: np.ndarray
+    separation: np.ndarray
+    mechanical_springs: np.ndarray
+    adhesive_springs: np.ndarray
+
+    def to_xarray(self):
+        """Return an ``xarray.Dataset`` indexed by ``load`` [N]."""
+        import xarray as xr
+
+        units = {
+            "friction": "N",
+            "adhesive_friction": "N",
+            "mechanical_friction": "N",
+            "mu": "",
+            "separation": "m",
+            "mechanical_springs": "",
+            "adhesive_springs": "",
+        }
+        data = {name: ("load", getattr(self, name), {"units": unit}) for name, unit in units.items()}
+        return xr.Dataset(data, coords={"load": ("load", self.load, {"units": "N"})})
+
+
+@dataclass(frozen=True, eq=False)
+class WinklerLJModel:
+    """A prepared surface and its constants; :meth:`solve` gives the friction at a load.
+
+    Build it with :func:`winkler_lj_model`. The heights are sorted once, so repeated solves
+    (load sweeps, crossover search) cost one pass over the adhesive springs per residual
+    evaluation.
+    """
+
+    topography: Topography
+    readings: Readings
+    epsilon: float
+    layer_thickness: float
+    contact_modulus: float
+    winkler_factor: float
+    shear_modulus: float
+    work_of_adhesion: float
+    _depth: np.ndarray = field(repr=False)  # z_max - z, ascending
+    _order: np.ndarray = field(repr=False)
+    _cumulative_depth: np.ndarray = field(repr=False)  # [0, d0, d0 + d1, ...]
+
+    # --- constants --------------------------------------------------------------------------
+    @property
+    def spring_stiffness(self) -> float:
+        """E / (k h): stress per unit compression of a spring (eq. 3) [Pa/m]."""
+        return self.contact_modulus / (self.winkler_factor * self.layer_thickness)
+
+    @property
+    def spring_area(self) -> float:
+        """S, the top area of one cuboid (the pixel area) [m^2]."""
+        return self.topography.pixel_area
+
+    @property
+    def _wall(self) -> float:
+        return self.epsilon if self.readings.contact == "epsilon" else 0.0
+
+    @property
+    def _balance_area(self) -> float:
+        return self.spring_area if self.readings.balance_terms == "forces" else 1.0
+
+    @property
+    def _adhesion_sign(self) -> float:
+        return -1.0 if self.readings.adhesion_sign == "attractive" else 1.0
+
+    # --- eq. 2 --------------------------------------------------------------------------------
+    def _split(self, approach: float) -> tuple[int, int]:
+        """Numbers of springs in mechanical contact and within the adhesive cutoff (sorted order)."""
+        mechanical = int(np.searchsorted(self._depth, approach, side="right"))
+        reach = self.readings.adhesive_cutoff - self._wall + approach
+        within = self._depth.size
+        if math.isfinite(reach):
+            within = int(np.searchsorted(self._depth, reach, side="right"))
+        return mechanical, max(within, mechanical)
+
+    def _attraction(self, gap: np.ndarray) -> np.ndarray:
+        stress = lj.attractive_stress(gap, self.work_of_adhesion, self.epsilon)
+        return np.maximum(stress, 0.0) if self.readings.contact == "zero_gap" else stress
+
+    def _terms(self, approach: float) -> tuple[float, float]:
+        """Sum of spring stresses (eq. 3) and of attractive stresses (eq. 7) at an apex overlap [Pa]."""
+        mechanical, within = self._split(approach)
+        compression = mechanical * approach - self._cumulative_depth[mechanical]
+        gap = self._depth[mechanical:within] + (self._wall - approach)
+        return self.spring_stiffness * compression, float(self._attraction(gap).sum())
+
+    def net_normal_force(self, approach: float) -> float:
+        """Return the normal force that eq. 2 balances at an apex overlap ``approach`` [m], N(approach).
+
+        Parameters
+        ----------
+        approach : float
+            Overlap of the highest point with the contact wall [m] (negative: apart).
+
+        Returns
+        -------
+        float
+            sum P S -/+ sum F S [N] (sign from ``readings.adhesion_sign``); negative = net tension.
+        """
+        mechanical, attraction = self._terms(approach)
+        return self._balance_area * (mechanical + self._adhesion_sign * attraction)
+
+    def load_capacity(self) -> float:
+        """Largest load the layer carries: the highest spring compressed by the whole layer thickness [N]."""
+        return self.net_normal_force(self.layer_thickness)
+
+    def _solve_approach(self, load: float) -> float:
+        def residual(approach: float) -> float:
+            return self.net_normal_force(approach) - load
+
+        high = self.layer_thickness
+        if residual(high) < 0:
+            raise InputError(
+                "load",
+                f"{load:.4g} N is more than the layer carries ({self.load_capacity():.4g} N with the "
+                f"highest spring compressed by the whole layer thickness {self.layer_thickness:.4g} m).",
+                "lower the load, or check the layer thickness and the moduli (the linear Winkler layer "
+                "is meaningless at such strains).",
+            )
+        low = 0.0
+        step = self.epsilon
+        while residual(low) > 0:  # only when adhesion carries load (adhesion_sign="printed")
+            low, step = low - step, 2.0 * step
+            if step > 1e15 * self.epsilon:
+                raise InputError(
+                    "load",
+                    f"adhesion alone exceeds {load:.4g} N at every separation up to "
+                    f"{step:.3g} m: the surface never reaches a balance with the flat.",
+                    "use adhesion_sign='attractive' or a larger load.",
+                )
+        tolerance = 4.0 * np.finfo(float).eps * self.layer_thickness
+        rtol = 4.0 * np.finfo(float).eps
+        return optimize.brentq(residual, low, high, xtol=tolerance, rtol=rtol, maxiter=500)
+
+    # --- eqs. 8-17 ----------------------------------------------------------------------------
+    def _shear_compliance(self, height: np.ndarray, cuboid_height: np.ndarray) -> np.ndarray:
+        """Return ds / (Q H) [1/N]: 1 / (G S) for simple shear, 1 / (2 C G S) for eq. 12 (C from eq. 10)."""
+        base = 1.0 / (self.shear_modulus * self.spring_area)
+        if self.readings.shear == "simple_shear":
+            return np.full_like(height, base)
+        tangent = cuboid_height / self.topography.spacing[0]
+        return base * (tangent * tangent + 1.0) / (2.0 * tangent)
+
+    def _lateral_force(self, energy: np.ndarray, height: np.ndarray, cuboid_height: np.ndarray) -> np.ndarray:
+        """Q = sqrt(2 W / (H c)) from W = Q ds / 2 and ds = c Q H (eqs. 9, 12, 13, 15, 17) [N]."""
+        work = energy * (self.spring_area if self.readings.energy_area == "times_area" else 1.0)
+        return np.sqrt(2.0 * work / (height * self._shear_compliance(height, cuboid_height)))
+
+    def solve(self, load: float) -> WinklerLJResult:
+        """Solve eq. 2 for the separation at ``load`` and return the friction (eqs. 8-17).
+
+        Parameters
+        ----------
+        load : float
+            Normal load N [N], > 0 (mu = F / N needs a compressive load).
+
+        Returns
+        -------
+        WinklerLJResult
+
+        Raises
+        ------
+        InputError
+            A load that is not positive and finite, or more than :meth:`load_capacity`.
+        """
+        load = float(load)
+        if not (math.isfinite(load) and load > 0):
+            raise InputError(
+                "load",
+                f"{load!r} N is not a positive finite load.",
+                "give a compressive load > 0 (mu = F / N); use net_normal_force() for tensile states.",
+            )
+        approach = self._solve_approach(load)
+        mechanical_count, within = self._split(approach)
+        n = self._depth.size
+        depth = self._depth
+        stiffness, eps, gamma = self.spring_stiffness, self.epsilon, self.work_of_adhesion
+
+        gap = depth + (self._wall - approach)
+        mechanical = np.arange(n) < mechanical_count
+        adhesive = ~mechanical & (np.arange(n) < within)
+        attraction = np.where(adhesive, self._attraction(np.where(adhesive, gap, eps)), 0.0)
+        compression = np.where(mechanical, approach - depth, 0.0)
+        extension = attraction / stiffness - compression  # eq. 8 for adhesive springs
+
+        # cuboid height (eqs. 10, 15) and the height in eq. 17
+        if self.readings.cuboid_height == "layer":
+            cuboid = self.layer_thickness + extension
+        else:
+            cuboid = (depth[-1] - depth) + extension
+        height = cuboid.copy()
+        separation = depth[-1] + self._wall - approach
+        if self.readings.mechanical_height == "printed_separation":
+            height[mechanical] = separation
+
+        # energies to break the bonds (eqs. 14, 16)
+        bond_distance = np.maximum(gap - extension, eps)  # l_ia, at least the wall of eq. 7
+        energy = np.where(adhesive, lj.separation_energy(bond_distance, gamma, eps), 0.0)
+        pulled_in = int(np.count_nonzero(adhesive & (gap - extension <= eps)))
+        stress_mech = stiffness * compression[mechanical]
+        held_at = lj.repulsive_distance(stress_mech, gamma, eps)  # l_im
+        signed = lj.separation_energy(held_at, gamma, eps)
+        if self.readings.mechanical_energy == "two_stage":
+            energy_mech = 2.0 * gamma - signed
+        else:
+            energy_mech = np.maximum(signed, 0.0)
+        signed_reading = self.readings.mechanical_energy == "eq16_signed"
+        negative = int(np.count_nonzero(signed < 0)) if signed_reading else 0
+        energy[mechanical] = energy_mech
+
+        lateral = np.zeros(n)
+        active = mechanical | adhesive
+        lateral[active] = self._lateral_force(energy[active], height[active], cuboid[active])
+
+        area = self._balance_area
+        mechanical_force = area * float(stress_mech.sum())
+        adhesive_force = area * float(attraction.sum())
+        balance = mechanical_force + self._adhesion_sign * adhesive_force - load
+        scale = max(mechanical_force, adhesive_force, load)
+        adhesive_friction = float(lateral[adhesive].sum())
+        mechanical_friction = float(lateral[mechanical].sum())
+        stress = np.where(mechanical, stiffness * compression, -attraction)
+
+        def to_grid(values: np.ndarray) -> np.ndarray:
+            grid = np.empty(n, dtype=values.dtype)
+            grid[self._order] = values
+            return grid.reshape(self.topography.shape)
+
+        return WinklerLJResult(
+            load=load,
+            separation=float(separation),
+            approach=float(approach),
+            mechanical=to_grid(mechanical),
+            adhesive=to_grid(adhesive),
+            gap=to_grid(gap),
+            stress=to_grid(stress),
+            extension=to_grid(extension),
+            lateral_force=to_grid(lateral),
+            mechanical_force=mechanical_force,
+            adhesive_force=adhesive_force,
+            adhesive_friction=adhesive_friction,
+            mechanical_friction=mechanical_friction,
+            friction=adhesive_friction + mechanical_friction,
+            mu=(adhesive_friction + mechanical_friction) / load,
+            residual=abs(balance) / scale,
+            max_strain=float(compression.max(initial=0.0) / self.layer_thickness),
+            negative_energy_springs=negative,
+            pulled_in_springs=pulled_in,
+            parameters=self.parameters(),
+            topography=self.topography,
+        )
+
+    def parameters(self) -> dict:
+        """Return the model's constants and readings as a dictionary (SI)."""
+        return {
+            "contact_modulus": self.contact_modulus,
+            "winkler_factor": self.winkler_factor,
+            "shear_modulus": self.shear_modulus,
+            "work_of_adhesion": self.work_of_adhesion,
+            "spring_stiffness": self.spring_stiffness,
+            "epsilon": self.epsilon,
+            "layer_thickness": self.layer_thickness,
+            "spring_area": self.spring_area,
+            "readings": self.readings,
+        }
+
+    # --- sweeps -------------------------------------------------------------------------------
+    def sweep(self, loads: Sequence[float]) -> FrictionSweep:
+        """Solve at each load and collect friction, its parts and mu.
+
+        Parameters
+        ----------
+        loads : sequence of float
+            Normal loads [N], each > 0.
+
+        Returns
+        -------
+        FrictionSweep
+        """
+        results = [self.solve(load) for load in loads]
+
+        def column(name: str) -> np.ndarray:
+            return np.array([r.scalars()[name] for r in results])
+
+        return FrictionSweep(
+            load=column("load"),
+            friction=column("friction"),
+            adhesive_friction=column("adhesive_friction"),
+            mechanical_friction=column("mechanical_friction"),
+            mu=column("mu"),
+            separation=column("separation"),
+            mechanical_springs=column("mechanical_springs").astype(int),
+            adhesive_springs=column("adhesive_springs").astype(int),
+        )
+
+    def crossover_load(self, low: float | None = None, high: float | None = None) -> float | None:
+        """Load at which mechanical friction overtakes adhesive friction [N], by root finding.
+
+        Brent's method on log N of mechanical_friction - adhesive_friction. The difference jumps
+        where a spring changes from adhesive to mechanical contact, so the root is located to
+        within one such switch (relative tolerance 1e-9 on N otherwise).
+
+        Parameters
+        ----------
+        low, high : float, optional
+            Bracket [N]; default 1e-6 and 0.999 times :meth:`load_capacity`.
+
+        Returns
+        -------
+        float or None
+            The crossover load, or None when the sign of the difference does not change in the
+            bracket (mechanical friction dominates already at ``low``, or never up to ``high``).
+        """
+        capacity = self.load_capacity()
+        low = 1e-6 * capacity if low is None else float(low)
+        high = 0.999 * capacity if high is None else float(high)
+
+        def difference(log_load: float) -> float:
+            result = self.solve(math.exp(log_load))
+            return result.mechanical_friction - result.adhesive_friction
+
+        a, b = math.log(low), math.log(high)
+        if difference(a) > 0 or difference(b) < 0:
+            return None
+        return math.exp(optimize.brentq(difference, a, b, rtol=1e-9, xtol=1e-12))
+
+    def pull_off_force(self) -> float:
+        """Largest net tension the model sustains, max over the separation of -N [N].
+
+        Scans the apex overlap over [-2 eps, eps] on 401 points and refines the best one with a
+        bounded Brent search.
+
+        Returns
+        -------
+        float
+            Pull-off force [N] (> 0 when adhesion can hold the bodies together).
+        """
+        grid = np.linspace(-2.0 * self.epsilon, self.epsilon, 401)
+        values = np.array([self.net_normal_force(a) for a in grid])
+        best = int(np.argmin(values))
+        step = grid[1] - grid[0]
+        refined = optimize.minimize_scalar(
+            self.net_normal_force,
+            bounds=(grid[best] - step, grid[best] + step),
+            method="bounded",
+            options={"xatol": 1e-6 * step},
+        )
+        return -float(min(refined.fun, values[best]))
+
+
+def winkler_lj_model(
+    surface: Topography,
+    material: Material,
+    counter: Material | None = None,
+    *,
+    layer_thickness: float,
+    counter_surface: Topography | None = None,
+    epsilon: float = 2e-9,
+    surface_energy: float | None = None,
+    counter_surface_energy: float | None = None,
+    readings: Readings | None = None,
+    resample: bool = False,
+    relaxation: Callable[[float], float] | None = None,
+    hold_time: float = 0.0,
+) -> WinklerLJModel:
+    """Prepare the Winkler-Lennard-Jones model of a surface (or two merged surfaces) against a flat.
+
+    Parameters
+    ----------
+    surface : Topography
+        2D heights [m] of the rough surface (paper 000: the polysilicon scan).
+    material : Material
+        Body of ``surface`` (E1, nu1, gamma1).
+    counter : Material, optional
+        Counter-body (E2, nu2, gamma2); ``None`` is rigid (then ``counter_surface_energy`` is needed).
+    layer_thickness : float
+        Winkler layer height h [m] (paper 000: the thickness of the measured layer, 50 nm).
+    counter_surface : Topography, optional
+        Topography of the counter-body (paper 000: the AFM tip); merged with ``surface`` by
+        :func:`roughcontact.topography.process.combine`.
+    epsilon : float
+        Equilibrium distance of eq. 7 [m] (paper 000: 2 nm), > 0.
+    surface_energy, counter_surface_energy : float, optional
+        gamma1, gamma2 [J/m^2]; default the materials' ``surface_energy``.
+    readings : Readings, optional
+        Readings of the disputed equations (default :class:`Readings()`).
+    resample : bool
+        Interpolate two topographies of different pixel sizes onto a common grid instead of
+        refusing them.
+    relaxation : callable, optional
+        E(t) [Pa] of the surface material (hold time); e.g. a PronySeries.
+    hold_time : float
+        Time held in contact before sliding [s]; used with ``relaxation``.
+
+    Returns
+    -------
+    WinklerLJModel
+
+    Raises
+    ------
+    InputError
+        A 1D or mismatched topography (without ``resample``), epsilon or layer thickness not
+        positive, a missing, zero or negative surface energy, an invalid Poisson's ratio for eq. 4.
+    """
+    readings = Readings() if readings is None else readings
+    if not isinstance(surface, Topography) or surface.dim != 2:
+        raise InputError("surface", "expected a 2D Topography.", "pass a height map (nx, ny) in metres.")
+    if counter_surface is not None:
+        surface = combine(surface, counter_surface, resample=resample)
+    epsilon = _positive_length(epsilon, "epsilon", "2e-9 (2 nm)")
+    layer_thickness = _positive_length(layer_thickness, "layer_thickness", "50e-9 (50 nm)")
+    gamma_1 = _surface_energy(surface_energy, material, "surface_energy")
+    gamma_2 = _surface_energy(counter_surface_energy, counter, "counter_surface_energy")
+    if relaxation is not None:
+        material = material_after_hold(material, relaxation, hold_time)
+    nu_1 = material.poissons_ratio
+    if counter is None:
+        modulus = material.youngs_modulus / (1.0 - nu_1**2)
+        nu_2 = nu_1
+    else:
+        nu_2 = counter.poissons_ratio
+        modulus = composite_modulus(material.youngs_modulus, nu_1, counter.youngs_modulus, nu_2)
+    k = winkler_factor(nu_1, nu_2, reading=readings.winkler_factor)
+    if k <= 0:
+        raise InputError(
+            "poissons_ratio",
+            f"eq. 4 gives k = {k:.3g} for nu = {nu_1}, {nu_2}: the springs would be rigid.",
+            "the Winkler layer needs compressible materials (nu < 0.5).",
+        )
+    shear_nu = {"geometric": math.sqrt(nu_1 * nu_2), "surface": nu_1, "counter": nu_2}[readings.shear_poisson]
+    heights = surface.heights.ravel()
+    order = np.argsort(-heights, kind="stable")
+    depth = heights.max() - heights[order]
+    return WinklerLJModel(
+        topography=surface,
+        readings=readings,
+        epsilon=epsilon,
+        layer_thickness=layer_thickness,
+        contact_modulus=modulus,
+        winkler_factor=k,
+        shear_modulus=modulus / (2.0 * (1.0 + shear_nu)),
+        work_of_adhesion=work_of_adhesion(gamma_1, gamma_2, reading=readings.work_of_adhesion),
+        _depth=depth,
+        _order=order,
+        _cumulative_depth=np.concatenate(([0.0], np.cumsum(depth))),
+    )
+
+
+def solve_winkler_lj(
+    surface: Topography, material: Material, counter: Material | None = None, *, load: float, **options
+) -> WinklerLJResult:
+    """Friction of a surface against a flat at one normal load (paper 000); see :func:`winkler_lj_model`.
+
+    Parameters
+    ----------
+    surface : Topography
+        Rough surface [m].
+    material, counter : Material
+        The two bodies (``counter=None``: rigid flat).
+    load : float
+        Normal load N [N], > 0.
+    **options
+        Keyword arguments of :func:`winkler_lj_model` (``layer_thickness`` is required).
+
+    Returns
+    -------
+    WinklerLJResult
+    """
+    return winkler_lj_model(surface, material, counter, **options).solve(load)
