@@ -1,0 +1,122 @@
+"""The asperity parameters of a surface and a pair of materials, in one record (paper 002 eqs. 4-9)."""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+
+from ..errors import InputError
+from ..materials import Material, contact_modulus
+from ..topography.statistics import mccool_parameters
+from . import elastic_plastic as ep
+
+
+@dataclass(frozen=True)
+class AsperityParameters:
+    """Summit statistics and elastic-plastic scales of a rough surface against a counter-body (SI).
+
+    Attributes
+    ----------
+    m0, m2, m4 : float
+        Spectral moments [m^2], [-], [1/m^2].
+    bandwidth : float
+        alpha = m0 m4 / m2^2 [-].
+    summit_density : float
+        eta [1/m^2].
+    summit_radius : float
+        R_asp [m] (eq. 4).
+    summit_height_std : float
+        sigma_s [m] (eq. 5).
+    summit_mean_offset : float
+        Summits' mean plane above the surface mean plane [m].
+    contact_modulus : float
+        E' [Pa] (eq. 7 in the chosen form).
+    contact_pressure_factor : float
+        K [-] (eq. 8).
+    critical_interference : float
+        omega_c [m] (eq. 6).
+    critical_load : float
+        P_c [N], the Hertz load at omega_c.
+    plasticity_index : float
+        psi [-] (eq. 9).
+    """
+
+    m0: float
+    m2: float
+    m4: float
+    bandwidth: float
+    summit_density: float
+    summit_radius: float
+    summit_height_std: float
+    summit_mean_offset: float
+    contact_modulus: float
+    contact_pressure_factor: float
+    critical_interference: float
+    critical_load: float
+    plasticity_index: float
+
+    def to_dict(self) -> dict[str, float]:
+        """Return the fields as a plain dict (SI)."""
+        return asdict(self)
+
+
+def asperity_parameters(
+    *,
+    m0: float,
+    m2: float,
+    m4: float,
+    sample: Material,
+    counter_body: Material | None = None,
+    hardness: float | None = None,
+    modulus_form: str = "standard",
+) -> AsperityParameters:
+    """McCool summit statistics, E', K, omega_c, P_c and psi from the moments and the materials.
+
+    Parameters
+    ----------
+    m0, m2, m4 : float
+        Spectral moments [m^2], [-], [1/m^2] (paper 002 eqs. 1-3).
+    sample : Material
+        The rough, softer body (its Poisson's ratio enters K, its hardness omega_c).
+    counter_body : Material, optional
+        The flat (default rigid).
+    hardness : float, optional
+        H [Pa] (default ``sample.hardness``).
+    modulus_form : {"standard", "paper002_eq7_printed"}
+        Composite modulus, see :func:`roughcontact.materials.contact_modulus`.
+
+    Returns
+    -------
+    AsperityParameters
+
+    Raises
+    ------
+    InputError
+        Moments with alpha < 0.8968 (field ``m2``), no hardness, invalid materials.
+    """
+    hardness = sample.hardness if hardness is None else hardness
+    if hardness is None:
+        raise InputError("hardness", "the sample material has no hardness.", "pass hardness= in Pa.")
+    mccool = mccool_parameters(m0=m0, m2=m2, m4=m4)
+    modulus = contact_modulus(sample, counter_body, form=modulus_form)
+    scales = dict(
+        hardness=hardness,
+        poissons_ratio=sample.poissons_ratio,
+        contact_modulus=modulus,
+        radius=mccool.summit_radius,
+    )
+    omega_c = ep.critical_interference(**scales)
+    return AsperityParameters(
+        m0=m0,
+        m2=m2,
+        m4=m4,
+        bandwidth=mccool.bandwidth,
+        summit_density=mccool.summit_density,
+        summit_radius=mccool.summit_radius,
+        summit_height_std=mccool.summit_height_std,
+        summit_mean_offset=mccool.summit_mean_offset,
+        contact_modulus=modulus,
+        contact_pressure_factor=ep.contact_pressure_factor(sample.poissons_ratio),
+        critical_interference=omega_c,
+        critical_load=ep.critical_load(**scales),
+        plasticity_index=ep.plasticity_index(mccool.summit_height_std, omega_c),
+    )
