@@ -1,0 +1,272 @@
+"""Simulated vs measured friction per sample: two-sample t-tests and the Pearson r of the means.
+
+Paper 000 validates its model by scanning each sample at several spots (seven), simulating mu for
+each scan against the AFM tip, measuring mu at as many spots, and comparing per sample with a
+two-sample t-test (p > 0.1 taken as agreement) and across samples with the Pearson correlation of
+the means (r = 0.96 in the paper). :func:`simulate_mu` makes the simulated distributions,
+:func:`read_measured` reads the measured ones from a CSV, :func:`compare` does the statistics.
+
+References
+----------
+B. L. Welch, "The generalization of 'Student's' problem when several different population
+variances are involved", Biometrika 34 (1947) 28-35. doi:10.1093/biomet/34.1-2.28.
+Seed paper 000, section 5 (t-test p values 0.13, 0.12, 0.79; Pearson r 0.96).
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from scipy import stats
+
+from ..errors import InputError
+from ..friction.winkler_lj import winkler_lj_model
+from ..materials import Material
+from ..topography import Topography
+
+
+@dataclass(frozen=True)
+class SampleComparison:
+    """Simulated and measured mu of one sample and their two-sample t-test.
+
+    Attributes
+    ----------
+    sample : str
+        Sample name.
+    simulated, measured : tuple of float
+        The mu values.
+    t_statistic, p_value : float
+        Two-sample t-test of the means (Welch unless ``equal_var`` was asked).
+    agrees : bool
+        ``p_value > alpha``: the test does not distinguish simulation from measurement.
+    """
+
+    sample: str
+    simulated: tuple[float, ...]
+    measured: tuple[float, ...]
+    t_statistic: float
+    p_value: float
+    agrees: bool
+
+    @property
+    def simulated_mean(self) -> float:
+        """Mean simulated mu."""
+        return float(np.mean(self.simulated))
+
+    @property
+    def measured_mean(self) -> float:
+        """Mean measured mu."""
+        return float(np.mean(self.measured))
+
+    @property
+    def simulated_std(self) -> float:
+        """Sample standard deviation of the simulated mu (ddof = 1)."""
+        return float(np.std(self.simulated, ddof=1))
+
+    @property
+    def measured_std(self) -> float:
+        """Sample standard deviation of the measured mu (ddof = 1)."""
+        return float(np.std(self.measured, ddof=1))
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """Per-sample t-tests and the Pearson correlation of the per-sample means.
+
+    Attributes
+    ----------
+    samples : tuple of SampleComparison
+        In the order the samples were given.
+    pearson_r, pearson_p : float
+        Pearson r of (simulated mean, measured mean) over the samples and its p value.
+    alpha : float
+        Significance threshold of the t-tests.
+    equal_var : bool
+        Student's pooled-variance test (True) or Welch's (False).
+    """
+
+    samples: tuple[SampleComparison, ...]
+    pearson_r: float
+    pearson_p: float
+    alpha: float
+    equal_var: bool
+
+    def table(self) -> list[dict]:
+        """Return one JSON-ready row per sample (means, standard deviations, t, p, agreement)."""
+        return [
+            {
+                "sample": s.sample,
+                "simulated_mean": s.simulated_mean,
+                "simulated_std": s.simulated_std,
+                "measured_mean": s.measured_mean,
+                "measured_std": s.measured_std,
+                "n_simulated": len(s.simulated),
+                "n_measured": len(s.measured),
+                "t_statistic": s.t_statistic,
+                "p_value": s.p_value,
+                "agrees": s.agrees,
+            }
+            for s in self.samples
+        ]
+
+
+def _values(values: Sequence[float], field: str) -> np.ndarray:
+    array = np.asarray(values, dtype=float).ravel()
+    if array.size < 2 or not np.all(np.isfinite(array)):
+        raise InputError(
+            field,
+            f"needs at least 2 finite values, got {array.tolist()}.",
+            "give several scans / measurements per sample (paper 000 uses seven).",
+        )
+    return array
+
+
+def compare(
+    simulated: Mapping[str, Sequence[float]],
+    measured: Mapping[str, Sequence[float]],
+    *,
+    alpha: float = 0.1,
+    equal_var: bool = False,
+) -> Comparison:
+    """Compare simulated and measured mu per sample (t-test) and across samples (Pearson r).
+
+    Parameters
+    ----------
+    simulated, measured : mapping of str to sequence of float
+        mu values per sample; both must name the same samples (order taken from ``simulated``).
+    alpha : float
+        Threshold of the t-tests (paper 000: 0.1).
+    equal_var : bool
+        Student's pooled-variance t-test if True; Welch's (default) does not assume the scatter
+        of simulation and measurement to be equal.
+
+    Returns
+    -------
+    Comparison
+        Pearson r needs at least 3 samples with different means; with fewer it is reported as 0
+        with p = 1 (no evidence of correlation).
+
+    Raises
+    ------
+    InputError
+        Samples missing on one side, or fewer than 2 finite values in a sample.
+    """
+    missing = sorted(set(simulated) ^ set(measured))
+    if missing:
+        raise InputError(
+            "measured",
+            f"samples {missing} are not on both sides "
+            f"(simulated: {list(simulated)}, measured: {list(measured)}).",
+            "name the samples the same way in the scans and in the measured CSV.",
+        )
+    rows = []
+    for name in simulated:
+        sim = _values(simulated[name], f"simulated[{name!r}]")
+        meas = _values(measured[name], f"measured[{name!r}]")
+        if np.ptp(sim) == 0 and np.ptp(meas) == 0:
+            t, p = (0.0, 1.0) if sim[0] == meas[0] else (math.copysign(math.inf, sim[0] - meas[0]), 0.0)
+        else:
+            test = stats.ttest_ind(sim, meas, equal_var=equal_var)
+            t, p = float(test.statistic), float(test.pvalue)
+        rows.append(SampleComparison(name, tuple(sim), tuple(meas), t, p, p > alpha))
+    means = np.array([[s.simulated_mean, s.measured_mean] for s in rows])
+    if len(rows) >= 3 and np.ptp(means[:, 0]) > 0 and np.ptp(means[:, 1]) > 0:
+        pearson = stats.pearsonr(means[:, 0], means[:, 1])
+        r, r_p = float(pearson.statistic), float(pearson.pvalue)
+    else:
+        r, r_p = 0.0, 1.0
+    return Comparison(tuple(rows), r, r_p, float(alpha), bool(equal_var))
+
+
+def read_measured(path: str | Path) -> dict[str, np.ndarray]:
+    """Read measured mu per sample from a CSV with columns ``sample`` and ``mu``.
+
+    Lines starting with ``#`` are comments; other columns are ignored.
+
+    Parameters
+    ----------
+    path : str or Path
+        CSV file.
+
+    Returns
+    -------
+    dict of str to ndarray
+        mu values per sample, in file order.
+
+    Raises
+    ------
+    InputError
+        A missing file, missing columns, or a mu that is not a finite number.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise InputError(
+            "measured", f"{path} does not exist.", "give the path of a CSV with columns sample,mu."
+        )
+    with path.open(newline="") as handle:
+        lines = [line for line in handle if line.strip() and not line.lstrip().startswith("#")]
+    reader = csv.DictReader(lines)
+    if reader.fieldnames is None or not {"sample", "mu"} <= set(reader.fieldnames):
+        raise InputError(
+            "measured", f"{path} has columns {reader.fieldnames}.", "give a header line 'sample,mu'."
+        )
+    values: dict[str, list[float]] = {}
+    for number, row in enumerate(reader, start=2):
+        try:
+            mu = float(row["mu"])
+        except (TypeError, ValueError):
+            mu = math.nan
+        if not math.isfinite(mu):
+            raise InputError(
+                "measured", f"{path}, data row {number - 1}: mu {row['mu']!r}.", "give a number."
+            )
+        values.setdefault(row["sample"].strip(), []).append(mu)
+    return {name: np.array(v) for name, v in values.items()}
+
+
+def simulate_mu(
+    scans: Mapping[str, Sequence[Topography]],
+    material: Material,
+    counter: Material | None = None,
+    *,
+    load: float,
+    counter_surface: Topography | None = None,
+    **options,
+) -> dict[str, np.ndarray]:
+    """Simulate mu for every scan of every sample with the Winkler-Lennard-Jones model.
+
+    Parameters
+    ----------
+    scans : mapping of str to sequence of Topography
+        Scans per sample (paper 000: seven 5 um x 5 um polysilicon scans per sample).
+    material, counter : Material
+        Sample and counter-body (tip).
+    load : float
+        Normal load [N] (paper 000: 10 uN).
+    counter_surface : Topography, optional
+        Tip topography merged with each scan.
+    **options
+        Keyword arguments of :func:`roughcontact.friction.winkler_lj_model`
+        (``layer_thickness`` is required).
+
+    Returns
+    -------
+    dict of str to ndarray
+        mu per scan, per sample.
+    """
+    return {
+        name: np.array(
+            [
+                winkler_lj_model(scan, material, counter, counter_surface=counter_surface, **options)
+                .solve(load)
+                .mu
+                for scan in sample_scans
+            ]
+        )
+        for name, sample_scans in scans.items()
+    }

@@ -1,0 +1,153 @@
+"""The validation case of paper 000: a 2 um SiO2 sphere sliding on LPCVD polysilicon at 10 uN.
+
+Inputs from the paper (section 3-4): tip diameter 2 um (SiO2, E = 70 GPa, nu = 0.17, surface energy
+72 mJ/m^2), polysilicon (E = 110 GPa, nu = 0.22) of Ra about 1.45, 1.49 and 1.7 nm, 50 nm layer
+(the Winkler layer height), 20 nm pixels, epsilon = 2 nm, load 10 uN, seven scans per sample.
+
+Not given in the paper, so stated inputs here: the polysilicon surface energy (measured by the
+authors by wettability but not reported; default 50 mJ/m^2, an assumption), the scans themselves
+(synthetic self-affine scans by default: Hurst exponent 0.8, scaled to the exact Ra, seeded) and
+the tip roughness (default Rq 0.3 nm on a paraboloid of radius 1 um). Measured scans can be passed
+instead of the synthetic ones.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+
+from ..friction.readings import Readings
+from ..materials import get_material
+from ..topography import Topography
+from ..topography.generate import self_affine, sphere_with_roughness
+from ..topography.statistics import ra
+from .compare import simulate_mu
+
+PAPER000_SAMPLES: Mapping[str, float] = {"Ra 1.45 nm": 1.45e-9, "Ra 1.49 nm": 1.49e-9, "Ra 1.7 nm": 1.7e-9}
+"""Sample name -> Ra [m] of the three polysilicon samples of paper 000."""
+
+PIXEL = 20e-9
+"""Scan step of paper 000 [m] (the spring size S = PIXEL^2)."""
+
+
+def paper000_model_options(*, surface_energy: float = 0.05, readings: Readings | None = None) -> dict:
+    """Return the keyword arguments of :func:`~roughcontact.friction.winkler_lj_model` for paper 000.
+
+    Parameters
+    ----------
+    surface_energy : float
+        Polysilicon surface energy [J/m^2] (not reported by the paper; 0.05 is an assumption).
+    readings : Readings, optional
+        Readings of the disputed equations.
+
+    Returns
+    -------
+    dict
+        layer_thickness 50 nm, epsilon 2 nm, the surface energy, the tip's 72 mJ/m^2 and the readings.
+    """
+    return {
+        "layer_thickness": 50e-9,
+        "epsilon": 2e-9,
+        "surface_energy": surface_energy,
+        "counter_surface_energy": 72e-3,
+        "readings": readings,
+    }
+
+
+def paper000_tip(*, shape: int = 256, rms_height: float = 0.3e-9, seed: int = 0) -> Topography:
+    """Return a synthetic AFM tip of paper 000: a paraboloid of radius 1 um with roughness, 20 nm pixels.
+
+    Parameters
+    ----------
+    shape : int
+        Grid points per side (256: 5.12 um, close to the paper's 5 um scans).
+    rms_height : float
+        Rq of the tip roughness [m].
+    seed : int
+        Seed of the roughness.
+
+    Returns
+    -------
+    Topography
+    """
+    size = shape * PIXEL
+    return sphere_with_roughness((shape, shape), size, radius=1e-6, rms_height=rms_height, seed=seed)
+
+
+def paper000_scans(roughness: float, *, count: int = 7, shape: int = 256, seed: int = 0) -> list[Topography]:
+    """Return ``count`` synthetic polysilicon scans of exact Ra ``roughness``, 20 nm pixels.
+
+    Parameters
+    ----------
+    roughness : float
+        Ra [m].
+    count : int
+        Number of scans (paper 000: seven spots per sample).
+    shape : int
+        Grid points per side.
+    seed : int
+        Seed of the first scan; scan i uses ``seed + i``.
+
+    Returns
+    -------
+    list of Topography
+        Self-affine (Hurst 0.8) scans, each scaled to Ra = ``roughness``.
+    """
+    scans = []
+    for i in range(count):
+        scan = self_affine((shape, shape), shape * PIXEL, hurst=0.8, rms_height=roughness, seed=seed + i)
+        scans.append(
+            scan.with_heights(scan.heights * (roughness / ra(scan)), step=f"scaled to Ra {roughness:g} m")
+        )
+    return scans
+
+
+def paper000_simulation(
+    *,
+    load: float = 10e-6,
+    surface_energy: float = 0.05,
+    readings: Readings | None = None,
+    scans: Mapping[str, Sequence[Topography]] | None = None,
+    tip: Topography | None = None,
+    count: int = 7,
+    shape: int = 256,
+    seed: int = 0,
+) -> dict[str, np.ndarray]:
+    """Return the simulated mu per scan for the three polysilicon samples of paper 000 against the SiO2 tip.
+
+    Parameters
+    ----------
+    load : float
+        Normal load [N] (paper: 10 uN).
+    surface_energy : float
+        Polysilicon surface energy [J/m^2] (a stated assumption, see the module).
+    readings : Readings, optional
+        Readings of the disputed equations.
+    scans : mapping of str to sequence of Topography, optional
+        Measured scans per sample; default synthetic ones (:func:`paper000_scans`).
+    tip : Topography, optional
+        Measured tip topography on the scans' grid; default :func:`paper000_tip`.
+    count, shape, seed : int
+        Size of the synthetic data set: scans per sample, grid points per side, first seed.
+
+    Returns
+    -------
+    dict of str to ndarray
+        mu per scan, per sample.
+    """
+    if scans is None:
+        scans = {
+            name: paper000_scans(roughness, count=count, shape=shape, seed=seed + 100 * k)
+            for k, (name, roughness) in enumerate(PAPER000_SAMPLES.items())
+        }
+    if tip is None:
+        tip = paper000_tip(shape=next(iter(scans.values()))[0].shape[0], seed=seed)
+    return simulate_mu(
+        scans,
+        get_material("polysilicon"),
+        get_material("SiO2"),
+        load=load,
+        counter_surface=tip,
+        **paper000_model_options(surface_energy=surface_energy, readings=readings),
+    )
