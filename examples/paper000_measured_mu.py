@@ -24,6 +24,7 @@ OUTPUT = Path(__file__).with_name("paper000_measured_mu.csv")
 
 
 def constructed(simulated: np.ndarray, p_value: float) -> np.ndarray:
+    """Return the simulated scatter about a mean shifted until Welch's p equals ``p_value``."""
     scatter = (simulated - simulated.mean())[::-1]  # same spread, other order
 
     def excess(shift: float) -> float:
@@ -36,6 +37,7 @@ def constructed(simulated: np.ndarray, p_value: float) -> np.ndarray:
 
 
 def main() -> None:
+    """Simulate, construct the values and write the labelled CSV."""
     simulated = paper000_simulation()
     measured = {name: constructed(values, PAPER_P_VALUES[name]) for name, values in simulated.items()}
     result = compare(simulated, measured)
