@@ -12,14 +12,18 @@ from .contact import (
     plot_pressure,
     plot_von_mises,
 )
+from .friction import plot_friction_vs_load, plot_mu_boxes, plot_mu_means
 from .topography import plot_heights, plot_overview, plot_psd
 
 __all__ = [
     "plot_contact_area",
     "plot_contact_overview",
+    "plot_friction_vs_load",
     "plot_gap",
     "plot_heights",
     "plot_load_approach",
+    "plot_mu_boxes",
+    "plot_mu_means",
     "plot_overview",
     "plot_pressure",
     "plot_psd",
