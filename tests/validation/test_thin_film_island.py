@@ -1,0 +1,82 @@
+"""BEM flat-punch compression of the paper 002 island: load balance, hardness cap, plastic memory."""
+
+import numpy as np
+import pytest
+
+from roughcontact.errors import InputError
+from roughcontact.materials import get_material
+from roughcontact.models import paper002
+from roughcontact.models.thin_film_island import compress_island, paper002_island
+
+SU8, SILICON = get_material("SU-8"), get_material("silicon wafer")
+ISLAND = paper002_island(40, seed=3)
+RUN = compress_island(ISLAND, SU8, substrate=SILICON, tolerance=1e-9)
+
+
+def test_synthetic_island_has_the_papers_rms_height_on_its_top():
+    top = ISLAND.heights[ISLAND.heights > paper002.FILM_THICKNESS / 2]
+    assert np.sqrt(np.mean((top - top.mean()) ** 2)) == pytest.approx(
+        np.sqrt(paper002.MOMENTS["m0"]), rel=1e-12, abs=0
+    )
+    assert ISLAND.size[0] == pytest.approx(30e-6, rel=1e-12, abs=0)
+    # Gaussian ACF: m2 = 2 m0 / xi^2 gives the paper's m2 for xi = 1.36 um
+    assert ISLAND.info["correlation_length"] == pytest.approx(1.3618e-6, rel=1e-4, abs=0)
+
+
+def test_every_step_carries_its_target_load_and_never_exceeds_the_hardness():
+    curve = RUN.curve()
+    loading = np.unique(np.r_[np.linspace(0, 1e-3, 11), 25e-6])
+    targets = np.concatenate([loading, loading[::-1][1:]])
+    np.testing.assert_allclose(curve["force"], targets, rtol=1e-6, atol=1e-12 * 1e-3)
+    for step in RUN.steps:
+        assert step.pressure.max() <= SU8.hardness
+        assert step.converged
+
+
+def test_zero_interference_at_25_uN_and_unloading_ends_at_the_residual():
+    curve = RUN.curve()
+    loading = curve["branch"] == "loading"
+    at_reference = np.isclose(curve["force"][loading], 25e-6, rtol=1e-6, atol=0)
+    assert curve["approach"][loading][at_reference][0] == 0.0
+    assert curve["approach"][-1] == RUN.residual_interference
+    assert curve["force"][-1] == 0.0
+    # interference grows with load on loading and falls on unloading
+    assert np.all(np.diff(curve["approach"][loading]) > 0)
+    assert np.all(np.diff(curve["approach"][~loading]) < 0)
+
+
+def test_plastic_flattening_sits_where_the_peak_pressure_is_capped():
+    peak = RUN.steps[int(np.sum(RUN.branch == "loading")) - 1]
+    assert np.all(RUN.plastic_deformation[~peak.plastic_mask] == 0)
+    assert RUN.residual_interference >= RUN.curve()["approach"][0]  # at or beyond the first touch
+
+
+def test_elastic_island_unloads_along_its_loading_curve():
+    elastic = compress_island(ISLAND, SU8, substrate=SILICON, hardness=1e12, tolerance=1e-10)
+    assert not elastic.plastic_deformation.any()
+    curve = elastic.curve()
+    loading = curve["branch"] == "loading"
+    by_force = dict(zip(curve["force"][loading].round(12), curve["approach"][loading], strict=True))
+    for force, approach in zip(curve["force"][~loading], curve["approach"][~loading], strict=True):
+        assert approach == pytest.approx(by_force[round(force, 12)], rel=1e-6, abs=1e-6 * 1e-8)
+
+
+def test_von_mises_maps_at_the_papers_loads():
+    curve = RUN.curve()
+    for index in (2, 6, 11):
+        stress = RUN.stress(index, depths=[0.0, 0.5e-6])
+        vm = stress.von_mises()
+        assert vm.shape == (2, *ISLAND.shape)
+        assert vm.max() > 0
+    # no load, no stress: the surface-plasticity model keeps no residual stress
+    assert RUN.stress(len(RUN.steps) - 1).von_mises().max() == 0.0
+    assert curve["force"][-1] == 0.0
+
+
+def test_bad_targets_are_refused():
+    with pytest.raises(InputError, match="loading_forces"):
+        compress_island(ISLAND, SU8, loading_forces=[0, 5e-4, 2e-4, 1e-3])
+    with pytest.raises(InputError, match="reference_force"):
+        compress_island(ISLAND, SU8, loading_forces=[0, 5e-4, 1e-3])
+    with pytest.raises(InputError, match="hardness"):
+        compress_island(ISLAND, get_material("silicon wafer"))
