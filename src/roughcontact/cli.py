@@ -1,4 +1,4 @@
-"""Command line: ``roughcontact inspect | plot | contact | demo``.
+"""Command line: ``roughcontact inspect | plot | contact | demo | friction | friction-compare``.
 
 The edges of the program live here: unit strings from the user are converted once
 (through :mod:`roughcontact.units`), errors are turned into one readable line and an exit
@@ -318,6 +318,10 @@ def build_parser() -> argparse.ArgumentParser:
     demo = commands.add_parser("demo", help="run the embedded demo and write its figures")
     demo.add_argument("-o", "--output", type=Path, default=Path("demo-output"), help="output folder")
     demo.set_defaults(handler=_demo)
+
+    from .cli_friction import add_friction_commands
+
+    add_friction_commands(commands)
     return parser
 
 

@@ -149,7 +149,9 @@ class WinklerLJResult:
         Mechanical springs whose eq. 16 energy was negative (only ``mechanical_energy="eq16_signed"``);
         they add no friction.
     pulled_in_springs : int
-        Adhesive springs whose eq. 8 extension reaches the wall (their bond energy is taken at it).
+        Adhesive springs whose bond distance l_ia = l_i - dz_i is at or below epsilon (eq. 8
+        extension reaching the zero of eq. 7, or ``contact="zero_gap"`` springs inside epsilon);
+        their bond energy is taken at epsilon, dgamma.
     parameters : dict
         Derived constants and inputs: contact_modulus, winkler_factor, shear_modulus,
         work_of_adhesion, spring_stiffness (E / (k h), Pa/m), epsilon, layer_thickness,
@@ -639,7 +641,15 @@ def winkler_lj_model(
     if not isinstance(surface, Topography) or surface.dim != 2:
         raise InputError("surface", "expected a 2D Topography.", "pass a height map (nx, ny) in metres.")
     if counter_surface is not None:
-        surface = combine(surface, counter_surface, resample=resample)
+        try:
+            surface = combine(surface, counter_surface, resample=resample)
+        except InputError as error:
+            raise InputError(
+                "counter_surface",
+                error.problem,
+                "pass resample=True (CLI: --resample) to interpolate both onto a common grid, "
+                "or bring the scans to one grid first.",
+            ) from error
     epsilon = _positive_length(epsilon, "epsilon", "2e-9 (2 nm)")
     layer_thickness = _positive_length(layer_thickness, "layer_thickness", "50e-9 (50 nm)")
     gamma_1 = _surface_energy(surface_energy, material, "surface_energy")

@@ -39,7 +39,9 @@ def plot_mu_boxes(comparison, ax: Axes | None = None):
         data += [sample.simulated, sample.measured]
         positions += [3 * k + 0.6, 3 * k + 1.4]
         colours += ["tab:blue", "tab:orange"]
-    boxes = ax.boxplot(data, positions=positions, whis=(0, 100), widths=0.7, patch_artist=True)
+    boxes = ax.boxplot(
+        data, positions=positions, whis=(0, 100), widths=0.7, patch_artist=True, medianprops={"color": "k"}
+    )
     for box, colour in zip(boxes["boxes"], colours, strict=True):
         box.set_facecolor(colour)
         box.set_alpha(0.6)
