@@ -1,0 +1,100 @@
+"""Figures of the asperity models and the island compression (paper 002 Figs. 7-9)."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+
+from .contact import plot_von_mises
+from .topography import _axes
+
+_BRANCH_STYLES = {"loading": "-", "unloading": "--"}
+
+
+def plot_load_interference(
+    curves: dict[str, dict],
+    critical_interference: float,
+    ax: Axes | None = None,
+    *,
+    measured: dict | None = None,
+):
+    """Draw load (uN) against omega / omega_c for each curve, loading solid, unloading dashed (Fig. 7).
+
+    Parameters
+    ----------
+    curves : dict of str to dict
+        Label -> curve dict with "branch", "approach" [m] and "force" [N] (``.curve()`` of a
+        :class:`~roughcontact.asperity.StatisticalLoadUnload` or an island compression).
+    critical_interference : float
+        omega_c [m] for the abscissa.
+    ax : Axes, optional
+        Where to draw.
+    measured : dict, optional
+        A measured curve with "approach" [m] and "force" [N], drawn as markers.
+
+    Returns
+    -------
+    (Figure, Axes)
+    """
+    fig, ax = _axes(ax, figsize=(5.5, 4.2))
+    for (label, curve), color in zip(curves.items(), ("C0", "C1", "C2", "C3", "C4"), strict=False):
+        branches = np.asarray(curve["branch"])
+        for branch, style in _BRANCH_STYLES.items():
+            keep = branches == branch
+            if keep.any():
+                x = np.asarray(curve["approach"])[keep] / critical_interference
+                ax.plot(
+                    x, np.asarray(curve["force"])[keep] * 1e6, style, color=color, label=f"{label}, {branch}"
+                )
+    if measured is not None:
+        x = np.asarray(measured["approach"]) / critical_interference
+        ax.plot(x, np.asarray(measured["force"]) * 1e6, "k.", ms=3, label="measured")
+    ax.set_xlabel("interference ω/ω_c")
+    ax.set_ylabel("load (µN)")
+    ax.legend(fontsize="small")
+    ax.grid(True, alpha=0.3)
+    return fig, ax
+
+
+def plot_area_load(curves: dict[str, dict], ax: Axes | None = None):
+    """Draw the real contact area (um^2) against load (uN) on loading, for each labelled curve dict."""
+    fig, ax = _axes(ax)
+    for label, curve in curves.items():
+        loading = np.asarray(curve["branch"]) == "loading"
+        area = np.asarray(curve["contact_area"])[loading]
+        ax.plot(np.asarray(curve["force"])[loading] * 1e6, area * 1e12, "-o", ms=3, label=label)
+    ax.set_xlabel("load (µN)")
+    ax.set_ylabel("real contact area (µm²)")
+    ax.legend(fontsize="small")
+    ax.grid(True, alpha=0.3)
+    return fig, ax
+
+
+def plot_von_mises_maps(compression, indices: list[int], *, depth: float = 0.0) -> tuple[Figure, np.ndarray]:
+    """Draw von Mises maps of an island compression at the chosen steps (Figs. 8-9), one panel each.
+
+    Parameters
+    ----------
+    compression : IslandCompression
+        From :func:`roughcontact.models.thin_film_island.compress_island`.
+    indices : list of int
+        Steps to draw (e.g. those at 0, 200, ..., 1000 uN).
+    depth : float
+        Depth of the plane [m] (0: the surface, as the paper's maps).
+
+    Returns
+    -------
+    (Figure, ndarray of Axes)
+    """
+    columns = min(3, len(indices))
+    rows = -(-len(indices) // columns)
+    fig = Figure(figsize=(4.2 * columns, 3.6 * rows), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(rows, columns)).ravel()
+    for ax, index in zip(axes, indices, strict=False):
+        plot_von_mises(compression.stress(index, depths=[depth]), 0, ax)
+        force = compression.steps[index].force
+        ax.set_title(f"{compression.branch[index]}, W = {force * 1e6:.0f} µN")
+    for ax in axes[len(indices) :]:
+        ax.set_visible(False)
+    return fig, axes
