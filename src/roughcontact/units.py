@@ -28,6 +28,7 @@ DIMENSIONS: dict[str, Dimension] = {
     "length": (1, 0, 0),
     "area": (2, 0, 0),
     "inverse_length": (-1, 0, 0),
+    "inverse_area": (-2, 0, 0),  # spectral moment m4 (1/m^2)
     "time": (0, 0, 1),
     "frequency": (0, 0, -1),
     "velocity": (1, 0, -1),
@@ -232,6 +233,7 @@ _EXAMPLES = {
     "surface_energy": "72 mJ/m^2",
     "stiffness": "35.5 N/m",
     "inverse_length": "1 1/um",
+    "inverse_area": "0.0171 1/um^2",
     "frequency": "1 Hz",
 }
 
