@@ -354,14 +354,15 @@ class WinklerLJModel:
             )
         low = 0.0
         step = self.epsilon
+        reach = 100.0 * max(self.topography.size)
         while residual(low) > 0:  # only when adhesion carries load (adhesion_sign="printed")
             low, step = low - step, 2.0 * step
-            if step > 1e15 * self.epsilon:
+            if -low > reach:
                 raise InputError(
                     "load",
-                    f"adhesion alone exceeds {load:.4g} N at every separation up to "
-                    f"{step:.3g} m: the surface never reaches a balance with the flat.",
-                    "use adhesion_sign='attractive' or a larger load.",
+                    f"adhesion alone carries {load:.4g} N with the flat more than {reach:.3g} m "
+                    "(100 scan sizes) away: the surface never reaches the flat.",
+                    "use the default adhesion_sign='attractive' (adhesion adds to the load) or a larger load.",
                 )
         tolerance = 4.0 * np.finfo(float).eps * self.layer_thickness
         rtol = 4.0 * np.finfo(float).eps
