@@ -362,7 +362,7 @@ class WinklerLJModel:
                     "load",
                     f"adhesion alone carries {load:.4g} N with the flat more than {reach:.3g} m "
                     "(100 scan sizes) away: the surface never reaches the flat.",
-                    "use the default adhesion_sign='attractive' (adhesion adds to the load) or a larger load.",
+                    "use adhesion_sign='attractive' (adhesion adds to the load) or a larger load.",
                 )
         tolerance = 4.0 * np.finfo(float).eps * self.layer_thickness
         rtol = 4.0 * np.finfo(float).eps
@@ -446,6 +446,15 @@ class WinklerLJModel:
 
         lateral = np.zeros(n)
         active = mechanical | adhesive
+        collapsed = int(np.count_nonzero(active & (height <= 0)))
+        if collapsed:
+            which = "cuboid_height" if np.any(active & (cuboid <= 0)) else "mechanical_height"
+            raise InputError(
+                f"readings.{which}",
+                f"the printed height (z_i + dz_i from the lowest point, or d) is not positive "
+                f"for {collapsed} springs at {load:.4g} N: they are compressed below the lowest point.",
+                "use the default reading (the layer height h + dz_i) or a smaller load.",
+            )
         lateral[active] = self._lateral_force(energy[active], height[active], cuboid[active])
 
         area = self._balance_area
