@@ -1,4 +1,4 @@
-"""Command line: ``roughcontact inspect | plot | contact | demo | friction | friction-compare``.
+"""Command line: ``roughcontact inspect | plot | contact | demo | friction | friction-compare | asperity``.
 
 The edges of the program live here: unit strings from the user are converted once
 (through :mod:`roughcontact.units`), errors are turned into one readable line and an exit
@@ -56,10 +56,15 @@ def _channel_argument(text: str) -> int | str:
     return int(text) if text.isdigit() else text
 
 
-def _read_options() -> argparse.ArgumentParser:
+def _read_options(file_required: bool = True) -> argparse.ArgumentParser:
     parent = argparse.ArgumentParser(add_help=False)
     group = parent.add_argument_group("reading the file")
-    group.add_argument("file", type=Path, help="instrument file (any format SurfaceTopography reads) or .nc")
+    group.add_argument(
+        "file",
+        type=Path,
+        nargs=None if file_required else "?",
+        help="instrument file (any format SurfaceTopography reads) or .nc",
+    )
     group.add_argument(
         "--channel", type=_channel_argument, help="channel name or index (default: the file's)"
     )
@@ -322,6 +327,9 @@ def build_parser() -> argparse.ArgumentParser:
     from .cli_friction import add_friction_commands
 
     add_friction_commands(commands)
+    from .cli_asperity import add_asperity_commands
+
+    add_asperity_commands(commands)
     return parser
 
 

@@ -1,0 +1,153 @@
+"""roughcontact asperity: paper 002's table, moments with units, curves and figures, clear errors."""
+
+import csv
+import json
+
+import pytest
+
+from roughcontact.cli import EXIT_INPUT_ERROR, main
+
+
+def run(capsys, *argv):
+    status = main([str(a) for a in argv])
+    captured = capsys.readouterr()
+    return status, captured.out, captured.err
+
+
+def test_paper002_json_reproduces_section_iv(capsys):
+    status, out, _ = run(capsys, "asperity", "--paper002", "--json", "--steps", "10")
+    assert status == 0
+    document = json.loads(out)
+    parameters = document["parameters"]
+    assert parameters["summit_radius"] == pytest.approx(5.08e-6, rel=5e-3, abs=0)
+    assert parameters["critical_interference"] == pytest.approx(0.0125e-6, rel=5e-3, abs=0)
+    assert parameters["plasticity_index"] == pytest.approx(1.86, rel=5e-3, abs=0)
+    rows = {row["quantity"]: row for row in document["paper002_comparison"]}
+    assert rows["contact_modulus"]["ours_eq7_printed"] == pytest.approx(9.717e9, rel=1e-3, abs=0)
+    # the statistical curve ran at the paper's 1000 uN peak, zero at 25 uN
+    assert document["statistical"]["peak_interference"] > document["statistical"]["residual_interference"] > 0
+
+
+def test_text_table_names_paper_and_both_readings(capsys):
+    status, out, _ = run(capsys, "asperity", "--paper002", "--steps", "5")
+    assert status == 0
+    assert "paper vs ours" in out
+    assert "8.31 GPa" in out and "7.973 GPa" in out and "9.717 GPa" in out
+
+
+def test_moments_with_units_equal_the_paper_run(capsys):
+    moments = ["0.00213279 um^2", "0.00230023", "0.0171036 1/um^2"]
+    status, out, _ = run(
+        capsys,
+        "asperity",
+        "--moments",
+        *moments,
+        "--material",
+        "SU-8",
+        "--counter",
+        "diamond flat tip",
+        "--json",
+    )
+    assert status == 0
+    parameters = json.loads(out)["parameters"]
+    assert parameters["m4"] == pytest.approx(0.0171036e12, rel=1e-12, abs=0)
+    assert parameters["summit_height_std"] == pytest.approx(0.0431e-6, rel=5e-3, abs=0)
+    assert "statistical" not in json.loads(out)  # no --max-force: parameters only
+
+
+def test_output_folder_gets_curves_netcdf_and_figures(capsys, tmp_path):
+    status, out, err = run(
+        capsys,
+        "asperity",
+        "--paper002",
+        "--bem",
+        "--grid",
+        "24",
+        "--steps",
+        "6",
+        "-o",
+        tmp_path,
+        "--dpi",
+        "40",
+    )
+    assert status == 0, err
+    for name in (
+        "load_unload.csv",
+        "bem_island.csv",
+        "load_unload.nc",
+        "fig7_load_interference.png",
+        "contact_area.png",
+        "von_mises.png",
+        "asperity.json",
+    ):
+        assert (tmp_path / name).stat().st_size > 0
+    with open(tmp_path / "load_unload.csv") as handle:
+        rows = list(csv.DictReader(handle))
+    assert len(rows) == 11  # 6 loading + 5 unloading
+    assert float(rows[0]["force_N"]) == pytest.approx(25e-6, rel=1e-8, abs=0)
+    assert float(rows[5]["force_N"]) == pytest.approx(1e-3, rel=1e-8, abs=0)
+
+
+def test_measured_curve_csv_is_drawn(capsys, tmp_path):
+    measured = tmp_path / "measured.csv"
+    measured.write_text("interference_m,force_N\n0,25e-6\n2e-8,3e-4\n5e-8,1e-3\n")
+    status, _, err = run(
+        capsys, "asperity", "--paper002", "--steps", "4", "--measured", measured, "-o", tmp_path
+    )
+    assert status == 0, err
+    assert (tmp_path / "fig7_load_interference.png").exists()
+
+
+def test_bad_input_gives_one_clear_line(capsys):
+    # bandwidth alpha = 0.5 < 0.8968
+    status, _, err = run(capsys, "asperity", "--moments", "1e-16", "1e-2", "0.5e12", "--material", "SU-8")
+    assert status == EXIT_INPUT_ERROR
+    assert "m2" in err and "0.8968" in err
+    status, _, err = run(capsys, "asperity", "--material", "SU-8")
+    assert status == EXIT_INPUT_ERROR and "FILE" in err
+    status, _, err = run(capsys, "asperity", "--paper002", "--distribution", "measured")
+    assert status == EXIT_INPUT_ERROR and "--distribution" in err
+    status, _, err = run(capsys, "asperity", "--paper002", "--max-force", "10 N")
+    assert status == EXIT_INPUT_ERROR and "110" in err
+    status, _, err = run(
+        capsys,
+        "asperity",
+        "--paper002",
+        "--material-youngs-modulus",
+        "7 GPa",
+        "--material-poissons-ratio",
+        "0.6",
+    )
+    assert status == EXIT_INPUT_ERROR and "poissons_ratio" in err
+    status, _, err = run(
+        capsys, "asperity", "--moments", "1 um", "0.002", "0.017 1/um^2", "--material", "SU-8"
+    )
+    assert status == EXIT_INPUT_ERROR and "--moments m0" in err
+
+
+def test_file_with_measured_summit_heights(capsys, shared_topographies):
+    argv = [
+        "asperity",
+        shared_topographies / "top-1.top",
+        "--material",
+        "SU-8",
+        "--json",
+        "--max-force",
+        "10 uN",
+    ]
+    status, out, err = run(
+        capsys,
+        *argv,
+        "--area",
+        "10 um x 10 um",
+        "--distribution",
+        "measured",
+        "--reference-force",
+        "0.1 uN",
+        "--steps",
+        "5",
+    )
+    assert status == 0, err
+    document = json.loads(out)
+    assert document["parameters"]["summit_radius"] > 0
+    assert document["statistical"]["peak_interference"] > 0
