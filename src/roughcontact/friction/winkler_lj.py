@@ -272,8 +272,9 @@ class WinklerLJModel:
     shear_modulus: float
     work_of_adhesion: float
     _depth: np.ndarray = field(repr=False)  # z_max - z, ascending
-    _order: np.ndarray = field(repr=False)
     _cumulative_depth: np.ndarray = field(repr=False)  # [0, d0, d0 + d1, ...]
+    _compression_at_depth: np.ndarray = field(repr=False)  # j d_j - sum_{i<j} d_i, summed compression at d_j
+    _rank: np.ndarray = field(repr=False)  # grid-shaped position of each pixel in the sorted order
 
     # --- constants --------------------------------------------------------------------------
     @property
@@ -352,6 +353,11 @@ class WinklerLJModel:
                 "lower the load, or check the layer thickness and the moduli (the linear Winkler layer "
                 "is meaningless at such strains).",
             )
+        tolerance = 4.0 * np.finfo(float).eps * self.layer_thickness
+        rtol = 4.0 * np.finfo(float).eps
+        bracket = self._local_bracket(residual, load)
+        if bracket is not None:
+            return optimize.brentq(residual, *bracket, xtol=tolerance, rtol=rtol, maxiter=500)
         low = 0.0
         step = self.epsilon
         reach = 100.0 * max(self.topography.size)
@@ -364,23 +370,50 @@ class WinklerLJModel:
                     "(100 scan sizes) away: the surface never reaches the flat.",
                     "use adhesion_sign='attractive' (adhesion adds to the load) or a larger load.",
                 )
-        tolerance = 4.0 * np.finfo(float).eps * self.layer_thickness
-        rtol = 4.0 * np.finfo(float).eps
         return optimize.brentq(residual, low, high, xtol=tolerance, rtol=rtol, maxiter=500)
 
+    def _overlap_for(self, force: float) -> float:
+        """Apex overlap at which the springs alone carry ``force`` (inverse of the piecewise-linear sum)."""
+        target = force / (self._balance_area * self.spring_stiffness)  # summed compression [m]
+        count = max(int(np.searchsorted(self._compression_at_depth, target, side="left")), 1)
+        return (target + self._cumulative_depth[count]) / count
+
+    def _local_bracket(self, residual: Callable[[float], float], load: float) -> tuple[float, float] | None:
+        """Bracket the root near the springs-only solution, corrected once for adhesion; None if not found.
+
+        Two residual evaluations usually bracket the root within the change of the adhesive term,
+        so Brent's method needs a few more instead of some twenty from [0, h].
+        """
+        first = self._overlap_for(load)
+        first_residual = residual(first)  # the adhesive term at ``first``
+        second = self._overlap_for(load - first_residual)
+        second_residual = residual(second)
+        if first_residual * second_residual <= 0:
+            return (first, second) if first <= second else (second, first)
+        step = max(abs(second - first), 1e-9 * self.epsilon)
+        direction = 1.0 if second_residual < 0 else -1.0
+        for _ in range(60):
+            trial = second + direction * step
+            if not 0.0 <= trial <= self.layer_thickness:
+                return None
+            if residual(trial) * second_residual <= 0:
+                return (second, trial) if second <= trial else (trial, second)
+            second, step = trial, 4.0 * step
+        return None
+
     # --- eqs. 8-17 ----------------------------------------------------------------------------
-    def _shear_compliance(self, height: np.ndarray, cuboid_height: np.ndarray) -> np.ndarray:
+    def _shear_compliance(self, cuboid_height: np.ndarray) -> float | np.ndarray:
         """Return ds / (Q H) [1/N]: 1 / (G S) for simple shear, 1 / (2 C G S) for eq. 12 (C from eq. 10)."""
         base = 1.0 / (self.shear_modulus * self.spring_area)
         if self.readings.shear == "simple_shear":
-            return np.full_like(height, base)
+            return base
         tangent = cuboid_height / self.topography.spacing[0]
         return base * (tangent * tangent + 1.0) / (2.0 * tangent)
 
     def _lateral_force(self, energy: np.ndarray, height: np.ndarray, cuboid_height: np.ndarray) -> np.ndarray:
         """Q = sqrt(2 W / (H c)) from W = Q ds / 2 and ds = c Q H (eqs. 9, 12, 13, 15, 17) [N]."""
         work = energy * (self.spring_area if self.readings.energy_area == "times_area" else 1.0)
-        return np.sqrt(2.0 * work / (height * self._shear_compliance(height, cuboid_height)))
+        return np.sqrt(2.0 * work / (height * self._shear_compliance(cuboid_height)))
 
     def solve(self, load: float) -> WinklerLJResult:
         """Solve eq. 2 for the separation at ``load`` and return the friction (eqs. 8-17).
@@ -407,77 +440,75 @@ class WinklerLJModel:
                 "give a compressive load > 0 (mu = F / N); use net_normal_force() for tensile states.",
             )
         approach = self._solve_approach(load)
-        mechanical_count, within = self._split(approach)
-        n = self._depth.size
-        depth = self._depth
+        count, within = self._split(approach)  # sorted order: [0, count) mechanical, [count, within) adhesive
+        n, depth = self._depth.size, self._depth
         stiffness, eps, gamma = self.spring_stiffness, self.epsilon, self.work_of_adhesion
-
-        gap = depth + (self._wall - approach)
-        mechanical = np.arange(n) < mechanical_count
-        adhesive = ~mechanical & (np.arange(n) < within)
-        attraction = np.where(adhesive, self._attraction(np.where(adhesive, gap, eps)), 0.0)
-        compression = np.where(mechanical, approach - depth, 0.0)
-        extension = attraction / stiffness - compression  # eq. 8 for adhesive springs
-
-        # cuboid height (eqs. 10, 15) and the height in eq. 17
-        if self.readings.cuboid_height == "layer":
-            cuboid = self.layer_thickness + extension
-        else:
-            cuboid = (depth[-1] - depth) + extension
-        height = cuboid.copy()
         separation = depth[-1] + self._wall - approach
+
+        compression = approach - depth[:count]
+        adhesive_gap = depth[count:within] + (self._wall - approach)
+        attraction = self._attraction(adhesive_gap)
+        extension = np.zeros(n)
+        extension[:count] = -compression
+        extension[count:within] = attraction / stiffness  # eq. 8
+
+        # cuboid height (eqs. 10, 15) and the height in eq. 17, for the active springs [0, within)
+        if self.readings.cuboid_height == "layer":
+            cuboid = self.layer_thickness + extension[:within]
+        else:
+            cuboid = (depth[-1] - depth[:within]) + extension[:within]
+        height = cuboid.copy()
         if self.readings.mechanical_height == "printed_separation":
-            height[mechanical] = separation
+            height[:count] = separation
 
         # energies to break the bonds (eqs. 14, 16)
-        bond_distance = np.maximum(gap - extension, eps)  # l_ia, at least the wall of eq. 7
-        energy = np.where(adhesive, lj.separation_energy(bond_distance, gamma, eps), 0.0)
-        pulled_in = int(np.count_nonzero(adhesive & (gap - extension <= eps)))
-        stress_mech = stiffness * compression[mechanical]
-        held_at = lj.repulsive_distance(stress_mech, gamma, eps)  # l_im
-        signed = lj.separation_energy(held_at, gamma, eps)
+        energy = np.empty(within)
+        bond_distance = adhesive_gap - extension[count:within]  # l_ia
+        pulled_in = int(np.count_nonzero(bond_distance <= eps))
+        energy[count:] = lj.separation_energy(np.maximum(bond_distance, eps), gamma, eps)
+        stress_mech = stiffness * compression
+        signed = lj.separation_energy(lj.repulsive_distance(stress_mech, gamma, eps), gamma, eps)  # e(l_im)
         if self.readings.mechanical_energy == "two_stage":
-            energy_mech = 2.0 * gamma - signed
+            energy[:count] = 2.0 * gamma - signed
+            negative = 0
         else:
-            energy_mech = np.maximum(signed, 0.0)
-        signed_reading = self.readings.mechanical_energy == "eq16_signed"
-        negative = int(np.count_nonzero(signed < 0)) if signed_reading else 0
-        energy[mechanical] = energy_mech
+            energy[:count] = np.maximum(signed, 0.0)
+            negative = int(np.count_nonzero(signed < 0))
 
-        lateral = np.zeros(n)
-        active = mechanical | adhesive
-        collapsed = int(np.count_nonzero(active & (height <= 0)))
+        collapsed = int(np.count_nonzero(height <= 0))
         if collapsed:
-            which = "cuboid_height" if np.any(active & (cuboid <= 0)) else "mechanical_height"
+            which = "cuboid_height" if np.any(cuboid <= 0) else "mechanical_height"
             raise InputError(
                 f"readings.{which}",
                 f"the printed height (z_i + dz_i from the lowest point, or d) is not positive "
                 f"for {collapsed} springs at {load:.4g} N: they are compressed below the lowest point.",
                 "use the default reading (the layer height h + dz_i) or a smaller load.",
             )
-        lateral[active] = self._lateral_force(energy[active], height[active], cuboid[active])
+        lateral = np.zeros(n)
+        lateral[:within] = self._lateral_force(energy, height, cuboid)
+        stress = np.zeros(n)
+        stress[:count] = stress_mech
+        stress[count:within] = -attraction
 
         area = self._balance_area
         mechanical_force = area * float(stress_mech.sum())
         adhesive_force = area * float(attraction.sum())
         balance = mechanical_force + self._adhesion_sign * adhesive_force - load
         scale = max(mechanical_force, adhesive_force, load)
-        adhesive_friction = float(lateral[adhesive].sum())
-        mechanical_friction = float(lateral[mechanical].sum())
-        stress = np.where(mechanical, stiffness * compression, -attraction)
+        mechanical_friction = float(lateral[:count].sum())
+        adhesive_friction = float(lateral[count:within].sum())
+        rank = self._rank
 
         def to_grid(values: np.ndarray) -> np.ndarray:
-            grid = np.empty(n, dtype=values.dtype)
-            grid[self._order] = values
-            return grid.reshape(self.topography.shape)
+            return values[rank]
 
         return WinklerLJResult(
             load=load,
             separation=float(separation),
             approach=float(approach),
-            mechanical=to_grid(mechanical),
-            adhesive=to_grid(adhesive),
-            gap=to_grid(gap),
+            mechanical=rank < count,
+            adhesive=(rank >= count) & (rank < within),
+            gap=depth[rank] + (self._wall - approach),
             stress=to_grid(stress),
             extension=to_grid(extension),
             lateral_force=to_grid(lateral),
@@ -684,6 +715,9 @@ def winkler_lj_model(
     heights = surface.heights.ravel()
     order = np.argsort(-heights, kind="stable")
     depth = heights.max() - heights[order]
+    cumulative = np.concatenate(([0.0], np.cumsum(depth)))
+    rank = np.empty(depth.size, dtype=np.intp)
+    rank[order] = np.arange(depth.size)
     return WinklerLJModel(
         topography=surface,
         readings=readings,
@@ -694,8 +728,9 @@ def winkler_lj_model(
         shear_modulus=modulus / (2.0 * (1.0 + shear_nu)),
         work_of_adhesion=work_of_adhesion(gamma_1, gamma_2, reading=readings.work_of_adhesion),
         _depth=depth,
-        _order=order,
-        _cumulative_depth=np.concatenate(([0.0], np.cumsum(depth))),
+        _cumulative_depth=cumulative,
+        _compression_at_depth=np.arange(depth.size) * depth - cumulative[:-1],
+        _rank=rank.reshape(surface.shape),
     )
 
 
