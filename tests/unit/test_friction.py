@@ -50,7 +50,12 @@ def test_readings_defaults_choices_and_strings():
 
 @pytest.mark.parametrize(
     "items, field",
-    [(["contact=glued"], "readings.contact"), (["colour=red"], "--reading"), (["contact"], "--reading")],
+    [
+        (["contact=glued"], "readings.contact"),
+        (["colour=red"], "--reading"),
+        (["contact"], "--reading"),
+        (["adhesive_cutoff=far"], "--reading"),
+    ],
 )
 def test_readings_refuse_unknown_values(items, field):
     with pytest.raises(InputError) as error:

@@ -158,7 +158,17 @@ class Readings:
                 raise InputError(
                     "--reading", f"cannot read {item!r}.", f"write NAME=VALUE with NAME one of {known}."
                 )
-            values[name] = float(value) if name == "adhesive_cutoff" else value.strip()
+            if name != "adhesive_cutoff":
+                values[name] = value.strip()
+                continue
+            try:
+                values[name] = float(value)
+            except ValueError:
+                raise InputError(
+                    "--reading",
+                    f"adhesive_cutoff {value!r} is not a number.",
+                    "give metres, e.g. 2e-8, or inf.",
+                ) from None
         return cls(**values)
 
     def changed(self) -> dict[str, object]:

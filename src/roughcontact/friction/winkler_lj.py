@@ -586,6 +586,11 @@ class WinklerLJModel:
         float or None
             The crossover load, or None when the sign of the difference does not change in the
             bracket (mechanical friction dominates already at ``low``, or never up to ``high``).
+
+        Raises
+        ------
+        InputError
+            When a printed reading refuses a state inside the bracket (see :meth:`solve`).
         """
         capacity = self.load_capacity()
         low = 1e-6 * capacity if low is None else float(low)
