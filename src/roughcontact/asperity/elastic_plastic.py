@@ -266,7 +266,8 @@ def kogut_etsion_area(w_star):
 
     References
     ----------
-    Kogut and Etsion (2002), eqs. 13-14. doi:10.1115/1.1490373
+    Kogut and Etsion (2002), eqs. 13-14. doi:10.1115/1.1490373 (coefficients cross-checked against an
+    independent implementation, ``docs/asperity.md``).
     """
     w = _w_star(w_star, upper=KOGUT_ETSION_MAX)
     area = np.where(w <= 1.0, w, np.where(w <= 6.0, 0.93 * w**1.136, 0.94 * w**1.146))
