@@ -15,6 +15,7 @@ from roughcontact.asperity import (
     jackson_green_load,
     kogut_etsion_area,
     kogut_etsion_load,
+    measured_summits,
     paper002_eq10_load,
     residual_interference_ratio,
     statistical_load_unload,
@@ -23,7 +24,8 @@ from roughcontact.asperity import (
 )
 from roughcontact.asperity.elastic_plastic import jackson_green_critical_interference
 from roughcontact.models import paper002
-from roughcontact.topography.statistics import mccool_parameters
+from roughcontact.topography.generate import gaussian_random
+from roughcontact.topography.statistics import mccool_parameters, summits
 
 SU8 = dict(hardness=0.462e9, poissons_ratio=0.22, contact_modulus=7.9727e9, radius=5.08e-6)
 JG = dict(yield_strength=0.165e9, poissons_ratio=0.22, contact_modulus=7.9727e9, radius=5.08e-6)
@@ -198,3 +200,21 @@ def test_paper002_statistical_run_conserves_its_peak_and_starts_at_the_reference
     a_un, f_un = curve["approach"][~loading][:-1], curve["force"][~loading][:-1]
     assert np.all(f_un <= np.interp(a_un, curve["approach"][loading], curve["force"][loading]))
     assert 0 < curve["plastic_fraction"][loading][-1] < 1
+
+
+def test_measured_summit_distribution_counts_exactly():
+    surface = gaussian_random((128, 128), 20e-6, rms_height=50e-9, correlation_length=1e-6, seed=4)
+    measured = measured_summits(surface)
+    heights = summits(surface).heights
+    assert measured.heights.size == heights.size
+    assert measured.summit_height_std == pytest.approx(heights.std(), rel=1e-12, abs=0)
+    assert abs(measured.heights.mean()) < 1e-12 * heights.std()
+    count = measured.summit_density * 1e-10
+    gw = greenwood_williamson([-1.0, 0.0, 1e-3], measured, contact_modulus=8e9, nominal_area=1e-10)
+    # far below every summit all touch; far above none; at the mean plane the measured fraction
+    expected = np.mean(measured.heights > 0.0)
+    np.testing.assert_allclose(gw.number_of_contacts, [count, expected * count, 0.0], rtol=1e-12, atol=0)
+    mean_overlap = np.mean(np.maximum(measured.heights, 0.0))
+    assert gw.contact_area[1] == pytest.approx(
+        math.pi * count * measured.summit_radius * mean_overlap, rel=1e-12, abs=0
+    )
