@@ -56,4 +56,9 @@ def test_springs_are_never_both_and_totals_are_finite(
         result.separation,
     ]
     assert np.all(np.isfinite(totals))
-    assert result.residual <= 1e-9
+    # The balance holds to round-off in the approach: within brentq's tolerance of the returned value
+    # the residual changes sign (a steep force law against soft springs can make 1 ulp worth 1e-7 N/N).
+    step = 8 * np.finfo(float).eps * (layer + abs(result.approach))
+    below = model.net_normal_force(result.approach - step) - load
+    above = model.net_normal_force(result.approach + step) - load
+    assert result.residual <= 1e-9 or below * above <= 0
