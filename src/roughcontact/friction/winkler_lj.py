@@ -475,7 +475,7 @@ class WinklerLJModel:
             energy[:count] = np.maximum(signed, 0.0)
             negative = int(np.count_nonzero(signed < 0))
 
-        collapsed = int(np.count_nonzero(height <= 0))
+        collapsed = int(np.count_nonzero((height <= 0) | (cuboid <= 0)))
         if collapsed:
             which = "cuboid_height" if np.any(cuboid <= 0) else "mechanical_height"
             raise InputError(
