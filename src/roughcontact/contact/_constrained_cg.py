@@ -85,11 +85,11 @@ def _dot(a: np.ndarray, b: np.ndarray) -> float:
     return float(np.dot(a.ravel(), b.ravel()))
 
 
-def _residual(pressure, gap, height_scale, cap) -> float:
-    elastic = pressure > 0 if cap is None else (pressure > 0) & (pressure < cap)
-    elastic_pressure = np.where(elastic, pressure, 0.0)
-    total = elastic_pressure.sum()
-    weighted = _dot(elastic_pressure, np.abs(gap)) / total if total > 0 else 0.0
+def _residual(pressure, gap, elastic, height_scale, cap, scratch) -> float:
+    """Return the scale-free residual of the module docstring; ``elastic`` is the mask 0 < p < p_max."""
+    total = float(np.sum(pressure, where=elastic))
+    elastic_gap = np.multiply(np.abs(gap, out=scratch), elastic, out=scratch)
+    weighted = _dot(pressure, elastic_gap) / total if total > 0 else 0.0
     # Overlap anywhere below the cap (at the cap it is plastic flow, not an error).
     below = pressure < cap if cap is not None else True
     overlap = -float(np.min(gap, where=below, initial=0.0))
@@ -97,6 +97,12 @@ def _residual(pressure, gap, height_scale, cap) -> float:
     if cap is not None:
         worst = max(worst, float(np.max(gap, where=pressure >= cap, initial=0.0)))
     return worst / height_scale if height_scale > 0 else 0.0
+
+
+def _std(values: np.ndarray) -> float:
+    """Return the standard deviation from two reductions (a height scale: a few digits suffice)."""
+    mean = float(values.sum()) / values.size
+    return float(np.sqrt(max(_dot(values, values) / values.size - mean * mean, 0.0)))
 
 
 def solve(
@@ -169,21 +175,25 @@ def solve(
         target = force / pixel_area  # target sum of pixel pressures
         if p.sum() <= 0:
             p = np.full(h0.shape, target / h0.size)
-        p = _rescale(p, target)
+        p = p * _rescale_factor(p, target)
     height_scale = _rms(h0)
-    t = np.zeros_like(h0)
+    # Work arrays, reused every iteration (fresh large arrays cost page faults on every pass).
+    t, g, scratch = np.zeros_like(h0), np.empty_like(h0), np.empty_like(h0)
+    free, mask = np.empty(h0.shape, dtype=bool), np.empty(h0.shape, dtype=bool)
     g_norm_old = 1.0
     conjugate = False
     delta = approach
     for iteration in range(max_iterations + 1):
         u = compliance(p)
-        free = p > 0 if cap is None else (p > 0) & (p < cap)
+        np.greater(p, 0.0, out=free)
+        if cap is not None:
+            free &= np.less(p, cap, out=mask)
         free_count = np.count_nonzero(free)
-        g = np.add(u, h0)
+        np.add(u, h0, out=g)
         if load_control:
             delta = float(np.sum(g, where=free) / free_count) if free_count else float(np.min(g))
         g -= delta
-        residual = _residual(p, g, height_scale + float(u.std()), cap)
+        residual = _residual(p, g, free, height_scale + _std(u), cap, scratch)
         if residual <= tolerance:
             return EngineResult(p, u, g, float(delta), iteration, residual)
         if iteration == max_iterations:
@@ -191,7 +201,7 @@ def solve(
         if cap is not None:
             free |= (p >= cap) & (g > 0)  # capped points that want to unload take part in the step
             free_count = np.count_nonzero(free)
-        g_free = np.where(free, g, 0.0)
+        g_free = np.multiply(g, free, out=scratch)
         z = g_free if preconditioner is None else _preconditioned(preconditioner, g_free, free, load_control)
         g_norm = _dot(g_free, z)
         if conjugate:
@@ -199,23 +209,24 @@ def solve(
             t += z
             t *= free
         else:
-            t = z
+            np.copyto(t, z)
         g_norm_old = g_norm
         r = compliance(t)
-        if load_control and free_count:
-            r -= np.sum(r, where=free) / free_count
         rt = _dot(r, t)  # t = 0 outside the free set
+        if load_control and free_count:  # r with its free-set mean removed
+            rt -= float(np.sum(r, where=free)) / free_count * float(t.sum())
         tau = _dot(g, t) / rt if rt > 0 else 0.0
-        p = p - tau * t
+        p -= np.multiply(t, tau, out=scratch)
         np.clip(p, 0.0, upper, out=p)
-        entering = (p <= 0) & (g < 0)
+        entering = np.less_equal(p, 0.0, out=mask)
+        entering &= g < 0
         conjugate = not entering.any()
         if not conjugate:
             step = tau if tau > 0 else 1.0 / stiffness  # Jacobi step when the free set is empty
-            p = np.where(entering, p - step * g, p)
+            p -= step * np.multiply(g, entering, out=scratch)
             np.clip(p, 0.0, upper, out=p)
         if load_control:
-            p = _rescale(p, target)
+            p *= _rescale_factor(p, target)
     raise ConvergenceError(solver, residual, max_iterations, tolerance)
 
 
@@ -224,11 +235,11 @@ def _preconditioned(preconditioner, g_free, free, load_control) -> np.ndarray:
     z = preconditioner(g_free)
     z *= free
     if load_control:  # keep the step inside the force constraint: zero sum over the free set
-        z -= free * (z.sum() / np.count_nonzero(free))
+        np.subtract(z, z.sum() / np.count_nonzero(free), out=z, where=free)
     return z
 
 
-def _rescale(p: np.ndarray, target: float) -> np.ndarray:
-    """Scale p so that sum(p) = target."""
-    total = p.sum()
-    return p * (target / total) if total > 0 else p
+def _rescale_factor(p: np.ndarray, target: float) -> float:
+    """Return the factor that scales p to sum(p) = target (1 for p = 0)."""
+    total = float(p.sum())
+    return target / total if total > 0 else 1.0
