@@ -191,7 +191,8 @@ def _plot(args: argparse.Namespace) -> int:
     return 0
 
 
-def _material(args: argparse.Namespace, prefix: str):
+def _material(args: argparse.Namespace, prefix: str, *, required: bool = False):
+    """Return the material of ``--PREFIX`` (library name) or ``--PREFIX-youngs-modulus``, or None."""
     from .materials import Material, get_material
 
     name = getattr(args, prefix)
@@ -201,6 +202,10 @@ def _material(args: argparse.Namespace, prefix: str):
     if name is not None:
         return get_material(name)
     if modulus is None:
+        if required:
+            raise InputError(
+                f"--{prefix}", "no material given.", f"pass --{prefix} NAME or --{prefix}-youngs-modulus."
+            )
         return None
     ratio = getattr(args, f"{prefix}_poissons_ratio")
     if ratio is None:
@@ -217,11 +222,7 @@ def _contact(args: argparse.Namespace) -> int:
     from .plotting import plot_contact_overview
     from .units import quantity
 
-    material = _material(args, "material")
-    if material is None:
-        raise InputError(
-            "--material", "no material given.", "pass --material NAME or --material-youngs-modulus."
-        )
+    material = _material(args, "material", required=True)
     counter = _material(args, "counter")
     targets = {
         "mean_pressure": None

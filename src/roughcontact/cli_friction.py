@@ -11,7 +11,6 @@ import json
 from pathlib import Path
 
 from .cli import _json_safe, _material, _read, _read_options, _size_argument
-from .errors import InputError
 from .units import format_si, quantity
 
 _UNITS = {
@@ -42,7 +41,7 @@ def _model_options(args: argparse.Namespace) -> dict:
     if args.relaxed_modulus is not None:
         relaxed = quantity(args.relaxed_modulus, "pressure", field="--relaxed-modulus")
         tau = quantity(args.relaxation_time, "time", field="--relaxation-time")
-        material = _material(args, "material")
+        material = _material(args, "material", required=True)
         options["relaxation"] = PronySeries(relaxed, (material.youngs_modulus - relaxed,), (tau,))
         options["hold_time"] = quantity(args.hold_time, "time", field="--hold-time")
     return options
@@ -60,11 +59,7 @@ def _friction(args: argparse.Namespace) -> int:
     from .friction import winkler_lj_model
     from .topography.io import read_topography
 
-    material = _material(args, "material")
-    if material is None:
-        raise InputError(
-            "--material", "no material given.", "pass --material NAME or --material-youngs-modulus."
-        )
+    material = _material(args, "material", required=True)
     counter = _material(args, "counter")
     counter_surface = None
     if args.counter_file is not None:
