@@ -42,8 +42,9 @@ rms of u about its mean (a height scale of the problem). The first term is the p
 mean gap over the elastic contact (zero at the solution), the others the worst violations of
 the gap conditions: overlap anywhere below the cap (so a point with a vanishing pressure cannot
 hide an overlap), and an open gap under a capped pressure. Each iteration costs two
-FFT pairs (three preconditioned); the returned pressure and gap are from the same iterate
-(never a mixed state).
+FFT pairs (three preconditioned) and five fused elementwise passes
+(:mod:`roughcontact.contact._cg_kernels`); the returned pressure and gap are from the same
+iterate (never a mixed state).
 
 References
 ----------
@@ -63,6 +64,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import ConvergenceError
+from . import _cg_kernels as kernels
 
 
 @dataclass(frozen=True)
@@ -79,30 +81,6 @@ class EngineResult:
 
 def _rms(values: np.ndarray) -> float:
     return float(np.sqrt(np.mean((values - values.mean()) ** 2)))
-
-
-def _dot(a: np.ndarray, b: np.ndarray) -> float:
-    return float(np.dot(a.ravel(), b.ravel()))
-
-
-def _residual(pressure, gap, elastic, height_scale, cap, scratch) -> float:
-    """Return the scale-free residual of the module docstring; ``elastic`` is the mask 0 < p < p_max."""
-    total = float(np.sum(pressure, where=elastic))
-    elastic_gap = np.multiply(np.abs(gap, out=scratch), elastic, out=scratch)
-    weighted = _dot(pressure, elastic_gap) / total if total > 0 else 0.0
-    # Overlap anywhere below the cap (at the cap it is plastic flow, not an error).
-    below = pressure < cap if cap is not None else True
-    overlap = -float(np.min(gap, where=below, initial=0.0))
-    worst = max(weighted, overlap)
-    if cap is not None:
-        worst = max(worst, float(np.max(gap, where=pressure >= cap, initial=0.0)))
-    return worst / height_scale if height_scale > 0 else 0.0
-
-
-def _std(values: np.ndarray) -> float:
-    """Return the standard deviation from two reductions (a height scale: a few digits suffice)."""
-    mean = float(values.sum()) / values.size
-    return float(np.sqrt(max(_dot(values, values) / values.size - mean * mean, 0.0)))
 
 
 def solve(
@@ -177,66 +155,60 @@ def solve(
             p = np.full(h0.shape, target / h0.size)
         p = p * _rescale_factor(p, target)
     height_scale = _rms(h0)
+    shape, h0 = h0.shape, np.ascontiguousarray(h0).ravel()
+    p = np.ascontiguousarray(p, dtype=float).ravel()
     # Work arrays, reused every iteration (fresh large arrays cost page faults on every pass).
-    t, g, scratch = np.zeros_like(h0), np.empty_like(h0), np.empty_like(h0)
-    free, mask = np.empty(h0.shape, dtype=bool), np.empty(h0.shape, dtype=bool)
+    t, g, g_free = np.zeros_like(h0), np.empty_like(h0), np.empty_like(h0)
+    free = np.empty(h0.shape, dtype=np.uint8)
     g_norm_old = 1.0
     conjugate = False
     delta = approach
     for iteration in range(max_iterations + 1):
-        u = compliance(p)
-        np.greater(p, 0.0, out=free)
-        if cap is not None:
-            free &= np.less(p, cap, out=mask)
-        free_count = np.count_nonzero(free)
-        np.add(u, h0, out=g)
+        u = _flat(compliance(p.reshape(shape)))
+        elastic_count, elastic_sum, u_sum, uu_sum = kernels.displacement_statistics(p, u, h0, upper)
         if load_control:
-            delta = float(np.sum(g, where=free) / free_count) if free_count else float(np.min(g))
-        g -= delta
-        residual = _residual(p, g, free, height_scale + _std(u), cap, scratch)
+            delta = elastic_sum / elastic_count if elastic_count else float(np.min(u + h0))
+        p_sum, pg_sum, overlap, opened, free_count, gg_sum = kernels.gap_and_residual(
+            p, u, h0, delta, upper, g, g_free, free
+        )
+        u_std = np.sqrt(max(uu_sum / u.size - (u_sum / u.size) ** 2, 0.0))
+        residual = _residual(pg_sum / p_sum if p_sum > 0 else 0.0, overlap, opened, height_scale + u_std)
         if residual <= tolerance:
-            return EngineResult(p, u, g, float(delta), iteration, residual)
+            fields = (p.reshape(shape), u.reshape(shape), g.reshape(shape))
+            return EngineResult(*fields, float(delta), iteration, residual)
         if iteration == max_iterations:
             break
-        if cap is not None:
-            free |= (p >= cap) & (g > 0)  # capped points that want to unload take part in the step
-            free_count = np.count_nonzero(free)
-        g_free = np.multiply(g, free, out=scratch)
-        z = g_free if preconditioner is None else _preconditioned(preconditioner, g_free, free, load_control)
-        g_norm = _dot(g_free, z)
-        if conjugate:
-            t *= g_norm / g_norm_old
-            t += z
-            t *= free
-        else:
-            np.copyto(t, z)
+        if preconditioner is None:
+            z, shift, g_norm = g_free, 0.0, gg_sum
+        else:  # M g restricted to the step set (Vollebregt 2014), with zero sum there under load control
+            z = _flat(preconditioner(g_free.reshape(shape)))
+            z_sum, gz_sum, g_sum = kernels.restrict_direction(z, g, free)
+            shift = z_sum / free_count if load_control and free_count else 0.0
+            g_norm = gz_sum - shift * g_sum
+        kernels.update_direction(t, z, shift, g_norm / g_norm_old if conjugate else 0.0, free)
         g_norm_old = g_norm
-        r = compliance(t)
-        rt = _dot(r, t)  # t = 0 outside the free set
-        if load_control and free_count:  # r with its free-set mean removed
-            rt -= float(np.sum(r, where=free)) / free_count * float(t.sum())
-        tau = _dot(g, t) / rt if rt > 0 else 0.0
-        p -= np.multiply(t, tau, out=scratch)
-        np.clip(p, 0.0, upper, out=p)
-        entering = np.less_equal(p, 0.0, out=mask)
-        entering &= g < 0
-        conjugate = not entering.any()
-        if not conjugate:
-            step = tau if tau > 0 else 1.0 / stiffness  # Jacobi step when the free set is empty
-            p -= step * np.multiply(g, entering, out=scratch)
-            np.clip(p, 0.0, upper, out=p)
-        if load_control:
-            p *= _rescale_factor(p, target)
+        r = _flat(compliance(t.reshape(shape)))
+        rt, r_sum, t_sum, gt_sum = kernels.step_products(r, t, g, free)
+        if load_control and free_count:  # r with its step-set mean removed
+            rt -= r_sum / free_count * t_sum
+        tau = gt_sum / rt if rt > 0 else 0.0
+        step = tau if tau > 0 else 1.0 / stiffness  # Jacobi step for entering points when the set is empty
+        entered, p_sum = kernels.update_pressure(p, t, g, tau, step, upper)
+        conjugate = entered == 0
+        if load_control and p_sum > 0:
+            p *= target / p_sum
     raise ConvergenceError(solver, residual, max_iterations, tolerance)
 
 
-def _preconditioned(preconditioner, g_free, free, load_control) -> np.ndarray:
-    """Return M g on the free set: the inverse of the full operator, restricted (Vollebregt 2014)."""
-    z = preconditioner(g_free)
-    z *= free
-    if load_control:  # keep the step inside the force constraint: zero sum over the free set
-        np.subtract(z, z.sum() / np.count_nonzero(free), out=z, where=free)
-    return z
+def _flat(field: np.ndarray) -> np.ndarray:
+    """Return a C-contiguous 1D view (or copy, for a cropped window) of an operator's output."""
+    return np.ascontiguousarray(field).ravel()
+
+
+def _residual(weighted_gap: float, overlap: float, open_gap: float, height_scale: float) -> float:
+    """Return the scale-free residual of the module docstring from its three terms [m]."""
+    worst = max(weighted_gap, overlap, open_gap)
+    return worst / height_scale if height_scale > 0 else 0.0
 
 
 def _rescale_factor(p: np.ndarray, target: float) -> float:
