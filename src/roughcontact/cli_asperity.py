@@ -49,15 +49,10 @@ def _inputs(args: argparse.Namespace) -> dict:
         }
     else:
         moments = dict(paper002.MOMENTS)
-    sample = _material(args, "material")
+    sample = _material(args, "material", required=not args.paper002) or get_material("SU-8")
     counter = _material(args, "counter")
     if args.paper002:
-        sample = sample or get_material("SU-8")
         counter = counter or get_material("diamond flat tip")
-    if sample is None:
-        raise InputError(
-            "--material", "no material given.", "pass --material NAME or --material-youngs-modulus."
-        )
 
     def si(value, dimension, field, default=None):
         return default if value is None else quantity(value, dimension, field=field)

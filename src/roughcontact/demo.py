@@ -1,9 +1,11 @@
 """The embedded demo run by ``roughcontact demo`` and ``make demo``.
 
 It needs no file from the user: it reads the AFM scan shipped in ``roughcontact/data``,
-generates two self-affine surfaces and their composite, reproduces the asperity parameters
-of seed paper 002 from its printed spectral moments, and writes overview figures and the
-lossless NetCDF form of each surface into the output folder.
+generates two self-affine surfaces and their composite, solves its normal contact (with the
+subsurface stress) and its Winkler-layer Lennard-Jones friction (seed paper 000), reproduces
+the asperity parameters of seed paper 002 from its printed spectral moments with its
+statistical load-unload, and writes figures and the lossless NetCDF form of each surface into
+the output folder.
 """
 
 from __future__ import annotations
@@ -12,17 +14,12 @@ from collections.abc import Callable
 from importlib.resources import as_file, files
 from pathlib import Path
 
-from .materials import contact_modulus, get_material
+from .materials import get_material
 from .topography import Topography
 from .topography.generate import self_affine
 from .topography.io import load_topography, read_topography, save_topography
 from .topography.process import combine
 from .topography.statistics import mccool_parameters
-
-# Seed paper 002, section 2: spectral moments of the SU-8 island scan as printed.
-PAPER_002_MOMENTS = {"m0": 0.00213279e-12, "m2": 0.00230023, "m4": 0.0171036e12}
-# Seed paper 002, text after eqs. 4-5 and eq. 7: printed results.
-PAPER_002_PRINTED = {"R_asp": 5.08e-6, "sigma_s": 0.0431e-6, "E'": 8.31e9}
 
 
 def _demo_scan() -> Topography:
@@ -31,25 +28,45 @@ def _demo_scan() -> Topography:
     return scan
 
 
-def paper_002_table() -> list[tuple[str, str, str, str]]:
-    """Rows ``(quantity, paper, ours, note)`` recomputing paper 002's asperity numbers.
+def _paper_002(report: Callable[[str], None]) -> None:
+    """Report paper 002's asperity numbers and its statistical (Kogut-Etsion) load-unload."""
+    from .asperity import gaussian_summits, statistical_load_unload
+    from .asperity.parameters import asperity_parameters
+    from .models import asperity_report, paper002
+    from .units import format_si
 
-    R_asp and sigma_s come from the printed m0, m2, m4 through McCool's eqs. 4-5; E' is
-    computed with the standard composite modulus (1 - nu^2) and with eq. 7 as printed
-    (1 - nu) for SU-8 against the diamond flat punch of Table I (see
-    ``../shared/seeds/README.md``: 7.97 GPa reproduces the paper's omega_c and psi, the printed
-    8.31 GPa matches neither form).
-    """
-    asperities = mccool_parameters(**PAPER_002_MOMENTS)
+    report("\n== seed paper 002: asperity parameters from the printed spectral moments ==")
+    report(asperity_report.format_comparison(paper002.comparison()))
     su8, tip = get_material("SU-8"), get_material("diamond flat tip")
-    standard = contact_modulus(su8, tip)
-    printed_form = contact_modulus(su8, tip, form="paper002_eq7_printed")
-    return [
-        ("R_asp", "5.08 um", f"{asperities.summit_radius * 1e6:.2f} um", "McCool, eq. 4"),
-        ("sigma_s", "0.0431 um", f"{asperities.summit_height_std * 1e6:.4f} um", "McCool, eq. 5"),
-        ("E' (1 - nu^2)", "8.31 GPa", f"{standard / 1e9:.2f} GPa", "standard composite modulus"),
-        ("E' (1 - nu)", "8.31 GPa", f"{printed_form / 1e9:.2f} GPa", "eq. 7 as printed"),
-    ]
+    parameters = asperity_parameters(**paper002.MOMENTS, sample=su8, counter_body=tip)
+    curve = statistical_load_unload(
+        gaussian_summits(mccool_parameters(**paper002.MOMENTS)),
+        contact_modulus=parameters.contact_modulus,
+        hardness=su8.hardness,
+        poissons_ratio=su8.poissons_ratio,
+        max_force=paper002.PEAK_FORCE,
+        nominal_area=paper002.ISLAND_SIDE**2,
+        reference_force=paper002.REFERENCE_FORCE,
+    )
+    omega_c = parameters.critical_interference
+    peak, residual = curve.approach.max() / omega_c, curve.residual_interference / omega_c
+    report(
+        "statistical load-unload (Kogut-Etsion loading, eq. 11 unloading), "
+        f"{format_si(paper002.PEAK_FORCE, 'N')} on the {format_si(paper002.ISLAND_SIDE, 'm')} island: "
+        f"peak interference {peak:.2f} omega_c, residual {residual:.2f} omega_c"
+    )
+
+
+def _paper_000(report: Callable[[str], None]) -> None:
+    """Report paper 000's case: the SiO2 sphere tip on one synthetic polysilicon scan per sample, 10 uN."""
+    from .experiment.paper000 import PAPER000_SAMPLES, paper000_simulation
+
+    report("\n== seed paper 000: Winkler-layer Lennard-Jones friction, SiO2 tip on polysilicon, 10 uN ==")
+    mu = paper000_simulation(count=1)
+    for sample in PAPER000_SAMPLES:
+        report(f"  {sample:<12} mu {mu[sample][0]:.3g}")
+    report("  (synthetic scans, default readings, polysilicon surface energy 50 mJ/m^2 assumed;")
+    report("   the readings and their effect: docs/winkler_lj.md)")
 
 
 def _table(rows: list[tuple[str, ...]], header: tuple[str, ...]) -> str:
@@ -135,5 +152,5 @@ def run_demo(output: Path | str, report: Callable[[str], None] = print) -> None:
 
     _rough_contact(composite, output, report)
 
-    report("\n== seed paper 002: asperity parameters from the printed spectral moments ==")
-    report(_table(paper_002_table(), ("quantity", "paper", "ours", "how")))
+    _paper_000(report)
+    _paper_002(report)

@@ -125,6 +125,9 @@ def test_demo_prints_statistics_and_writes_figures(capsys, tmp_path):
     assert "Rq" in out
     assert "R_asp" in out and "5.08" in out  # paper 002 reproduction
     assert "real contact area" in out and "contact patches" in out  # rough-surface normal contact
+    assert "omega_c (eq. 6)" in out and "12.47 nm" in out  # paper 002 critical interference
+    assert "statistical load-unload" in out and "residual" in out  # paper 002 KKE load-unload
+    assert "Winkler-layer Lennard-Jones" in out and out.count(" mu ") == 3  # paper 000, three samples
     assert (tmp_path / "contact.png").exists() and (tmp_path / "von_mises_20nm.png").exists()
     pngs = sorted(p.name for p in tmp_path.glob("*.png"))
     assert len(pngs) >= 2
