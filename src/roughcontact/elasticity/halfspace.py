@@ -1,26 +1,22 @@
 """Surface compliance operator: pressure -> normal surface displacement, by FFT.
 
 :class:`SurfaceCompliance` builds a kernel of :mod:`roughcontact.elasticity.kernels` once and
-applies it with ``scipy.fft`` (all cores by default). It is the only operator the contact
-solvers call; one application costs one rfft2 + irfft2 pair (of the padded grid for a free
-boundary).
+applies it with :class:`roughcontact._backend.RealFFT2` (FFTW through pyFFTW when it imports,
+else ``scipy.fft``; ``ROUGHCONTACT_FFT=scipy`` forces the latter; all cores by default). It is
+the only operator the contact solvers call; one application costs one rfft2 + irfft2 pair (of
+the padded grid for a free boundary).
 """
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import fft
 
+from .._backend import RealFFT2, resolve_workers
 from ..errors import InputError
 from ..materials import Material
 from . import kernels
-
-
-def _workers(workers: int | None) -> int:
-    return (os.cpu_count() or 1) if workers in (None, -1) else int(workers)
 
 
 @dataclass(frozen=True)
@@ -88,7 +84,10 @@ class SurfaceCompliance:
     boundary : {"periodic", "free"}
         Periodic surface, or a window of a free (non-periodic) surface, zero-padded.
     workers : int, optional
-        Threads for scipy.fft (default: all cores).
+        FFT threads (default: all cores).
+    fft_backend : {"auto", "fftw", "scipy"}, optional
+        FFT library (:func:`roughcontact._backend.fft_backend`; default: the environment
+        variable ``ROUGHCONTACT_FFT``, else FFTW when pyFFTW imports). Same result to round-off.
 
     Notes
     -----
@@ -112,6 +111,7 @@ class SurfaceCompliance:
         counter_body: Material | None = None,
         boundary: str = "periodic",
         workers: int | None = None,
+        fft_backend: str | None = None,
     ):
         if boundary not in kernels.BOUNDARIES:
             raise InputError("boundary", f"unknown boundary {boundary!r}.", "use 'periodic' or 'free'.")
@@ -133,7 +133,7 @@ class SurfaceCompliance:
         self.contact_modulus = float(contact_modulus)
         self.boundary = boundary
         self.layer = layer
-        self.workers = _workers(workers)
+        self.workers = resolve_workers(workers)
         if boundary == "periodic":
             self._fft_shape = self.shape
             kernel = kernels.periodic_halfspace_kernel(self.shape, self.size, self.contact_modulus)
@@ -153,15 +153,11 @@ class SurfaceCompliance:
                 )
         self.kernel = kernel
         self._inverse_kernel = None
+        self._fft = RealFFT2(self._fft_shape, self.workers, input_shape=self.shape, backend=fft_backend)
 
     def __call__(self, pressure: np.ndarray) -> np.ndarray:
-        """Return the surface displacement [m] (into the body) of ``pressure`` [Pa]."""
-        spectrum = fft.rfft2(pressure, s=self._fft_shape, workers=self.workers)
-        spectrum *= self.kernel
-        displacement = fft.irfft2(spectrum, s=self._fft_shape, workers=self.workers)
-        if self.boundary == "free":
-            return displacement[: self.shape[0], : self.shape[1]]
-        return displacement
+        """Return the surface displacement [m] (into the body) of ``pressure`` [Pa] (a new array)."""
+        return self._fft.convolve(pressure, self.kernel)
 
     def inverse(self, displacement: np.ndarray) -> np.ndarray:
         """Apply the inverse kernel: the pressure [Pa] of a displacement [m] (used as a preconditioner).
@@ -177,12 +173,7 @@ class SurfaceCompliance:
             if not positive.flat[0]:
                 inverse.flat[0] = inverse[positive].min() if positive.any() else 0.0
             self._inverse_kernel = inverse
-        spectrum = fft.rfft2(displacement, s=self._fft_shape, workers=self.workers)
-        spectrum *= self._inverse_kernel
-        pressure = fft.irfft2(spectrum, s=self._fft_shape, workers=self.workers)
-        if self.boundary == "free":
-            return pressure[: self.shape[0], : self.shape[1]]
-        return pressure
+        return self._fft.convolve(displacement, self._inverse_kernel)
 
     @property
     def pixel_area(self) -> float:

@@ -1,0 +1,200 @@
+"""FFT backend: real 2D FFT convolutions with FFTW (pyFFTW) when it imports, else scipy.fft.
+
+:class:`RealFFT2` applies a Fourier multiplier to a real field: rfft2 (of the field zero-padded
+to the transform shape), multiply by a kernel, irfft2, crop. With pyFFTW it executes two FFTW
+plans on aligned buffers owned by the object and copies the result out; otherwise it calls
+``scipy.fft`` (pocketfft). The backend is chosen by the ``backend`` argument, else by the
+environment variable ``ROUGHCONTACT_FFT`` (``fftw``, ``scipy`` or ``auto``), else ``auto``
+(FFTW when pyFFTW imports).
+
+FFTW configuration, from timings on a 2-core machine (``benchmarks/fft_backend.py``):
+
+- planner effort ``FFTW_ESTIMATE`` (no planning time) below :data:`MEASURE_FROM` points of the
+  transform; ``FFTW_MEASURE`` (timed trial transforms, at most :data:`PLANNING_TIME_LIMIT` per
+  plan; about 1 s at 1024^2, 3 s at 2048^2) from there on, where ESTIMATE plans lose to
+  pocketfft. FFTW keeps the wisdom of every plan for the life of the process, so a later
+  operator of the same shape and thread count (a load path, repeated solves) plans in a
+  millisecond;
+- one thread below :data:`THREADS_FROM` points, where a second thread gains nothing;
+- OpenMP threads that sleep at barriers (``OMP_WAIT_POLICY=PASSIVE``, see
+  :func:`_import_pyfftw`), which keeps a transform from stalling when another process
+  keeps a core busy.
+
+References
+----------
+Frigo, M. and Johnson, S. G. (2005). The design and implementation of FFTW3. Proc. IEEE 93,
+216-231. doi:10.1109/JPROC.2004.840301
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+
+import numpy as np
+from scipy import fft as _scipy_fft
+
+from .errors import InputError
+
+
+def _import_pyfftw():
+    """Import pyFFTW (None if it does not import) with its OpenMP threads sleeping, not spinning, at barriers.
+
+    The pyFFTW wheels bundle their own OpenMP runtime (libgomp), which reads ``OMP_WAIT_POLICY``
+    once, when pyFFTW loads it. With the default (spinning) policy, a transform on 2 threads
+    while another process keeps a core busy waits for the scheduler at every barrier (measured
+    here: 30 ms instead of 1 ms per 256^2 pair, 1 s for a 33^2 one). The variable is set to
+    ``PASSIVE`` for the import only, and only if the user has not set it.
+    """
+    chosen = "OMP_WAIT_POLICY" in os.environ
+    if not chosen:
+        os.environ["OMP_WAIT_POLICY"] = "PASSIVE"
+    try:
+        import pyfftw
+    except ImportError:  # pragma: no cover - depends on the environment
+        return None
+    finally:
+        if not chosen:
+            del os.environ["OMP_WAIT_POLICY"]
+    return pyfftw
+
+
+_pyfftw = _import_pyfftw()  # optional at run time, declared in pyproject.toml
+
+BACKENDS = ("auto", "fftw", "scipy")
+ENVIRONMENT_VARIABLE = "ROUGHCONTACT_FFT"
+MEASURE_FROM = 1 << 21
+"""Transform size (points) from which FFTW plans are measured rather than estimated."""
+PLANNING_TIME_LIMIT = 10.0
+"""Upper bound [s] of the planning time of one FFTW_MEASURE plan."""
+THREADS_FROM = 1 << 15
+"""Transform size (points) from which FFTW runs on ``workers`` threads; smaller ones on one thread."""
+
+
+def resolve_workers(workers: int | None) -> int:
+    """Return the thread count: ``None`` or -1 mean all cores."""
+    return (os.cpu_count() or 1) if workers in (None, -1) else max(int(workers), 1)
+
+
+def fft_backend(backend: str | None = None) -> str:
+    """Return the backend that ``backend`` selects: ``"fftw"`` or ``"scipy"``.
+
+    Parameters
+    ----------
+    backend : {"auto", "fftw", "scipy"}, optional
+        ``None``: the environment variable ``ROUGHCONTACT_FFT``, else ``"auto"``. ``"auto"`` is
+        ``"fftw"`` when pyFFTW imports, else ``"scipy"``; ``"fftw"`` without pyFFTW raises
+        :class:`~roughcontact.errors.InputError`.
+    """
+    if backend is None:
+        backend = os.environ.get(ENVIRONMENT_VARIABLE, "auto").strip().lower() or "auto"
+    if backend not in BACKENDS:
+        raise InputError(
+            "fft_backend",
+            f"unknown FFT backend {backend!r}.",
+            f"use one of {BACKENDS} (or unset {ENVIRONMENT_VARIABLE}).",
+        )
+    if backend == "auto":
+        return "fftw" if _pyfftw is not None else "scipy"
+    if backend == "fftw" and _pyfftw is None:
+        raise InputError(
+            "fft_backend",
+            "the FFTW backend needs pyFFTW, which does not import.",
+            "pip install pyFFTW, or use 'scipy'.",
+        )
+    return backend
+
+
+class RealFFT2:
+    """Fourier multiplier of a real 2D field: irfft2(kernel * rfft2(field zero-padded to ``shape``)).
+
+    Parameters
+    ----------
+    shape : (int, int)
+        Transform shape (the periodic grid, or the zero-padded grid).
+    workers : int, optional
+        Threads (default: all cores).
+    input_shape : (int, int), optional
+        Shape of the fields passed to :meth:`convolve`, at most ``shape``: they are zero-padded to
+        ``shape`` and the result is cropped back (default: ``shape``).
+    backend : {"auto", "fftw", "scipy"}, optional
+        See :func:`fft_backend` (default: ``ROUGHCONTACT_FFT``, else ``"auto"``).
+
+    Notes
+    -----
+    The FFTW plans are made on first use (``FFTW_MEASURE`` plans overwrite their buffers and
+    take up to seconds on large grids). Calls are serialised by a lock since the buffers are
+    shared; every result is a fresh array, never a view of a buffer.
+    """
+
+    def __init__(
+        self,
+        shape: tuple[int, int],
+        workers: int | None = None,
+        *,
+        input_shape: tuple[int, int] | None = None,
+        backend: str | None = None,
+    ):
+        self.shape = (int(shape[0]), int(shape[1]))
+        self.input_shape = self.shape if input_shape is None else (int(input_shape[0]), int(input_shape[1]))
+        if not all(0 < m <= s for m, s in zip(self.input_shape, self.shape, strict=True)):
+            raise InputError("input_shape", f"{self.input_shape} must be positive and at most {self.shape}.")
+        self.spectrum_shape = (self.shape[0], self.shape[1] // 2 + 1)
+        self.workers = resolve_workers(workers)
+        self.backend = fft_backend(backend)
+        self.planner = "FFTW_MEASURE" if self.shape[0] * self.shape[1] >= MEASURE_FROM else "FFTW_ESTIMATE"
+        self._plans = None
+        self._lock = threading.Lock()
+
+    def _plan(self):
+        real_in = _pyfftw.zeros_aligned(self.shape, dtype="float64")
+        spectrum = _pyfftw.empty_aligned(self.spectrum_shape, dtype="complex128")
+        # a padded input keeps its zero margin: the forward plan preserves its input and the
+        # backward plan writes into a separate buffer.
+        padded = self.input_shape != self.shape
+        real_out = _pyfftw.empty_aligned(self.shape, dtype="float64") if padded else real_in
+        threads = self.workers if self.shape[0] * self.shape[1] >= THREADS_FROM else 1
+        options = {"axes": (0, 1), "threads": threads, "planning_timelimit": PLANNING_TIME_LIMIT}
+        forward = _pyfftw.FFTW(real_in, spectrum, flags=(self.planner,), **options)
+        flags = (self.planner, "FFTW_DESTROY_INPUT")
+        backward = _pyfftw.FFTW(spectrum, real_out, direction="FFTW_BACKWARD", flags=flags, **options)
+        real_in[...] = 0.0  # planning may have written into the buffers
+        return real_in, spectrum, real_out, forward, backward
+
+    def convolve(self, field: np.ndarray, kernel: np.ndarray) -> np.ndarray:
+        """Return irfft2(kernel * rfft2(field)) on the transform grid, cropped to ``input_shape``.
+
+        Parameters
+        ----------
+        field : ndarray, shape ``input_shape``
+            Real field (any unit).
+        kernel : ndarray, shape ``(shape[0], shape[1] // 2 + 1)``
+            Fourier multiplier on the rfft2 half-spectrum (real or complex).
+
+        Returns
+        -------
+        ndarray, shape ``input_shape``
+            A new float64 array (the scipy backend keeps the input's precision, as scipy.fft does).
+        """
+        field = np.asarray(field)
+        if field.shape != self.input_shape:
+            raise InputError("field", f"shape {field.shape}, expected {self.input_shape}.")
+        if self.backend == "scipy":
+            spectrum = _scipy_fft.rfft2(field, s=self.shape, workers=self.workers)
+            spectrum *= kernel
+            result = _scipy_fft.irfft2(spectrum, s=self.shape, workers=self.workers, overwrite_x=True)
+            if self.input_shape != self.shape:
+                return result[: self.input_shape[0], : self.input_shape[1]]
+            return result
+        m0, m1 = self.input_shape
+        with self._lock:
+            if self._plans is None:
+                self._plans = self._plan()
+            real_in, spectrum, real_out, forward, backward = self._plans
+            real_in[:m0, :m1] = field
+            forward.execute()
+            np.multiply(spectrum, kernel, out=spectrum)
+            backward.execute()  # unnormalised: scaled by 1/N on the way out
+            result = np.empty(self.input_shape)
+            np.multiply(real_out[:m0, :m1], 1.0 / (self.shape[0] * self.shape[1]), out=result)
+        return result

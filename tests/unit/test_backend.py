@@ -1,0 +1,130 @@
+"""FFT backend: FFTW (pyFFTW) and scipy.fft give the same operator and contact solution; fallback."""
+
+import numpy as np
+import pytest
+from scipy import fft
+
+from roughcontact import _backend
+from roughcontact._backend import RealFFT2, fft_backend
+from roughcontact.contact import solve_normal
+from roughcontact.contact.normal import compliance_for
+from roughcontact.elasticity.halfspace import ElasticLayer, SurfaceCompliance
+from roughcontact.errors import InputError
+from roughcontact.materials import Material
+from roughcontact.topography.generate import self_affine
+
+# pyFFTW is a declared dependency; without it only the fallback test runs
+needs_fftw = pytest.mark.skipif(_backend._pyfftw is None, reason="pyFFTW does not import")
+
+SHAPES = [(32, 32), (33, 33), (24, 37), (37, 24), (7, 1)]
+
+
+def _relative(a, b):
+    return np.max(np.abs(a - b)) / np.max(np.abs(b))
+
+
+def _pair(shape, boundary, **options):
+    operators = {}
+    for backend in ("fftw", "scipy"):
+        operators[backend] = SurfaceCompliance(
+            shape, (1e-4, 2.5e-4), 1e9, boundary=boundary, fft_backend=backend, **options
+        )
+    return operators
+
+
+@needs_fftw
+@pytest.mark.parametrize("boundary", ["periodic", "free"])
+@pytest.mark.parametrize("shape", SHAPES)
+def test_backends_agree(shape, boundary):
+    operators = _pair(shape, boundary, workers=2)
+    assert operators["fftw"]._fft.backend == "fftw" and operators["scipy"]._fft.backend == "scipy"
+    field = np.random.default_rng(3).random(shape)
+    for apply in ("__call__", "inverse"):
+        results = {b: getattr(op, apply)(field) for b, op in operators.items()}
+        assert results["fftw"].shape == shape and results["fftw"].dtype == np.float64
+        assert _relative(results["fftw"], results["scipy"]) < 1e-12
+
+
+@needs_fftw
+def test_layer_operator_agrees():
+    layer = ElasticLayer(2e-6, Material(youngs_modulus=1e9, poissons_ratio=0.3), "bonded")
+    operators = {
+        b: SurfaceCompliance((20, 30), (1e-4, 1e-4), layer=layer, boundary="free", fft_backend=b)
+        for b in ("fftw", "scipy")
+    }
+    field = np.random.default_rng(4).random((20, 30))
+    assert _relative(operators["fftw"](field), operators["scipy"](field)) < 1e-12
+
+
+@needs_fftw
+@pytest.mark.parametrize("boundary", ["periodic", "free"])
+def test_results_are_not_overwritten_by_later_calls(boundary):
+    shape = (16, 22)
+    fftw, scipy = _pair(shape, boundary).values()
+    rng = np.random.default_rng(5)
+    fields = [rng.random(shape) for _ in range(4)]
+    kept = [fftw(f) for f in fields] + [fftw.inverse(f) for f in fields]
+    expected = [scipy(f) for f in fields] + [scipy.inverse(f) for f in fields]
+    for got, want in zip(kept, expected, strict=True):
+        assert _relative(got, want) < 1e-12
+        assert got.base is None or not np.shares_memory(got, kept[-1])
+    assert len({id(k) for k in kept}) == len(kept)
+    for a in range(len(kept)):
+        for b in range(a + 1, len(kept)):
+            assert not np.shares_memory(kept[a], kept[b])
+
+
+@needs_fftw
+def test_input_is_not_modified_and_padding_stays_zero():
+    pair = RealFFT2((12, 18), input_shape=(6, 9), backend="fftw")
+    kernel = np.random.default_rng(6).random(pair.spectrum_shape)
+    reference = RealFFT2((12, 18), input_shape=(6, 9), backend="scipy")
+    for seed in range(3):
+        field = np.random.default_rng(seed).random((6, 9))
+        copy = field.copy()
+        out = pair.convolve(field, kernel)
+        np.testing.assert_array_equal(field, copy)
+        assert _relative(out, reference.convolve(field, kernel)) < 1e-12
+
+
+@needs_fftw
+def test_environment_variable_and_argument(monkeypatch):
+    monkeypatch.setenv("ROUGHCONTACT_FFT", "scipy")
+    assert fft_backend() == "scipy"
+    assert SurfaceCompliance((8, 8), (1.0, 1.0), 1e9)._fft.backend == "scipy"
+    assert fft_backend("fftw") == "fftw"
+    monkeypatch.setenv("ROUGHCONTACT_FFT", "fftw")
+    assert fft_backend() == "fftw"
+    monkeypatch.delenv("ROUGHCONTACT_FFT")
+    assert fft_backend() == "fftw"
+    with pytest.raises(InputError, match="fft_backend"):
+        fft_backend("mkl")
+    with pytest.raises(InputError, match="field"):
+        RealFFT2((8, 8), backend="fftw").convolve(np.zeros((8, 7)), np.ones((8, 5)))
+
+
+def test_fallback_without_pyfftw(monkeypatch):
+    monkeypatch.setattr(_backend, "_pyfftw", None)
+    monkeypatch.delenv("ROUGHCONTACT_FFT", raising=False)
+    assert fft_backend() == "scipy"
+    with pytest.raises(InputError, match="pyFFTW"):
+        fft_backend("fftw")
+    operator = SurfaceCompliance((10, 14), (1e-4, 1e-4), 1e9, boundary="free")
+    assert operator._fft.backend == "scipy"
+    field = np.random.default_rng(7).random((10, 14))
+    spectrum = fft.rfft2(field, s=(20, 28)) * operator.kernel
+    reference = fft.irfft2(spectrum, s=(20, 28))[:10, :14]
+    assert _relative(operator(field), reference) < 1e-12
+
+
+@needs_fftw
+def test_solve_normal_same_pressure_with_both_backends(monkeypatch):
+    surface = self_affine((64, 64), (1e-4, 1e-4), hurst=0.8, rms_slope=0.1, seed=11)
+    results = {}
+    for backend in ("fftw", "scipy"):
+        monkeypatch.setenv("ROUGHCONTACT_FFT", backend)
+        operator = compliance_for(surface, 1e9)
+        assert operator._fft.backend == backend
+        results[backend] = solve_normal(surface, mean_pressure=5e6, tolerance=1e-12, compliance=operator)
+    assert results["fftw"].iterations == results["scipy"].iterations
+    assert _relative(results["fftw"].pressure, results["scipy"].pressure) < 1e-10
