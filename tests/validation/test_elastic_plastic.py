@@ -71,3 +71,17 @@ def test_fully_plastic_contact_carries_hardness_times_area():
 def test_load_unload_needs_a_hardness():
     with pytest.raises(InputError, match="hardness"):
         load_unload(_ball(16), MATERIAL, max_force=FORCE)
+
+
+@pytest.mark.parametrize("neighbour_force", [0.3 * FORCE, 1.7 * FORCE])
+def test_capped_force_control_warm_started_from_a_neighbour_matches_a_cold_solve(neighbour_force):
+    # The root search brackets the approach around the warm start's (from below and from above).
+    hardness = 0.7 * HERTZ.peak_pressure
+    cold = solve_normal(_ball(), MATERIAL, force=FORCE, hardness=hardness, tolerance=1e-10)
+    neighbour = solve_normal(_ball(), MATERIAL, force=neighbour_force, hardness=hardness, tolerance=1e-10)
+    warm = solve_normal(_ball(), MATERIAL, force=FORCE, hardness=hardness, tolerance=1e-10, initial=neighbour)
+    # Measured: force and approach agree to ~1e-13, pressures to ~2e-9 H (solver tolerance 1e-10).
+    assert warm.force == pytest.approx(FORCE, rel=1e-10, abs=0)
+    assert warm.approach == pytest.approx(cold.approach, rel=1e-10, abs=0)
+    assert np.max(np.abs(warm.pressure - cold.pressure)) <= 1e-8 * hardness
+    assert warm.pressure.max() <= hardness

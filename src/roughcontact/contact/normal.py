@@ -196,6 +196,7 @@ def solve_normal(
     measure = topography.pixel_area if topography.dim == 2 else topography.spacing[0]
     nominal = topography.area if topography.dim == 2 else topography.size[0]
     target_force = value * nominal if name == "mean_pressure" else value
+    guess = initial.approach if isinstance(initial, NormalContactResult) else None
     if initial is not None:
         initial = (initial.pressure if isinstance(initial, NormalContactResult) else initial).reshape(shape)
     common = dict(
@@ -215,7 +216,9 @@ def solve_normal(
             compliance, separation, force=target_force, initial_pressure=initial, **common
         )
     else:
-        raw = _capped_at_force(compliance, separation, target_force, initial, measure, hardness, common)
+        raw = _capped_at_force(
+            compliance, separation, target_force, initial, guess, measure, hardness, common
+        )
     return NormalContactResult(
         topography=topography,
         pressure=raw.pressure.reshape(topography.shape),
@@ -232,8 +235,13 @@ def solve_normal(
     )
 
 
-def _capped_at_force(compliance, separation, target_force, initial, measure, hardness, common):
-    """Displacement-controlled capped solves, with the approach found by Brent's method."""
+def _capped_at_force(compliance, separation, target_force, initial, guess, measure, hardness, common):
+    """Displacement-controlled capped solves, with the approach of ``target_force`` found by Brent's method.
+
+    The root is bracketed around ``guess`` (the approach of the warm start, e.g. the previous step
+    of a load path) when there is one, else in [0, 2^k ptp(h0)]; every solve is warm-started from
+    the last one and evaluated once (Brent's method revisits its bracket ends).
+    """
     capacity = hardness * separation.size * measure
     if target_force >= capacity:
         raise InputError(
@@ -242,24 +250,50 @@ def _capped_at_force(compliance, separation, target_force, initial, measure, har
             f"surface (capacity {capacity:.4g} N).",
             "lower the load or enlarge the nominal area.",
         )
-    state = {"pressure": initial, "raw": None}
-
-    def excess(delta: float) -> float:
-        raw = _constrained_cg.solve(
-            compliance, separation, approach=delta, initial_pressure=state["pressure"], **common
-        )
-        state["pressure"], state["raw"] = raw.pressure, raw
-        return raw.pressure.sum() * measure - target_force
-
     if target_force == 0:
         return _constrained_cg.solve(compliance, separation, approach=0.0, **common)
-    high = float(np.ptp(separation)) or (target_force / capacity) * 1e-6
-    while excess(high) < 0:
-        high *= 2.0
+    solved = {}  # approach -> engine result
+    state = {"pressure": initial}
+
+    def excess(delta: float) -> float:
+        if delta not in solved:
+            raw = _constrained_cg.solve(
+                compliance, separation, approach=delta, initial_pressure=state["pressure"], **common
+            )
+            state["pressure"], solved[delta] = raw.pressure, raw
+        return solved[delta].pressure.sum() * measure - target_force
+
+    if guess is not None and guess > 0:
+        low, high = _bracket_around(excess, guess, target_force)
+    else:
+        low, high = 0.0, float(np.ptp(separation)) or (target_force / capacity) * 1e-6
+        while excess(high) < 0:
+            low, high = high, 2.0 * high
     relative = common["tolerance"]
-    delta = optimize.brentq(excess, 0.0, high, xtol=relative * high, rtol=max(relative, 4e-16))
-    raw = state["raw"]
-    if raw.approach != delta:
-        excess(delta)
-        raw = state["raw"]
-    return raw
+    delta = optimize.brentq(excess, low, high, xtol=relative * high, rtol=max(relative, 4e-16))
+    excess(delta)
+    return solved[delta]
+
+
+def _bracket_around(excess, guess: float, target_force: float) -> tuple[float, float]:
+    """Return approaches (low, high) with excess(low) <= 0 <= excess(high), stepping out from ``guess``.
+
+    The first step is the force error over the stiffness 1.5 F / delta of a Hertzian contact
+    (an estimate: too short a step only costs a doubling), doubled until the sign changes; the
+    approach 0 (no load, excess -target) bounds it from below.
+    """
+    error = excess(guess)
+    force = error + target_force
+    step = abs(error) * guess / (1.5 * force) if force > 0 else guess
+    step = max(step, 1e-6 * guess)
+    if error < 0:
+        low, high = guess, guess + step
+        while excess(high) < 0:
+            step *= 2.0
+            low, high = high, high + step
+        return low, high
+    low, high = max(guess - step, 0.0), guess
+    while low > 0 and excess(low) > 0:
+        step *= 2.0
+        low, high = max(low - step, 0.0), low
+    return low, high
