@@ -40,6 +40,35 @@ PEAK_DISTANCE_RATIO = 3.0 ** (1.0 / 6.0)
 PEAK_STRESS_FACTOR = 16.0 / (9.0 * np.sqrt(3.0))
 """max f = PEAK_STRESS_FACTOR * dgamma / epsilon (~1.0264)."""
 
+DUGDALE_RANGE_RATIO = 1.0 + 1.0 / PEAK_STRESS_FACTOR
+"""l / epsilon at the edge of the equivalent Dugdale zone, 1 + 9 sqrt(3) / 16 (~1.974)."""
+
+
+def dugdale_range(epsilon: float) -> float:
+    r"""Largest bond distance of the Dugdale zone equivalent to eq. 7 [m].
+
+    Maugis (1992) replaces a force law by a constant stress sigma0 acting from the equilibrium
+    distance over a further separation h0, with the same work of adhesion, sigma0 h0 = dgamma; with
+    sigma0 the peak stress of eq. 7, 16 dgamma / (9 sqrt(3) eps), h0 = 9 sqrt(3) eps / 16 ~ 0.974 eps
+    (Maugis' h0 = 0.97 z0). Bonds end at l = eps + h0, independent of dgamma. There the attraction of
+    eq. 7 is 0.332 of its peak and e(l) = 0.341 dgamma remains of the bond energy.
+
+    Parameters
+    ----------
+    epsilon : float
+        Equilibrium distance [m].
+
+    Returns
+    -------
+    float
+        eps (1 + 9 sqrt(3) / 16) [m].
+
+    References
+    ----------
+    D. Maugis, J. Colloid Interface Sci. 150 (1992) 243-269, doi:10.1016/0021-9797(92)90285-T.
+    """
+    return DUGDALE_RANGE_RATIO * epsilon
+
 
 def stress_scale(work_of_adhesion: float, epsilon: float) -> float:
     """Prefactor 8 dgamma / (3 eps) of eq. 7 [Pa].

@@ -19,6 +19,7 @@ energy_area            ``times_area``           ``printed``: energy per area in 
 mechanical_height      ``cuboid``               ``printed_separation``: 1/d in eq. 17
 mechanical_energy      ``two_stage``            ``eq16_signed``: eq. 16's signed integral
 shear_poisson          ``geometric``            ``surface``, ``counter``: which nu enters G
+adhesive_range         ``maugis_dugdale``       ``all_springs``: every spring not in mechanical contact
 adhesive_cutoff        ``inf``                  a distance [m] beyond which springs do not count
 =====================  =======================  =====================================================
 """
@@ -43,6 +44,7 @@ CHOICES: dict[str, tuple[str, ...]] = {
     "mechanical_height": ("cuboid", "printed_separation"),
     "mechanical_energy": ("two_stage", "eq16_signed"),
     "shear_poisson": ("geometric", "surface", "counter"),
+    "adhesive_range": ("maugis_dugdale", "all_springs"),
 }
 """Allowed values of each string field of :class:`Readings`; the first is the default."""
 
@@ -93,8 +95,17 @@ class Readings:
     shear_poisson : {"geometric", "surface", "counter"}
         Poisson's ratio in G = E / (2 (1 + nu)) with E from eq. 1: sqrt(nu1 nu2) as in eq. 4,
         the surface's nu1, or the counter-body's nu2.
+    adhesive_range : {"maugis_dugdale", "all_springs"}
+        Which springs in adhesive contact add adhesive friction (eqs. 9-15). ``"maugis_dugdale"``:
+        those whose bond distance l_ia is at most epsilon + dgamma / max f = (1 + 9 sqrt(3) / 16)
+        epsilon ~ 1.974 epsilon, the edge of the Dugdale zone with the peak stress and the work of
+        adhesion of eq. 7 (Maugis 1992); farther springs still feel eq. 7's attraction in eq. 2 but
+        hold no bond to break. ``"all_springs"``: every spring not in mechanical contact (the
+        paper's "l_i > epsilon"; the sum over a sphere then grows like the log of the scan size and
+        over a flat like its area, see ``docs/winkler_lj.md``; the earlier default).
     adhesive_cutoff : float
-        Gap [m] beyond which springs are not counted as adhesive (default: all springs).
+        Gap [m] beyond which springs are neither in eq. 2 nor in the friction (default: none,
+        ``inf``).
 
     Raises
     ------
@@ -113,6 +124,7 @@ class Readings:
     mechanical_height: str = "cuboid"
     mechanical_energy: str = "two_stage"
     shear_poisson: str = "geometric"
+    adhesive_range: str = "maugis_dugdale"
     adhesive_cutoff: float = math.inf
 
     def __post_init__(self):
@@ -192,6 +204,8 @@ PRINTED = Readings(
     mechanical_height="printed_separation",
     mechanical_energy="eq16_signed",
     shear_poisson="surface",
+    adhesive_range="all_springs",
 )
 """Every equation as printed in paper 000 (``contact="epsilon"`` is the printed text's criterion;
-the paper does not say which Poisson's ratio enters G, ``"surface"`` is the closest to its text)."""
+the paper does not say which Poisson's ratio enters G, ``"surface"`` is the closest to its text;
+``adhesive_range="all_springs"`` reads "strictly adhesive contact" as the text's l_i > epsilon)."""

@@ -14,7 +14,8 @@ base. Each pixel is a spring (a cuboid of top area S = pixel area and height h, 
 * eq. 8: extension dz_i = f(l_i) k h / E of the springs in strictly adhesive contact;
 * eqs. 9-15: lateral force Q_i = sqrt(2 W_i / (H_i c)) that makes the shear work Q ds / 2 of a
   cuboid (height H_i, shear compliance ds = c Q H_i) equal to the energy W_i that breaks its
-  adhesive bond (eq. 14 at l_ia = d - z_i - dz_i);
+  adhesive bond (eq. 14 at l_ia = d - z_i - dz_i), for the springs bonded within the adhesive
+  range (default: the Dugdale zone of eq. 7, l_ia <= 1.974 eps; ``readings.adhesive_range``);
 * eqs. 16-17: the same for springs in mechanical contact, with the energy from the distance l_im
   where the repulsion of eq. 7 carries the spring's stress P_i;
 * friction F = sum Q (adhesive part + mechanical part) and mu = F / N.
@@ -122,8 +123,11 @@ class WinklerLJResult:
         Overlap of the highest point with the contact wall (epsilon or 0, see ``readings.contact``) [m];
         > 0 when springs are compressed.
     mechanical, adhesive : ndarray of bool
-        Springs in mechanical contact and in strictly adhesive contact (disjoint; springs beyond
-        ``readings.adhesive_cutoff`` are in neither).
+        Springs in mechanical contact and in strictly adhesive contact, i.e. feeling the attraction
+        of eq. 7 in eq. 2 (disjoint; springs beyond ``readings.adhesive_cutoff`` are in neither).
+    bonded : ndarray of bool
+        The adhesive springs within the adhesive range (``readings.adhesive_range``): only they add
+        adhesive friction (eq. 15); the other adhesive springs have Q = 0.
     gap : ndarray
         Undeformed gap l_i = d - z_i [m].
     stress : ndarray
@@ -133,12 +137,12 @@ class WinklerLJResult:
         Spring extension dz_i [m]: eq. 8 for adhesive springs (> 0, towards the flat), minus the
         compression for mechanical ones.
     lateral_force : ndarray
-        Q_i [N] (eqs. 15 and 17).
+        Q_i [N] (eqs. 15 and 17); 0 on adhesive springs that are not bonded.
     mechanical_force, adhesive_force : float
         Sum of the spring forces P_i S [N] and of the attractions f(l_i) S [N] (stresses summed
         without S under ``balance_terms="pressures_printed"``).
     adhesive_friction, mechanical_friction, friction : float
-        Sums of Q_i over adhesive springs, over mechanical springs, and both [N].
+        Sums of Q_i over bonded adhesive springs, over mechanical springs, and both [N].
     mu : float
         friction / load.
     residual : float
@@ -165,6 +169,7 @@ class WinklerLJResult:
     approach: float
     mechanical: np.ndarray
     adhesive: np.ndarray
+    bonded: np.ndarray
     gap: np.ndarray
     stress: np.ndarray
     extension: np.ndarray
@@ -194,6 +199,7 @@ class WinklerLJResult:
             "approach": self.approach,
             "mechanical_springs": int(self.mechanical.sum()),
             "adhesive_springs": int(self.adhesive.sum()),
+            "bonded_springs": int(self.bonded.sum()),
             "mechanical_force": self.mechanical_force,
             "adhesive_force": self.adhesive_force,
             "residual": self.residual,
@@ -215,6 +221,7 @@ class WinklerLJResult:
             "lateral_force": (self.lateral_force, "N"),
             "mechanical": (self.mechanical.astype(np.int8), ""),
             "adhesive": (self.adhesive.astype(np.int8), ""),
+            "bonded": (self.bonded.astype(np.int8), ""),
         }
         data = {name: (("x", "y"), values, {"units": unit}) for name, (values, unit) in fields_.items()}
         attributes = dict(self.scalars())
@@ -236,6 +243,7 @@ class FrictionSweep:
     separation: np.ndarray
     mechanical_springs: np.ndarray
     adhesive_springs: np.ndarray
+    bonded_springs: np.ndarray
 
     def to_xarray(self):
         """Return an ``xarray.Dataset`` indexed by ``load`` [N]."""
@@ -249,6 +257,7 @@ class FrictionSweep:
             "separation": "m",
             "mechanical_springs": "",
             "adhesive_springs": "",
+            "bonded_springs": "",
         }
         data = {name: ("load", getattr(self, name), {"units": unit}) for name, unit in units.items()}
         return xr.Dataset(data, coords={"load": ("load", self.load, {"units": "N"})})
@@ -286,6 +295,18 @@ class WinklerLJModel:
     def spring_area(self) -> float:
         """S, the top area of one cuboid (the pixel area) [m^2]."""
         return self.topography.pixel_area
+
+    @property
+    def adhesive_range(self) -> float:
+        """Largest bond distance l_ia of a spring that adds adhesive friction [m] (inf: every spring).
+
+        ``readings.adhesive_range="maugis_dugdale"``: eps (1 + 9 sqrt(3) / 16), the edge of the
+        Dugdale zone of eq. 7 (:func:`~roughcontact.friction.lennard_jones.dugdale_range`);
+        ``"all_springs"``: inf. ``readings.adhesive_cutoff`` (on the gap l_i) applies on top.
+        """
+        if self.readings.adhesive_range == "maugis_dugdale":
+            return lj.dugdale_range(self.epsilon)
+        return math.inf
 
     @property
     def _wall(self) -> float:
@@ -465,7 +486,10 @@ class WinklerLJModel:
         energy = np.empty(within)
         bond_distance = adhesive_gap - extension[count:within]  # l_ia
         pulled_in = int(np.count_nonzero(bond_distance <= eps))
-        energy[count:] = lj.separation_energy(np.maximum(bond_distance, eps), gamma, eps)
+        bonded = bond_distance <= self.adhesive_range  # within the Dugdale zone (default) or all
+        energy[count:] = np.where(
+            bonded, lj.separation_energy(np.maximum(bond_distance, eps), gamma, eps), 0.0
+        )
         stress_mech = stiffness * compression
         signed = lj.separation_energy(lj.repulsive_distance(stress_mech, gamma, eps), gamma, eps)  # e(l_im)
         if self.readings.mechanical_energy == "two_stage":
@@ -498,6 +522,8 @@ class WinklerLJModel:
         mechanical_friction = float(lateral[:count].sum())
         adhesive_friction = float(lateral[count:within].sum())
         rank = self._rank
+        bonded_sorted = np.zeros(n, dtype=bool)
+        bonded_sorted[count:within] = bonded
 
         def to_grid(values: np.ndarray) -> np.ndarray:
             return values[rank]
@@ -508,6 +534,7 @@ class WinklerLJModel:
             approach=float(approach),
             mechanical=rank < count,
             adhesive=(rank >= count) & (rank < within),
+            bonded=bonded_sorted[rank],
             gap=depth[rank] + (self._wall - approach),
             stress=to_grid(stress),
             extension=to_grid(extension),
@@ -567,6 +594,7 @@ class WinklerLJModel:
             separation=column("separation"),
             mechanical_springs=column("mechanical_springs").astype(int),
             adhesive_springs=column("adhesive_springs").astype(int),
+            bonded_springs=column("bonded_springs").astype(int),
         )
 
     def crossover_load(self, low: float | None = None, high: float | None = None) -> float | None:
