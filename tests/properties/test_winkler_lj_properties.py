@@ -1,4 +1,7 @@
-"""Property tests of the Winkler-Lennard-Jones model: disjoint spring sets, finite forces, balance."""
+"""Property tests of the Winkler-Lennard-Jones model: disjoint spring sets, finite forces, balance.
+
+Bonded springs (the adhesive range) are a subset of the adhesive ones; the others add no friction.
+"""
 
 import numpy as np
 from hypothesis import HealthCheck, assume, given, settings
@@ -45,6 +48,8 @@ def test_springs_are_never_both_and_totals_are_finite(
         assert printed_sign or printed_height, error
         return
     assert not np.any(result.mechanical & result.adhesive)
+    assert not np.any(result.bonded & ~result.adhesive)  # bonded springs are adhesive springs
+    assert np.all(result.lateral_force[result.adhesive & ~result.bonded] == 0)
     for values in (result.stress, result.extension, result.lateral_force, result.gap):
         assert np.all(np.isfinite(values))
     assert np.all(result.lateral_force >= 0)

@@ -129,6 +129,29 @@ def test_adhesive_cutoff_removes_far_springs(pair):
     assert cut.adhesive_friction < full.adhesive_friction
 
 
+def test_only_springs_bonded_within_the_dugdale_zone_add_adhesive_friction(pair):
+    prepared = model(pair)
+    result = prepared.solve(1e-5)
+    assert prepared.adhesive_range == pytest.approx((1 + 9 * math.sqrt(3) / 16) * 2e-9, rel=1e-15)
+    bond = result.gap - result.extension  # l_ia of eq. 14
+    np.testing.assert_array_equal(result.bonded, result.adhesive & (bond <= prepared.adhesive_range))
+    assert 0 < result.bonded.sum() < result.adhesive.sum()
+    assert np.all(result.lateral_force[result.adhesive & ~result.bonded] == 0)
+    assert np.all(result.lateral_force[result.bonded] > 0)
+    assert result.adhesive_friction == pytest.approx(result.lateral_force[result.bonded].sum(), rel=1e-12)
+    assert result.scalars()["bonded_springs"] == result.bonded.sum()
+    assert prepared.sweep([1e-5]).bonded_springs[0] == result.bonded.sum()
+    everywhere = model(pair, readings=Readings(adhesive_range="all_springs"))
+    every = everywhere.solve(1e-5)
+    assert everywhere.adhesive_range == math.inf
+    np.testing.assert_array_equal(every.bonded, every.adhesive)
+    assert every.separation == result.separation  # eq. 2 is the same under both ranges
+    assert every.mechanical_friction == result.mechanical_friction
+    assert every.adhesive_friction > result.adhesive_friction
+    assert Readings.from_strings(["adhesive_range=all_springs"]) == Readings(adhesive_range="all_springs")
+    assert PRINTED.adhesive_range == "all_springs"
+
+
 def test_rigid_counter_needs_a_surface_energy(pair):
     scan, _ = pair
     with pytest.raises(InputError) as error:

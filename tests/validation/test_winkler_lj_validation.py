@@ -6,6 +6,7 @@ balance at 1e-12 of the largest term (brentq stops at a few ulps of the approach
 (see the test).
 """
 
+import functools
 import math
 
 import numpy as np
@@ -144,6 +145,70 @@ def test_smooth_sphere_pull_off_is_derjaguin():
     derjaguin = 2 * math.pi * radius * model.work_of_adhesion
     assert model.pull_off_force() == pytest.approx(derjaguin, rel=1e-2)
     assert model.pull_off_force() < derjaguin  # the cut tail only removes attraction
+
+
+@functools.cache
+def sphere_composite(radius: float, full: int = 512) -> np.ndarray:
+    """A self-affine scan (rms 1.8 nm) plus a rough paraboloid tip, 20 nm pixels, apex at the centre."""
+    size = full * 20e-9
+    scan = self_affine((full, full), size, hurst=0.8, rms_height=1.8e-9, seed=11)
+    tip = sphere_with_roughness((full, full), size, radius=radius, rms_height=0.3e-9, seed=12)
+    return scan.heights + tip.heights
+
+
+def central_window(heights: np.ndarray, n: int) -> Topography:
+    start = (heights.shape[0] - n) // 2
+    return Topography(heights[start : start + n, start : start + n].copy(), n * 20e-9)
+
+
+def window_result(heights: np.ndarray, n: int, readings: Readings | None = None):
+    model = winkler_lj_model(
+        central_window(heights, n), POLY, SIO2, layer_thickness=50e-9, surface_energy=0.05, readings=readings
+    )
+    return model.solve(1e-5)
+
+
+@pytest.mark.parametrize("radius", [1e-6, 5e-6])
+def test_mu_converges_with_the_scan_size(radius):
+    """The same sphere-on-scan contact, modelled on 128^2, 256^2 and 512^2 central windows (20 nm).
+
+    Default readings: only springs bonded within the Dugdale zone (l_ia <= 1.974 eps, a ring of
+    ~0.1-0.3 um around the contact) add adhesive friction, so once the window holds the zone mu can
+    change only through eq. 2's attraction of the far springs, whose tail falls like (eps/l)^3: the
+    model meets 1e-7 (R = 1 um) and 5e-6 (R = 5 um) at 128^2 against 512^2. Tolerance 0.1 %. Contrast:
+    the earlier ``all_springs`` sum grows like the log of the window (Q ~ eps / l), > 10 % per doubling.
+    """
+    heights = sphere_composite(radius)
+    default = {n: window_result(heights, n) for n in (128, 256, 512)}
+    assert default[512].bonded.sum() > 0 and default[512].adhesive_friction > 0
+    assert default[256].mu == pytest.approx(default[512].mu, rel=1e-3)
+    assert default[128].mu == pytest.approx(default[512].mu, rel=1e-3)
+    earlier = Readings(adhesive_range="all_springs")
+    every = [window_result(heights, n, earlier).mu for n in (256, 512)]
+    assert every[1] > 1.1 * every[0]
+
+
+@pytest.mark.parametrize("n", [32, 64])
+def test_flat_face_beyond_the_adhesive_range_adds_no_adhesive_friction(n):
+    """A flat face 100 nm (50 eps) below a 2 x 2 pillar that carries the load, against the flat.
+
+    Sliding two parallel faces 100 nm apart changes no bond: default readings give zero adhesive
+    friction (exactly), while the face's attraction still enters eq. 2. The earlier ``all_springs``
+    sum gives every face spring the same Q, so its adhesive friction scales with the face area.
+    """
+    heights = np.full((n, n), -100e-9)
+    heights[n // 2 : n // 2 + 2, n // 2 : n // 2 + 2] = 0.0
+    surface = Topography(heights, n * 20e-9)
+    options = {"layer_thickness": 50e-9, "surface_energy": 0.05}
+    result = winkler_lj_model(surface, POLY, SIO2, **options).solve(1e-6)
+    assert result.mechanical.sum() == 4 and result.adhesive.sum() == n * n - 4
+    assert not result.bonded.any() and result.adhesive_friction == 0.0
+    assert result.adhesive_force > 0  # attraction still in eq. 2
+    assert result.friction == result.mechanical_friction > 0
+    every = winkler_lj_model(surface, POLY, SIO2, readings=Readings(adhesive_range="all_springs"), **options)
+    face = every.solve(1e-6).lateral_force[~result.mechanical]
+    assert face.sum() > 0
+    np.testing.assert_allclose(face, face[0], rtol=1e-6)  # one gap, one Q: the sum grows with the area
 
 
 def test_mu_rises_with_surface_energy():
