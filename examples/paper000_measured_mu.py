@@ -3,9 +3,11 @@
 Paper 000 does not tabulate its measured friction coefficients (only Figs. 8 and 9); it reports
 seven measurements per sample, two-sample t-test p values of 0.13, 0.12 and 0.79 and a Pearson r of
 0.96 between the means. This script builds seven values per sample from our default simulation
-(:func:`roughcontact.experiment.paper000_simulation`, seed 0): the simulated scatter around a mean
-shifted (upwards) until Welch's t-test against the simulated values gives the paper's p value. The
-result is labelled synthetic in its header and exists only to exercise the validation workflow.
+(:func:`roughcontact.experiment.paper000_simulation`, seed 0, default readings): the simulated
+scatter around a mean shifted (upwards) until Welch's t-test against the simulated values gives the
+paper's p value. The result is labelled synthetic in its header and exists only to exercise the
+validation workflow. Rebuilt when the default adhesive range became the Dugdale zone (simulated mu
+~0.79; it was ~3.8 with every spring of the scan counted, ``adhesive_range="all_springs"``).
 
 Run: ``.venv/bin/python examples/paper000_measured_mu.py``.
 """
@@ -44,8 +46,9 @@ def main() -> None:
     lines = [
         "# SYNTHETIC DATA, NOT MEASURED. Paper 000 does not tabulate its measured mu (Figs. 8-9 only).",
         "# Built by examples/paper000_measured_mu.py from roughcontact's default simulation of the paper's",
-        "# case (seed 0, polysilicon surface energy 50 mJ/m^2 assumed): simulated scatter, mean shifted",
-        "# until Welch's t-test gives the paper's p values 0.13, 0.12, 0.79 (7 values per sample).",
+        "# case (seed 0, polysilicon surface energy 50 mJ/m^2 assumed, default readings: adhesive friction",
+        "# from the Dugdale zone, adhesive_range=maugis_dugdale): simulated scatter, mean shifted until",
+        "# Welch's t-test gives the paper's p values 0.13, 0.12, 0.79 (7 values per sample).",
         f"# Pearson r of the means against that simulation: {result.pearson_r:.3f} (paper: 0.96).",
         "sample,mu",
     ]
