@@ -128,3 +128,16 @@ def test_solve_normal_same_pressure_with_both_backends(monkeypatch):
         results[backend] = solve_normal(surface, mean_pressure=5e6, tolerance=1e-12, compliance=operator)
     assert results["fftw"].iterations == results["scipy"].iterations
     assert _relative(results["fftw"].pressure, results["scipy"].pressure) < 1e-10
+
+
+@needs_fftw
+@pytest.mark.parametrize("boundary", ["periodic", "free"])
+def test_measured_multithreaded_plans_agree(monkeypatch, boundary):
+    """The large-grid configuration (FFTW_MEASURE, several threads), exercised on a small grid."""
+    monkeypatch.setattr(_backend, "MEASURE_FROM", 1)
+    monkeypatch.setattr(_backend, "THREADS_FROM", 1)
+    operators = _pair((30, 45), boundary, workers=2)
+    assert operators["fftw"]._fft.planner == "FFTW_MEASURE"
+    field = np.random.default_rng(8).random((30, 45))
+    for _ in range(2):
+        assert _relative(operators["fftw"](field), operators["scipy"](field)) < 1e-12
