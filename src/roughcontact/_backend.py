@@ -74,8 +74,10 @@ THREADS_FROM = 1 << 15
 
 
 def resolve_workers(workers: int | None) -> int:
-    """Return the thread count: ``None`` or -1 mean all cores."""
-    return (os.cpu_count() or 1) if workers in (None, -1) else max(int(workers), 1)
+    """Return the thread count: ``None`` means all cores, -k all but k - 1 (as in scipy.fft)."""
+    cores = os.cpu_count() or 1
+    workers = -1 if workers is None else int(workers)
+    return max(cores + 1 + workers if workers < 0 else workers, 1)
 
 
 def fft_backend(backend: str | None = None) -> str:
