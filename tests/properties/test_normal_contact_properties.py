@@ -64,6 +64,8 @@ def test_bad_input_names_the_field():
         t.with_heights(np.where(np.eye(8, dtype=bool), np.nan, t.heights))
     with pytest.raises(InputError, match="contact_modulus"):
         solve_normal(t, -1.0, mean_pressure=1e6)
+    with pytest.raises(InputError, match="material: no material given"):
+        solve_normal(t, mean_pressure=1e6)
 
 
 def test_non_convergence_raises_with_residual_and_iterations():

@@ -192,7 +192,11 @@ def solve(
         if load_control and free_count:  # r with its step-set mean removed
             rt -= r_sum / free_count * t_sum
         tau = gt_sum / rt if rt > 0 else 0.0
-        step = tau if tau > 0 else 1.0 / stiffness  # Jacobi step for entering points when the set is empty
+        # Entering points get p = -step g: Polonsky-Keer's tau, or, when it is undefined (empty step
+        # set), the pixel self-stiffness 1/K_ii [Pa/m], the pressure that closes a lone overlap.
+        # Known limitation: with the preconditioner tau is dimensionless (t is built from M g), so
+        # entering points start from a vanishing pressure; see docs/normal_contact.md (2048^2).
+        step = tau if tau > 0 else stiffness
         entered, p_sum = kernels.update_pressure(p, t, g, tau, step, upper)
         conjugate = entered == 0
         if load_control and p_sum > 0:

@@ -68,6 +68,10 @@ def compliance_for(
         Threads for scipy.fft.
     """
     boundary = _boundary(topography, boundary)
+    if material is None and layer is None:
+        raise InputError(
+            "material", "no material given.", "pass a Material, the contact modulus E* in Pa, or layer=."
+        )
     shape = topography.shape if topography.dim == 2 else (topography.shape[0], 1)
     size = topography.size if topography.dim == 2 else (topography.size[0], _LINE_WIDTH)
     if layer is not None:
