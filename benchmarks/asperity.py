@@ -19,34 +19,18 @@ import time
 
 import numpy as np
 
-from roughcontact.asperity import LOADING_LAWS, gaussian_summits, statistical_load_unload
-from roughcontact.asperity.parameters import asperity_parameters
+from _timing import best_of
+from roughcontact.asperity import LOADING_LAWS
 from roughcontact.materials import get_material
 from roughcontact.models import paper002
 from roughcontact.models.thin_film_island import compress_island, paper002_island
-from roughcontact.topography.statistics import mccool_parameters
 
-SU8, TIP, SILICON = get_material("SU-8"), get_material("diamond flat tip"), get_material("silicon wafer")
-PARAMETERS = asperity_parameters(**paper002.MOMENTS, sample=SU8, counter_body=TIP)
+SU8, SILICON = get_material("SU-8"), get_material("silicon wafer")
+PARAMETERS = paper002.parameters()
 
 
 def statistical(law: str, repeats: int) -> dict:
-    summits = gaussian_summits(mccool_parameters(**paper002.MOMENTS))
-    best, result = np.inf, None
-    for _ in range(repeats):
-        start = time.perf_counter()
-        result = statistical_load_unload(
-            summits,
-            contact_modulus=PARAMETERS.contact_modulus,
-            hardness=SU8.hardness,
-            poissons_ratio=SU8.poissons_ratio,
-            yield_strength=SU8.yield_strength,
-            max_force=paper002.PEAK_FORCE,
-            nominal_area=paper002.ISLAND_SIDE**2,
-            reference_force=paper002.REFERENCE_FORCE,
-            law=law,
-        )
-        best = min(best, time.perf_counter() - start)
+    best, result = best_of(lambda: paper002.statistical_curve(law), repeats)
     omega_c = result.critical_interference
     return {
         "case": f"statistical {law}",

@@ -18,22 +18,13 @@ import argparse
 import json
 import os
 import platform
-import time
 
 import numpy as np
 
+from _timing import best_of
 from roughcontact.experiment import paper000_model_options, paper000_scans, paper000_tip
 from roughcontact.friction import winkler_lj_model
 from roughcontact.materials import get_material
-
-
-def best_of(function, repeats: int):
-    best, result = np.inf, None
-    for _ in range(repeats):
-        start = time.perf_counter()
-        result = function()
-        best = min(best, time.perf_counter() - start)
-    return best, result
 
 
 def surfaces(n: int):

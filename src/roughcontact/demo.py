@@ -19,7 +19,6 @@ from .topography import Topography
 from .topography.generate import self_affine
 from .topography.io import load_topography, read_topography, save_topography
 from .topography.process import combine
-from .topography.statistics import mccool_parameters
 
 
 def _demo_scan() -> Topography:
@@ -30,25 +29,13 @@ def _demo_scan() -> Topography:
 
 def _paper_002(report: Callable[[str], None]) -> None:
     """Report paper 002's asperity numbers and its statistical (Kogut-Etsion) load-unload."""
-    from .asperity import gaussian_summits, statistical_load_unload
-    from .asperity.parameters import asperity_parameters
     from .models import asperity_report, paper002
     from .units import format_si
 
     report("\n== seed paper 002: asperity parameters from the printed spectral moments ==")
     report(asperity_report.format_comparison(paper002.comparison()))
-    su8, tip = get_material("SU-8"), get_material("diamond flat tip")
-    parameters = asperity_parameters(**paper002.MOMENTS, sample=su8, counter_body=tip)
-    curve = statistical_load_unload(
-        gaussian_summits(mccool_parameters(**paper002.MOMENTS)),
-        contact_modulus=parameters.contact_modulus,
-        hardness=su8.hardness,
-        poissons_ratio=su8.poissons_ratio,
-        max_force=paper002.PEAK_FORCE,
-        nominal_area=paper002.ISLAND_SIDE**2,
-        reference_force=paper002.REFERENCE_FORCE,
-    )
-    omega_c = parameters.critical_interference
+    curve = paper002.statistical_curve()
+    omega_c = paper002.parameters().critical_interference
     peak, residual = curve.approach.max() / omega_c, curve.residual_interference / omega_c
     report(
         "statistical load-unload (Kogut-Etsion loading, eq. 11 unloading), "

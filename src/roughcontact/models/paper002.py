@@ -15,8 +15,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..asperity.parameters import asperity_parameters
+from ..asperity.greenwood_williamson import gaussian_summits
+from ..asperity.load_unload import StatisticalLoadUnload, statistical_load_unload
+from ..asperity.parameters import AsperityParameters, asperity_parameters
 from ..materials import get_material
+from ..topography.statistics import mccool_parameters
 
 MOMENTS = {"m0": 0.00213279e-12, "m2": 0.00230023, "m4": 0.0171036e12}
 """Printed spectral moments (eqs. 1-3) in SI: m0 [m^2], m2 [-], m4 [1/m^2]."""
@@ -139,3 +142,39 @@ def comparison() -> list[ComparisonRow]:
         )
     )
     return rows
+
+
+def parameters() -> AsperityParameters:
+    """Return the asperity parameters of SU-8 against the diamond flat tip from the printed moments (SI)."""
+    return asperity_parameters(
+        **MOMENTS, sample=get_material("SU-8"), counter_body=get_material("diamond flat tip")
+    )
+
+
+def statistical_curve(law: str = "kogut_etsion") -> StatisticalLoadUnload:
+    """Return the statistical load-unload of the paper's island (Gaussian summits of the printed moments).
+
+    Table I's SU-8 against the diamond flat tip, 1000 uN on the 25 x 25 um square, interference zero at
+    25 uN, as in the paper's Fig. 7.
+
+    Parameters
+    ----------
+    law : str
+        Loading law of one summit (:data:`roughcontact.asperity.load_unload.LOADING_LAWS`).
+
+    Returns
+    -------
+    StatisticalLoadUnload
+    """
+    su8 = get_material("SU-8")
+    return statistical_load_unload(
+        gaussian_summits(mccool_parameters(**MOMENTS)),
+        contact_modulus=parameters().contact_modulus,
+        hardness=su8.hardness,
+        poissons_ratio=su8.poissons_ratio,
+        yield_strength=su8.yield_strength,
+        max_force=PEAK_FORCE,
+        nominal_area=ISLAND_SIDE**2,
+        reference_force=REFERENCE_FORCE,
+        law=law,
+    )

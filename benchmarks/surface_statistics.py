@@ -12,7 +12,7 @@ with our default ``derivative="forward"``; the central/forward ratio is shown to
 curvature (both centred three-point stencils), and the radial PSDs (median |log ratio| of ours,
 interpolated in log-log, at their wavevectors; the bins differ: ours linear, theirs logarithmic).
 
-Prints a table, then one JSON line. Run: ``.venv/bin/python benchmarks/statistics.py``.
+Prints a table, then one JSON line. Run: ``.venv/bin/python benchmarks/surface_statistics.py``.
 """
 
 from __future__ import annotations
@@ -20,23 +20,14 @@ from __future__ import annotations
 import json
 import os
 import platform
-import time
 
 import numpy as np
 import SurfaceTopography
 
+from _timing import best_of
 from roughcontact.topography import generate, statistics
 
 SIZES = {256: 7, 1024: 3, 2048: 3}  # grid side -> repeats (best of N)
-
-
-def best_of(function, repeats: int) -> tuple[float, object]:
-    best, result = np.inf, None
-    for _ in range(repeats):
-        start = time.perf_counter()
-        result = function()
-        best = min(best, time.perf_counter() - start)
-    return best, result
 
 
 def ours_scalars(topography):
