@@ -43,11 +43,12 @@ def displacement_statistics(p, u, h0, cap):
 
 
 @nb.njit(**_JIT)
-def gap_and_residual(p, u, h0, delta, cap, g, g_free, free):
+def gap_and_residual(p, u, h0, delta, cap, g, g_free, free, admit_overlap):
     """Write the gap g = u + h0 - delta, the step set and g on it; return the residual terms.
 
     The step set ``free`` is the elastic contact 0 < p < cap plus the capped points that want to
-    unload (p >= cap and g > 0); ``g_free`` is g there and 0 elsewhere.
+    unload (p >= cap and g > 0) and, with ``admit_overlap``, the overlapping points out of contact
+    (p = 0 and g < 0); ``g_free`` is g there and 0 elsewhere.
 
     Returns
     -------
@@ -61,8 +62,8 @@ def gap_and_residual(p, u, h0, delta, cap, g, g_free, free):
         pi = p[i]
         if pi < cap:
             overlap = max(overlap, -gi)
-            step = pi > 0.0
-            if step:
+            step = pi > 0.0 or (admit_overlap and gi < 0.0)
+            if pi > 0.0:
                 s_p += pi
                 s_pg += pi * abs(gi)
         else:
@@ -115,15 +116,20 @@ def step_products(r, t, g, free):
 
 
 @nb.njit(**_JIT)
-def update_pressure(p, t, g, tau, entering_step, cap):
-    """Step p -= tau t, project on [0, cap], let overlapping points enter by -entering_step g.
+def update_pressure(p, t, g, tau, entering_step, cap, admit_overlap):
+    """Step p -= tau t and project on [0, cap]; return (number of points that entered, sum of the new p).
 
-    Returns (number of points that entered, sum of the new p).
+    Without ``admit_overlap`` overlapping points left at p = 0 enter by -entering_step g and are
+    counted; with it they took part in the step, and a point entered when its p rose from 0.
     """
     entered, s_p = 0, 0.0
     for i in range(p.size):
-        pi = min(max(p[i] - tau * t[i], 0.0), cap)
-        if pi <= 0.0 and g[i] < 0.0:
+        old = p[i]
+        pi = min(max(old - tau * t[i], 0.0), cap)
+        if admit_overlap:
+            if old <= 0.0 and pi > 0.0:
+                entered += 1
+        elif pi <= 0.0 and g[i] < 0.0:
             entered += 1
             pi = min(max(pi - entering_step * g[i], 0.0), cap)
         p[i] = pi

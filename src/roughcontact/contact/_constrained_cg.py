@@ -24,8 +24,12 @@ projected on the feasible set, with the box constraint of Almqvist et al. (2007)
    surfaces); beta = (g.z) / (g.z)_old, reset to 0 after a step in which points entered the
    contact; points at the cap with g > 0 (which want to unload) join the free set; r = K t
    (one FFT pair), with its free-set mean removed under load control; step tau = (g.t) / (r.t).
-4. p -= tau t on the free set; clip to [0, p_max]; points out of contact that overlap
-   (p = 0 with g < 0) enter by -tau g (Polonsky-Keer's I_ol step); clip again.
+   Preconditioned, the points out of contact that overlap (p = 0 with g < 0) join the set too.
+4. p -= tau t on the set; clip to [0, p_max]. Plain: points out of contact that overlap enter by
+   -tau g (Polonsky-Keer's I_ol step); clip again. Preconditioned they already took part in the
+   step: -tau g would be no pressure there, since tau is dimensionless when t is built from M g
+   (with that step the solver stalled at a residual of 0.1 on a 2048^2 self-affine surface);
+   "entered" means p went from 0 to positive, which resets the conjugacy as in Polonsky-Keer.
 5. Load control: rescale the pressure to the target force (Polonsky-Keer). A cap is only
    supported under displacement control (the caller finds the approach of a force by root
    finding, :mod:`roughcontact.contact.plastic`).
@@ -162,6 +166,9 @@ def solve(
     free = np.empty(h0.shape, dtype=np.uint8)
     g_norm_old = 1.0
     conjugate = False
+    # Preconditioned: overlapping points with p = 0 join the step set, so the step itself gives them a
+    # pressure (see the module docstring); plain Polonsky-Keer lets them enter by -tau g.
+    admit = preconditioner is not None
     delta = approach
     for iteration in range(max_iterations + 1):
         u = _flat(compliance(p.reshape(shape)))
@@ -169,7 +176,7 @@ def solve(
         if load_control:
             delta = elastic_sum / elastic_count if elastic_count else float(np.min(u + h0))
         p_sum, pg_sum, overlap, opened, free_count, gg_sum = kernels.gap_and_residual(
-            p, u, h0, delta, upper, g, g_free, free
+            p, u, h0, delta, upper, g, g_free, free, admit
         )
         u_std = np.sqrt(max(uu_sum / u.size - (u_sum / u.size) ** 2, 0.0))
         residual = _residual(pg_sum / p_sum if p_sum > 0 else 0.0, overlap, opened, height_scale + u_std)
@@ -192,12 +199,10 @@ def solve(
         if load_control and free_count:  # r with its step-set mean removed
             rt -= r_sum / free_count * t_sum
         tau = gt_sum / rt if rt > 0 else 0.0
-        # Entering points get p = -step g: Polonsky-Keer's tau, or, when it is undefined (empty step
+        # Plain Polonsky-Keer: entering points get p = -step g, tau or, when it is undefined (empty step
         # set), the pixel self-stiffness 1/K_ii [Pa/m], the pressure that closes a lone overlap.
-        # Known limitation: with the preconditioner tau is dimensionless (t is built from M g), so
-        # entering points start from a vanishing pressure; see docs/normal_contact.md (2048^2).
         step = tau if tau > 0 else stiffness
-        entered, p_sum = kernels.update_pressure(p, t, g, tau, step, upper)
+        entered, p_sum = kernels.update_pressure(p, t, g, tau, step, upper, admit)
         conjugate = entered == 0
         if load_control and p_sum > 0:
             p *= target / p_sum
