@@ -191,6 +191,14 @@ def _plot(args: argparse.Namespace) -> int:
     return 0
 
 
+def _add_material_options(parser: argparse.ArgumentParser, body: str, counter: str, names: str) -> None:
+    """Add ``--material``/``--counter`` options: a library name, or Young's modulus and Poisson's ratio."""
+    for prefix, what in (("material", body), ("counter", counter)):
+        parser.add_argument(f"--{prefix}", help=f"library material of {what}, e.g. {names}")
+        parser.add_argument(f"--{prefix}-youngs-modulus", help=f"Young's modulus of {what}, e.g. '70 GPa'")
+        parser.add_argument(f"--{prefix}-poissons-ratio", type=float, help=f"Poisson's ratio of {what}")
+
+
 def _material(args: argparse.Namespace, prefix: str, *, required: bool = False):
     """Return the material of ``--PREFIX`` (library name) or ``--PREFIX-youngs-modulus``, or None."""
     from .materials import Material, get_material
@@ -306,10 +314,9 @@ def build_parser() -> argparse.ArgumentParser:
         description="Elastic (or elastic-perfectly-plastic with --hardness) normal contact of the surface "
         "against a flat. Give exactly one of --pressure, --force, --approach, with units.",
     )
-    for prefix, what in (("material", "the surface's body"), ("counter", "the flat (default: rigid)")):
-        contact.add_argument(f"--{prefix}", help=f"library material of {what}, e.g. SU-8, polysilicon, SiO2")
-        contact.add_argument(f"--{prefix}-youngs-modulus", help=f"Young's modulus of {what}, e.g. '70 GPa'")
-        contact.add_argument(f"--{prefix}-poissons-ratio", type=float, help=f"Poisson's ratio of {what}")
+    _add_material_options(
+        contact, "the surface's body", "the flat (default: rigid)", "SU-8, polysilicon, SiO2"
+    )
     contact.add_argument("--pressure", help="nominal mean pressure, e.g. '20 MPa'")
     contact.add_argument("--force", help="total force, e.g. '10 uN'")
     contact.add_argument("--approach", help="rigid approach from the first touch, e.g. '5 nm'")

@@ -10,7 +10,7 @@ import argparse
 import json
 from pathlib import Path
 
-from .cli import _json_safe, _material, _read, _read_options
+from .cli import _add_material_options, _json_safe, _material, _read, _read_options
 from .errors import InputError
 from .units import format_si, quantity
 
@@ -237,14 +237,7 @@ def add_asperity_commands(commands) -> None:
     asperity.add_argument(
         "--paper002", action="store_true", help="seed paper 002's moments, materials, loads"
     )
-    for prefix, what in (("material", "the rough body"), ("counter", "the flat (default: rigid)")):
-        asperity.add_argument(
-            f"--{prefix}", help=f"library material of {what}, e.g. SU-8, 'diamond flat tip'"
-        )
-        asperity.add_argument(
-            f"--{prefix}-youngs-modulus", help=f"Young's modulus of {what}, e.g. '7.64 GPa'"
-        )
-        asperity.add_argument(f"--{prefix}-poissons-ratio", type=float, help=f"Poisson's ratio of {what}")
+    _add_material_options(asperity, "the rough body", "the flat (default: rigid)", "SU-8, 'diamond flat tip'")
     asperity.add_argument(
         "--hardness", help="hardness of the rough body, e.g. '0.462 GPa' (default: material's)"
     )

@@ -10,7 +10,7 @@ import argparse
 import json
 from pathlib import Path
 
-from .cli import _json_safe, _material, _read, _read_options, _size_argument
+from .cli import _add_material_options, _json_safe, _material, _read, _read_options, _size_argument
 from .units import format_si, quantity
 
 _UNITS = {
@@ -205,13 +205,9 @@ def add_friction_commands(commands) -> None:
         "--loads, with the adhesive and mechanical parts and mu = F / N.",
     )
     friction.add_argument("counter_file", nargs="?", type=Path, help="topography of the counter-body (tip)")
-    for prefix, what in (
-        ("material", "the surface's body"),
-        ("counter", "the counter-body (default: rigid)"),
-    ):
-        friction.add_argument(f"--{prefix}", help=f"library material of {what}, e.g. polysilicon, SiO2")
-        friction.add_argument(f"--{prefix}-youngs-modulus", help=f"Young's modulus of {what}, e.g. '70 GPa'")
-        friction.add_argument(f"--{prefix}-poissons-ratio", type=float, help=f"Poisson's ratio of {what}")
+    _add_material_options(
+        friction, "the surface's body", "the counter-body (default: rigid)", "polysilicon, SiO2"
+    )
     friction.add_argument("--surface-energy", help="surface energy of the surface, e.g. '50 mJ/m^2'")
     friction.add_argument(
         "--counter-surface-energy", help="surface energy of the counter-body (default: the library's)"
