@@ -157,7 +157,7 @@ def solve(
         target = force / pixel_area  # target sum of pixel pressures
         if p.sum() <= 0:
             p = np.full(h0.shape, target / h0.size)
-        p = p * _rescale_factor(p, target)
+        p = p * (target / p.sum())
     height_scale = _rms(h0)
     shape, h0 = h0.shape, np.ascontiguousarray(h0).ravel()
     p = np.ascontiguousarray(p, dtype=float).ravel()
@@ -218,9 +218,3 @@ def _residual(weighted_gap: float, overlap: float, open_gap: float, height_scale
     """Return the scale-free residual of the module docstring from its three terms [m]."""
     worst = max(weighted_gap, overlap, open_gap)
     return worst / height_scale if height_scale > 0 else 0.0
-
-
-def _rescale_factor(p: np.ndarray, target: float) -> float:
-    """Return the factor that scales p to sum(p) = target (1 for p = 0)."""
-    total = float(p.sum())
-    return target / total if total > 0 else 1.0
