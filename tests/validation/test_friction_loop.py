@@ -1,0 +1,198 @@
+"""Friction-loop analysis (paper 001 sec. 4-5) on loops built from the Mindlin-Deresiewicz Masing rule."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from roughcontact.analytic.mindlin import (
+    dissipated_energy_displacement,
+    masing_force,
+    sliding_displacement,
+)
+from roughcontact.errors import InputError
+from roughcontact.experiment.friction_loop import (
+    analyse_loop,
+    eq9_force,
+    loop_energy,
+    read_loop_csv,
+    split_branches,
+)
+
+MU, P, A, G = 0.153, 25e-3, 40e-6, 0.1e9
+ARGS = (MU, P, A, G)
+DELTA0 = sliding_displacement(*ARGS)
+STROKE = 2.8e-6
+LEG = 1501
+EXAMPLE = Path(__file__).parents[2] / "examples" / "paper001_measured_loop.csv"
+
+
+def paper_path(stroke=STROKE, cycles=4, points=LEG):
+    """0 -> stroke -> 0, ``cycles`` times (paper 001 Fig. 6)."""
+    leg = np.linspace(0.0, stroke, points)
+    return np.concatenate([leg] + [leg[::-1][1:], leg[1:]] * (cycles - 1) + [leg[::-1][1:]])
+
+
+def mindlin_stiffness(distance):
+    """K_L on a Masing branch at ``distance`` from the reversal: Q_M'(x/2)."""
+    return 1.5 * MU * P / DELTA0 * np.sqrt(1.0 - distance / (2.0 * DELTA0))
+
+
+@pytest.fixture(scope="module")
+def clean():
+    path = paper_path()
+    force = masing_force(path, *ARGS)
+    return path, force, analyse_loop(path, force, P)
+
+
+def test_stroke_mu_energy_exact(clean):
+    path, force, result = clean
+    assert result.stroke == pytest.approx(STROKE, rel=1e-12)
+    assert result.mu == pytest.approx(MU, rel=1e-5)
+    assert result.energy == pytest.approx(dissipated_energy_displacement(STROKE, *ARGS), rel=1e-5)
+    assert len(result.reversals) == 7
+    assert np.all(np.asarray(result.reversals) % (LEG - 1) == 0)
+
+
+def test_eq9_fit_is_the_masing_branch(clean):
+    _, _, result = clean
+    b = result.branch
+    assert b.direction == 1
+    # Mindlin is exactly of the eq. 9 form: c1 = 2 mu P, c2 = 1/(2 delta_0), n = 3/2
+    assert b.c1 == pytest.approx(2 * MU * P, rel=1e-5)
+    assert b.c2 == pytest.approx(1 / (2 * DELTA0), rel=1e-5)
+    assert b.n == pytest.approx(1.5, rel=1e-5)
+    assert b.span == pytest.approx(2 * MU * P, rel=1e-12)
+    # K_L at A, B, C within 1e-5 of Mindlin (tolerance stated in docs/presliding_analysis.md)
+    assert np.allclose(b.point_stiffness, mindlin_stiffness(b.point_distance), rtol=1e-5)
+    # the points lie at 25/50/75 % of the span: Q_M(x/2) * 2 = f * 2 mu P
+    change = b.direction * (b.point_force - b.reversal_force)
+    assert np.allclose(change, np.array([0.25, 0.5, 0.75]) * 2 * MU * P, rtol=1e-9)
+    assert np.allclose(
+        b.point_distance, 2 * DELTA0 * (1 - (1 - np.array([0.25, 0.5, 0.75])) ** (2 / 3)), rtol=1e-5
+    )
+    # point D: start of full sliding at 2 delta_0 (within the plateau tolerance)
+    assert b.sliding_distance == pytest.approx(2 * DELTA0, rel=0.02)
+    assert set(result.lateral_stiffness) == {"A", "B", "C"}
+    scalars = result.scalars()
+    assert scalars["K_L_B"] == pytest.approx(b.point_stiffness[1])
+    assert {"stroke", "mu", "energy", "c1", "c2", "n", "distance_D"} <= set(scalars)
+
+
+def test_both_branches_and_other_fractions(clean):
+    path, force, _ = clean
+    result = analyse_loop(path, force, P, branch="decreasing", fractions=(0.1, 0.9))
+    assert result.branch.direction == -1
+    assert result.point_names == ("A", "B")
+    assert np.allclose(
+        result.branch.point_stiffness, mindlin_stiffness(result.branch.point_distance), rtol=1e-5
+    )
+
+
+def test_symmetric_cycles():
+    leg = np.linspace(-1.0, 1.0, 1201) * 4 * DELTA0
+    path = np.concatenate([np.linspace(0, 4 * DELTA0, 301), leg[::-1][1:], leg[1:], leg[::-1][1:], leg[1:]])
+    force = masing_force(path, *ARGS)
+    result = analyse_loop(path, force, P)
+    assert result.stroke == pytest.approx(8 * DELTA0, rel=1e-12)
+    assert result.mu == pytest.approx(MU, rel=1e-5)
+    assert result.energy == pytest.approx(dissipated_energy_displacement(8 * DELTA0, *ARGS), rel=1e-4)
+
+
+def test_noise_robustness(clean):
+    path, force, exact = clean
+    rng = np.random.default_rng(3)
+    noisy_force = force + 0.01 * MU * P * rng.standard_normal(force.size)  # 1 % of the sliding force
+    noisy_path = path + 0.01 * DELTA0 * rng.standard_normal(path.size)
+    result = analyse_loop(noisy_path, noisy_force, P)
+    # reversal detection still right (within a few samples of the true turning points)
+    assert len(result.reversals) == len(exact.reversals)
+    assert np.all(np.abs(np.asarray(result.reversals) - np.asarray(exact.reversals)) <= 5)
+    assert result.mu == pytest.approx(MU, rel=2e-3)
+    assert result.stroke == pytest.approx(STROKE, rel=2e-3)
+    assert np.allclose(result.branch.point_stiffness, exact.branch.point_stiffness, rtol=0.1)
+    assert result.energy == pytest.approx(exact.energy, rel=0.02)
+
+
+def test_split_branches_ignores_noise_below_threshold():
+    rng = np.random.default_rng(0)
+    x = np.concatenate([np.linspace(0, 1, 200), np.linspace(1, 0, 200)[1:]]) + 0.01 * rng.standard_normal(399)
+    branches = split_branches(x)
+    assert len(branches) == 2
+    assert abs(branches[0][1] - 199) <= 5
+
+
+def test_csv_unit_invariance(tmp_path, clean):
+    path, force, _ = clean
+    micro = tmp_path / "loop_um_mN.csv"
+    si = tmp_path / "loop_m_N.txt"
+    micro.write_text(
+        "# comment\ndisplacement [um],force [mN]\n"
+        + "".join(f"{d * 1e6:.17g},{f * 1e3:.17g}\n" for d, f in zip(path, force, strict=True))
+    )
+    si.write_text(
+        "".join(
+            f"{t:.17g}\t{d:.17g}\t{f:.17g}\n"
+            for t, d, f in zip(np.arange(path.size) * 0.1, path, force, strict=True)
+        )
+    )
+    a = read_loop_csv(micro)
+    b = read_loop_csv(si, displacement_unit="m", force_unit="N")
+    assert b.time is not None and a.time is None
+    ra, rb = analyse_loop(a, None, P), analyse_loop(b, None, P)
+    assert ra.branch.point_stiffness == pytest.approx(rb.branch.point_stiffness, rel=1e-9)
+    assert ra.stroke == pytest.approx(rb.stroke, rel=1e-12)
+    assert ra.mu == pytest.approx(rb.mu, rel=1e-12)
+    with pytest.raises(InputError) as info:
+        read_loop_csv(micro, displacement_unit="nm")
+    assert info.value.field == "displacement_unit"
+
+
+def test_example_csv_reproduces_table1():
+    loop = read_loop_csv(EXAMPLE)
+    assert loop.time is not None
+    result = analyse_loop(loop, None, 25e-3)
+    assert result.stroke == pytest.approx(2.805e-6, rel=5e-3)
+    assert result.mu == pytest.approx(0.153, rel=5e-3)
+    assert "SYNTHETIC" in EXAMPLE.read_text().splitlines()[0]
+
+
+def test_loop_energy_of_rectangle():
+    assert loop_energy([0, 2, 2, 0], [-1, -1, 1, 1]) == pytest.approx(4.0)
+    assert eq9_force(10.0, 2.0, 1.0, 1.5) == pytest.approx(2.0)  # saturated beyond 1/c2
+
+
+@pytest.mark.parametrize(
+    "displacement, force, field",
+    [
+        (np.r_[np.linspace(0, 1, 20), np.nan], np.zeros(21), "displacement"),
+        (np.linspace(0, 1, 20), np.r_[np.zeros(19), np.inf], "force"),
+        (np.linspace(0, 1, 5), np.zeros(5), "displacement"),
+        (np.linspace(0, 1, 50), np.linspace(0, 1, 50), "displacement"),  # no reversal
+    ],
+)
+def test_bad_input(displacement, force, field):
+    with pytest.raises(InputError) as info:
+        analyse_loop(displacement, force, P)
+    assert info.value.field == field
+
+
+def test_bad_options(clean, tmp_path):
+    path, force, _ = clean
+    for kwargs, field in (
+        ({"fractions": (0.5, 1.2)}, "fractions"),
+        ({"branch": "up"}, "branch"),
+        ({"plateau_tolerance": 0.9}, "plateau_tolerance"),
+    ):
+        with pytest.raises(InputError) as info:
+            analyse_loop(path, force, P, **kwargs)
+        assert info.value.field == field
+    with pytest.raises(InputError) as info:
+        analyse_loop(path, force, -1.0)
+    assert info.value.field == "normal_force"
+    with pytest.raises(InputError):
+        read_loop_csv(tmp_path / "missing.csv")
+    bad = tmp_path / "bad.csv"
+    bad.write_text("position,load\n1,2\n")
+    with pytest.raises(InputError, match="displacement and force"):
+        read_loop_csv(bad)
