@@ -338,6 +338,9 @@ def build_parser() -> argparse.ArgumentParser:
     from .cli_asperity import add_asperity_commands
 
     add_asperity_commands(commands)
+    from .cli_indentation import add_indentation_commands
+
+    add_indentation_commands(commands)
     return parser
 
 

@@ -1,0 +1,159 @@
+"""Nanoindentation input: CSV columns and units, segments, and errors that name the field and the fix."""
+
+import numpy as np
+import pytest
+
+from roughcontact.errors import InputError, UnitError
+from roughcontact.experiment.nanoindentation import (
+    IndentationCurve,
+    berkovich_area,
+    detect_segments,
+    oliver_pharr,
+    read_indentation_csv,
+    synthetic_indentation_curve,
+)
+
+
+@pytest.fixture(scope="module")
+def curve():
+    return synthetic_indentation_curve(0.98e9, creep_rate=1e-9, sampling_rate=2.0)
+
+
+def _write(tmp_path, text, name="c.csv"):
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def test_header_names_and_units_are_detected(tmp_path):
+    path = _write(
+        tmp_path,
+        "# comment\nTime [s];Displacement [nm];Force [mN]\n"
+        + "".join(f"{i};{i * 10};{i * 0.1}\n" for i in range(12)),
+    )
+    read = read_indentation_csv(path)
+    np.testing.assert_allclose(read.depth[:3], [0, 1e-8, 2e-8], rtol=1e-12, atol=0)
+    np.testing.assert_allclose(read.load[:3], [0, 1e-4, 2e-4], rtol=1e-12, atol=0)
+    np.testing.assert_allclose(read.time[:3], [0, 1, 2], rtol=0, atol=0)
+
+
+def test_overrides_name_columns_and_units(tmp_path):
+    path = _write(tmp_path, "Pd,Pn,extra\n" + "".join(f"{i},{i},{i}\n" for i in range(12)))
+    read = read_indentation_csv(path, depth_unit="um", load_unit="uN")
+    assert read.time is None and read.depth[1] == pytest.approx(1e-6) and read.load[1] == pytest.approx(1e-6)
+    other = read_indentation_csv(path, depth_column="extra", depth_unit="nm", load_unit="N")
+    assert other.depth[1] == pytest.approx(1e-9)
+
+
+@pytest.mark.parametrize(
+    ("text", "kwargs", "field"),
+    [
+        ("depth,load\n" + "1,1\n" * 12, {}, "depth_unit"),
+        ("depth (nm),load (mN)\n" + "1,1\n" * 12, {"load_unit": "nm"}, "load_unit"),
+        ("depth (nm),weight (mN)\n" + "1,1\n" * 12, {}, "load_column"),
+        ("depth (nm),load (mN)\n" + "1,1\n" * 12, {"depth_column": "height"}, "depth_column"),
+    ],
+)
+def test_csv_errors_name_the_option(tmp_path, text, kwargs, field):
+    with pytest.raises(InputError) as error:
+        read_indentation_csv(_write(tmp_path, text), **kwargs)
+    assert error.value.field == field and error.value.fix
+
+
+def test_unit_of_wrong_dimension_is_a_unit_error(tmp_path):
+    with pytest.raises(UnitError):
+        read_indentation_csv(_write(tmp_path, "depth (mN),load (mN)\n" + "1,1\n" * 12))
+
+
+def test_text_cell_and_missing_file(tmp_path):
+    with pytest.raises(InputError, match="not a number"):
+        read_indentation_csv(_write(tmp_path, "depth (nm),load (mN)\n1,1\nabc,2\n"))
+    with pytest.raises(InputError, match="not found"):
+        read_indentation_csv(tmp_path / "nothing.csv")
+
+
+def test_nan_values_name_the_column(curve):
+    depth = curve.depth.copy()
+    depth[5] = np.nan
+    with pytest.raises(InputError, match="NaN") as error:
+        IndentationCurve(depth, curve.load, curve.time)
+    assert error.value.field == "depth" and "remove" in error.value.fix
+
+
+def test_too_few_points_and_mismatched_lengths():
+    with pytest.raises(InputError, match="at least") as error:
+        IndentationCurve(np.arange(5.0), np.arange(5.0))
+    assert error.value.field == "depth"
+    with pytest.raises(InputError) as error:
+        IndentationCurve(np.arange(12.0), np.arange(11.0))
+    assert error.value.field == "load"
+
+
+def test_time_must_increase(curve):
+    time = curve.time.copy()
+    time[10] = time[9]
+    with pytest.raises(InputError) as error:
+        IndentationCurve(curve.depth, curve.load, time)
+    assert error.value.field == "time"
+
+
+def test_no_unloading_segment_is_refused(curve):
+    stop = detect_segments(curve).unloading.start + 1
+    cut = IndentationCurve(curve.depth[:stop], curve.load[:stop], curve.time[:stop])
+    with pytest.raises(InputError, match="no unloading") as error:
+        oliver_pharr(cut)
+    assert error.value.field == "unloading"
+
+
+def test_depth_that_does_not_fall_with_the_load_is_refused(curve):
+    rng = np.random.default_rng(0)
+    shuffled = curve.depth.copy()
+    un = detect_segments(curve).unloading
+    shuffled[un] = rng.permutation(shuffled[un])
+    with pytest.raises(InputError, match="does not fall") as error:
+        oliver_pharr(IndentationCurve(shuffled, curve.load, curve.time))
+    assert error.value.field == "unloading"
+
+
+def test_negative_depth_sign_is_refused(curve):
+    with pytest.raises(InputError, match="multiply") as error:
+        oliver_pharr(IndentationCurve(-curve.depth, curve.load, curve.time))
+    assert error.value.field == "depth"
+
+
+def test_no_hold_with_correction_asks_for_creep_fit_none():
+    curve = synthetic_indentation_curve(0.98e9, hold_time=0.1, sampling_rate=5.0)
+    with pytest.raises(InputError, match="creep_fit='none'") as error:
+        oliver_pharr(curve)
+    assert error.value.field == "hold"
+    assert oliver_pharr(curve, creep_fit="none").youngs_modulus == pytest.approx(0.98e9, rel=1e-3)
+
+
+def test_bad_options(curve):
+    with pytest.raises(InputError) as error:
+        oliver_pharr(curve, rate_sign="signed")
+    assert error.value.field == "rate_sign"
+    with pytest.raises(InputError) as error:
+        oliver_pharr(curve, fit_range=(0.9, 0.2))
+    assert error.value.field == "fit_range"
+    with pytest.raises(InputError) as error:
+        oliver_pharr(curve, creep_fit="log")
+    assert error.value.field == "creep_fit"
+
+
+def test_printed_sign_overcorrecting_to_negative_compliance_is_refused():
+    curve = synthetic_indentation_curve(0.98e9, creep_rate=12e-9, hold_time=10.0, sampling_rate=5.0)
+    with pytest.raises(InputError, match="compliance") as error:
+        oliver_pharr(curve, rate_sign="printed", fit_range=(0.8, 1.0))
+    assert error.value.field == "rate_sign"
+
+
+def test_scalars_are_flat_and_area_function_and_beta_enter(curve):
+    result = oliver_pharr(curve)
+    scalars = result.scalars()
+    assert all(isinstance(v, float | int | str) for v in scalars.values())
+    assert scalars["rate_sign"] == "magnitude" and scalars["indenter"] == "diamond Berkovich"
+    assert result.contact_area == pytest.approx(berkovich_area(result.contact_depth))
+    doubled = oliver_pharr(curve, area_function=lambda d: 4 * berkovich_area(d))
+    assert doubled.reduced_modulus == pytest.approx(result.reduced_modulus / 2)
+    assert oliver_pharr(curve, beta=1.034).reduced_modulus == pytest.approx(result.reduced_modulus / 1.034)
