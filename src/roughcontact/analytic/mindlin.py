@@ -649,6 +649,18 @@ class Paper001Mindlin:
         """K_L = 8 a G (1 - F_x / (mu F0))^(1/3), eq. 12 [N/m], at tangential force F_x [N]."""
         return lateral_stiffness(force, self.mu, self.normal_force, self.contact_radius, self.shear_modulus)
 
+    def point_stiffness(self, fractions=(0.25, 0.5, 0.75)) -> np.ndarray:
+        """K_L [N/m] at the loop points A, B, C of :mod:`roughcontact.experiment.friction_loop`.
+
+        A point at the fraction f of a sliding branch's force span 2 mu F0 lies where the
+        Masing branch has changed by 2 Q_M(x/2) = f 2 mu F0, so its stiffness is eq. 12 at
+        F_x = f mu F0: K_L = 8 a G (1 - f)^(1/3).
+        """
+        f = np.asarray(fractions, dtype=float)
+        if np.any((f < 0) | (f > 1)) or not np.all(np.isfinite(f)):
+            raise InputError("fractions", f"{fractions!r} must lie in [0, 1].", "use e.g. (0.25, 0.5, 0.75).")
+        return self.initial_stiffness * np.cbrt(1.0 - f)
+
     def lateral_stiffness_at_displacement(self, displacement):
         """K_L = 3 mu F0 / (2 delta_0) (1 - delta_x / delta_0)^(1/2), eq. 12 [N/m]."""
         delta0 = self.sliding_distance

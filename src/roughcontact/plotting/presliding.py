@@ -1,0 +1,267 @@
+"""Figures of the pre-sliding analysis of paper 001: hysteresis loops, stick/slip maps, lateral stiffness.
+
+* :func:`plot_hysteresis_loops` - friction loops, simulated and measured (paper 001 Figs. 13-14);
+* :func:`plot_stick_slip_maps` - normalised shear sqrt(qx^2 + qy^2)/(mu p) maps (Figs. 11-12);
+* :func:`plot_lateral_stiffness` - K_L at points A, B, C vs normal load with Mindlin (Fig. 15).
+
+Inputs are SI (m, N, N/m); the axes show um, mN and mN/um (= kN/m). Each function
+returns the :class:`matplotlib.figure.Figure` (its axes are ``fig.axes``); nothing is shown and
+no pyplot state is touched (Agg-safe).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+from matplotlib import colormaps
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+
+from ..errors import InputError
+from .topography import _axes
+
+UM, MN = 1e-6, 1e-3
+POINT_COLOURS = {"A": "tab:red", "B": "tab:blue", "C": "black", "D": "tab:green"}
+"""Colours of the points, as in paper 001 Fig. 15 (A red, B blue, C black)."""
+MINDLIN_STYLES = {"johnson": "--", "printed": "-."}
+SLIP_LEVEL = 0.999
+"""Normalised shear at or above which a point counts as slipping in the maps."""
+
+
+def _curves(curves, field: str) -> list[tuple[np.ndarray, np.ndarray, str]]:
+    out = []
+    for item in curves or ():
+        try:
+            delta, force, label = item
+        except (TypeError, ValueError):
+            raise InputError(
+                field, "expected a list of (displacement, force, label).", "pass [(delta, F, 'label')]."
+            ) from None
+        delta, force = np.asarray(delta, dtype=float), np.asarray(force, dtype=float)
+        if delta.shape != force.shape or delta.ndim != 1:
+            raise InputError(
+                field, f"curve {label!r}: displacement and force differ in shape.", "give equal 1-D arrays."
+            )
+        out.append((delta, force, str(label)))
+    return out
+
+
+def plot_hysteresis_loops(
+    simulated: Sequence[tuple],
+    measured: Sequence[tuple] | None = None,
+    *,
+    ax: Axes | None = None,
+    title: str | None = None,
+) -> Figure:
+    """Draw friction hysteresis loops, friction force vs tangential displacement (Figs. 13-14).
+
+    Simulated loops are thick solid lines, measured ones thin dashed lines (the paper overlays
+    the loops of five spots on the simulation).
+
+    Parameters
+    ----------
+    simulated : list of (delta, F, label)
+        Displacement [m] and force [N] arrays and a legend label per loop.
+    measured : list of (delta, F, label), optional
+        The same for measured loops.
+    ax : matplotlib Axes, optional
+        Axes to draw on.
+    title : str, optional
+        Axes title.
+
+    Returns
+    -------
+    Figure
+    """
+    fig, ax = _axes(ax, figsize=(5.5, 4.0))
+    for delta, force, label in _curves(simulated, "simulated"):
+        ax.plot(delta / UM, force / MN, "-", linewidth=2.0, label=label)
+    for delta, force, label in _curves(measured, "measured"):
+        ax.plot(delta / UM, force / MN, "--", linewidth=1.0, alpha=0.8, label=label)
+    ax.axhline(0.0, color="0.7", linewidth=0.5)
+    ax.set_xlabel("tangential displacement δ_x (µm)")
+    ax.set_ylabel("friction force F_x (mN)")
+    if title:
+        ax.set_title(title)
+    if ax.get_lines():
+        ax.legend(fontsize="small")
+    return fig
+
+
+def plot_stick_slip_maps(
+    maps: Mapping[str, np.ndarray],
+    extent,
+    *,
+    zoom: tuple[float, float, float, float] | None = None,
+    columns: int = 3,
+    cmap: str = "jet",
+) -> Figure:
+    """Draw maps of the normalised shear sqrt(qx^2 + qy^2)/(mu p) (paper 001 Figs. 11-12).
+
+    The colour scale is fixed to 0..1: values below 1 stick, 1 is slip (values within
+    :data:`SLIP_LEVEL` of 1 are outlined by a white contour). NaN (outside the contact) is
+    drawn blank. Each panel title gives the slip fraction of the contact area.
+
+    Parameters
+    ----------
+    maps : dict of str to 2-D array
+        Label (e.g. ``"25 mN, A"``) to the normalised shear, rows along y, NaN outside contact.
+    extent : (xmin, xmax, ymin, ymax) in m, or dict of label to it
+        Physical extent of the maps (as ``imshow``'s, ``origin="lower"``).
+    zoom : (xmin, xmax, ymin, ymax) in m, optional
+        Axis limits of a zoomed-in view (the paper shows 0.2 mm x 0.2 mm).
+    columns : int
+        Panels per row.
+    cmap : str
+        Colour map.
+
+    Returns
+    -------
+    Figure
+
+    Raises
+    ------
+    InputError
+        No maps, a map that is not 2-D, or a missing or malformed extent.
+    """
+    if not maps:
+        raise InputError("maps", "is empty.", "pass {label: 2-D array}.")
+    labels = list(maps)
+    columns = max(1, min(columns, len(labels)))
+    rows = -(-len(labels) // columns)
+    fig = Figure(figsize=(3.6 * columns + 0.8, 3.2 * rows), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(rows, columns, squeeze=False)).ravel()
+    colour_map = colormaps[cmap].with_extremes(bad="white")
+    image = None
+    for ax, label in zip(axes, labels, strict=False):
+        values = np.asarray(maps[label], dtype=float)
+        if values.ndim != 2:
+            raise InputError("maps", f"map {label!r} has shape {values.shape}.", "give 2-D arrays.")
+        box = extent[label] if isinstance(extent, Mapping) else extent
+        try:
+            x0, x1, y0, y1 = (float(v) for v in box)
+        except (TypeError, ValueError):
+            raise InputError(
+                "extent", f"{box!r} for {label!r}.", "give (xmin, xmax, ymin, ymax) in m."
+            ) from None
+        scale, unit = (1e-3, "mm") if max(abs(x1 - x0), abs(y1 - y0)) >= 1e-3 else (UM, "µm")
+        image = ax.imshow(
+            np.ma.masked_invalid(values),
+            origin="lower",
+            extent=(x0 / scale, x1 / scale, y0 / scale, y1 / scale),
+            cmap=colour_map,
+            vmin=0.0,
+            vmax=1.0,
+            interpolation="nearest",
+        )
+        finite = np.isfinite(values)
+        slipping = finite & (values >= SLIP_LEVEL)
+        if slipping.any() and (~slipping & finite).any():
+            ny, nx = values.shape
+            xs = x0 / scale + (np.arange(nx) + 0.5) * (x1 - x0) / scale / nx
+            ys = y0 / scale + (np.arange(ny) + 0.5) * (y1 - y0) / scale / ny
+            ax.contour(
+                xs, ys, np.where(finite, values, 0.0), levels=[SLIP_LEVEL], colors="white", linewidths=0.6
+            )
+        fraction = slipping.sum() / max(finite.sum(), 1)
+        ax.set_title(f"{label} (slip {100 * fraction:.0f} %)", fontsize="medium")
+        ax.set_xlabel(f"x ({unit})")
+        ax.set_ylabel(f"y ({unit})")
+        if zoom is not None:
+            ax.set_xlim(zoom[0] / scale, zoom[1] / scale)
+            ax.set_ylim(zoom[2] / scale, zoom[3] / scale)
+    for ax in axes[len(labels) :]:
+        ax.set_visible(False)
+    colourbar = fig.colorbar(image, ax=list(axes[: len(labels)]), shrink=0.9)
+    colourbar.set_label("√(q_x² + q_y²) / (μ p)   (1 = slip)")
+    return fig
+
+
+def plot_lateral_stiffness(
+    loads,
+    simulated: Mapping[str, Sequence[float]] | None = None,
+    measured: Mapping[str, Sequence[float]] | None = None,
+    mindlin: Mapping[str, Mapping[str, Sequence[float]]] | None = None,
+    *,
+    ax: Axes | None = None,
+    title: str | None = None,
+) -> Figure:
+    """Draw the lateral stiffness at points A, B, C vs normal load (paper 001 Fig. 15).
+
+    Simulated values are markers, measured ones solid lines, Mindlin's dashed lines, one colour
+    per point (A red, B blue, C black). Mindlin curves may be given for both normalisations of
+    paper 001 eqs. 10-12 (``"johnson"``: dashed; ``"printed"``, 4x Johnson's: dash-dotted), each
+    labelled; see :func:`roughcontact.analytic.mindlin.paper001_mindlin` and its
+    ``point_stiffness``.
+
+    Parameters
+    ----------
+    loads : array_like
+        Normal forces F0 [N].
+    simulated, measured : dict of str to array_like, optional
+        Point name (``"A"``, ``"B"``, ``"C"``) to K_L [N/m] at each load.
+    mindlin : dict of str to dict of str to array_like, optional
+        Normalisation (``"johnson"``, ``"printed"``) to {point: K_L [N/m] at each load}.
+    ax : matplotlib Axes, optional
+        Axes to draw on.
+    title : str, optional
+        Axes title (e.g. ``"(a) HDPE"``).
+
+    Returns
+    -------
+    Figure
+
+    Raises
+    ------
+    InputError
+        An array whose length differs from ``loads``, or an unknown normalisation.
+    """
+    load = np.asarray(loads, dtype=float).ravel()
+    fig, ax = _axes(ax, figsize=(5.5, 4.0))
+
+    def values(series, field, point):
+        k = np.asarray(series, dtype=float).ravel()
+        if k.shape != load.shape:
+            raise InputError(
+                field, f"point {point}: {k.size} values for {load.size} loads.", "give one K_L per load."
+            )
+        return k * UM / MN  # N/m -> mN/um
+
+    for point, series in (measured or {}).items():
+        colour = POINT_COLOURS.get(point)
+        ax.plot(load / MN, values(series, "measured", point), "-", color=colour, label=f"{point} measured")
+    for point, series in (simulated or {}).items():
+        colour = POINT_COLOURS.get(point)
+        ax.plot(
+            load / MN,
+            values(series, "simulated", point),
+            "o",
+            linestyle="none",
+            color=colour,
+            label=f"{point} simulated",
+        )
+    for normalisation, points in (mindlin or {}).items():
+        if normalisation not in MINDLIN_STYLES:
+            raise InputError(
+                "mindlin",
+                f"unknown normalisation {normalisation!r}.",
+                f"use keys from {sorted(MINDLIN_STYLES)}.",
+            )
+        name = "Mindlin (Johnson)" if normalisation == "johnson" else "Mindlin (paper 001 as printed, 4x)"
+        for point, series in points.items():
+            ax.plot(
+                load / MN,
+                values(series, "mindlin", point),
+                MINDLIN_STYLES[normalisation],
+                color=POINT_COLOURS.get(point),
+                linewidth=1.2,
+                label=f"{point} {name}",
+            )
+    ax.set_xlabel("normal force F_0 (mN)")
+    ax.set_ylabel("lateral stiffness K_L (mN/µm)")
+    if title:
+        ax.set_title(title)
+    if ax.get_lines():
+        ax.legend(fontsize="x-small", ncol=2)
+    return fig
