@@ -29,7 +29,10 @@ prefactors 3/16 and 8 that belong to G*. As printed, delta_0 is 4x too small and
 large. :func:`paper001_mindlin` offers both readings through ``normalisation``
 (``"johnson"``, the default and physically consistent one, or ``"printed"``).
 
-All quantities are SI (N, m, Pa, J).
+All quantities are SI (N, m, Pa, J). Johnson's equation numbers are given as commonly cited (not
+re-checked against the book); the formulas themselves are verified by
+``tests/validation/test_mindlin_closed_forms.py`` (traction integral, stiffness as derivative,
+loop energy by quadrature).
 
 References
 ----------
