@@ -202,3 +202,39 @@ class RealFFT2:
             result = np.empty(self.input_shape)
             np.multiply(real_out[:m0, :m1], 1.0 / (self.shape[0] * self.shape[1]), out=result)
         return result
+
+    def forward(self, field: np.ndarray) -> np.ndarray:
+        """Return rfft2 of ``field`` zero-padded to ``shape`` (a new complex array).
+
+        With :meth:`inverse` it applies a matrix of multipliers to several fields (e.g. the two
+        shear components) at one forward transform per field and one inverse per output.
+        """
+        field = np.asarray(field)
+        if field.shape != self.input_shape:
+            raise InputError("field", f"shape {field.shape}, expected {self.input_shape}.")
+        if self.backend == "scipy":
+            return _scipy_fft.rfft2(field, s=self.shape, workers=self.workers)
+        m0, m1 = self.input_shape
+        with self._lock:
+            if self._plans is None:
+                self._plans = self._plan()
+            real_in, spectrum, _, forward, _ = self._plans
+            real_in[:m0, :m1] = field
+            forward.execute()
+            return spectrum.copy()
+
+    def inverse(self, spectrum: np.ndarray) -> np.ndarray:
+        """Return irfft2 of a half-spectrum on ``shape``, cropped to ``input_shape`` (a new array)."""
+        m0, m1 = self.input_shape
+        if self.backend == "scipy":
+            result = _scipy_fft.irfft2(spectrum, s=self.shape, workers=self.workers)
+            return np.ascontiguousarray(result[:m0, :m1]) if self.input_shape != self.shape else result
+        with self._lock:
+            if self._plans is None:
+                self._plans = self._plan()
+            _, buffer, real_out, _, backward = self._plans
+            buffer[...] = spectrum
+            backward.execute()
+            result = np.empty(self.input_shape)
+            np.multiply(real_out[:m0, :m1], 1.0 / (self.shape[0] * self.shape[1]), out=result)
+        return result

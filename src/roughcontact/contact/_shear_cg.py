@@ -1,0 +1,238 @@
+r"""Constrained conjugate gradients for one increment of partial-slip tangential contact.
+
+At a fixed pressure p the shear tractions q = (q_x, q_y) of one load step solve (paper 001 eq. 3)
+
+.. math::
+
+    w = C q + e - \delta, \qquad |q_i| \le c_i = \mu p_i, \qquad
+    w_i = 0 \text{ where } |q_i| < c_i \;(\text{stick}), \qquad
+    w_i = -\lambda_i q_i,\ \lambda_i \ge 0 \text{ where } |q_i| = c_i \;(\text{slip})
+
+with C the tangential compliance of the pair, w the slip increment of the step, e a known field
+(the previous step's slip with the sign reversed, plus the slip the pressure causes when normal
+and tangential problems are coupled) and delta the rigid tangential displacement of the flat,
+given (displacement control) or the Lagrange multiplier of the total force sum(q) A_px = F
+(force control). These are the optimality conditions of the convex problem
+min 1/2 q.Cq + q.(e - delta) over the product of discs |q_i| <= c_i (a second-order-cone
+constrained quadratic programme): the slip opposes the traction, and dissipation is never
+negative.
+
+The iteration generalises Polonsky and Keer's (1999) projected conjugate gradients from the
+half-line p >= 0 to discs:
+
+1. s = C q (two FFT pairs); w = s + e - delta, with delta the mean of s + e over the stick set
+   under force control.
+2. Stick set: contact points inside their disc, and points on the rim whose slip increment does
+   not oppose the traction (w.q >= 0: they want to stick again). Slip set: the others.
+3. Direction: z = w on the stick set and the component of w tangent to the rim (perpendicular to
+   q) on the slip set, so slipping points may turn; under force control the sum of z is removed
+   over the stick set. t = z + beta t_old with beta = |z|^2/|z_old|^2, reset to 0 whenever the
+   stick set changed (Polonsky-Keer's reset when points enter or leave).
+4. tau = (z.t) / (t.Ct + sum_slip lambda_i |t_i|^2) (two more FFT pairs), where the second
+   term, with the slip multiplier lambda_i = -w_i.q_i / (|q_i| c_i), is the curvature the rim
+   adds when a slipping point turns (the Hessian of the Lagrangian on the rim; without it a
+   slipping contact under a large slip increment overshoots and never settles); q -= tau t;
+   project every point radially onto its disc; under force control give the lost force back to
+   the stick set (uniformly, projected again) until the total is met.
+
+Residual (scale-free, the same number in nm or m):
+
+.. math::
+
+    r = \frac{\sum_{stick} c_i |w_i| + \sum_{slip} c_i |w_i^{\perp}|}{\sum c_i}\Big/ s_0,
+    \qquad s_0 = \mathrm{rms}_{A_c} |s + e| + |\delta|
+
+the traction-weighted mean violation of the stick and slip-direction conditions over the
+contact, relative to the displacement scale of the step. |q_i| <= c_i holds to round-off at every
+returned iterate.
+
+References
+----------
+Polonsky, I. A. and Keer, L. M. (1999). Wear 231, 206-219. doi:10.1016/S0043-1648(99)00113-1
+Vollebregt, E. A. H. (2014). J. Optim. Theory Appl. 162, 931-953 (the convex formulation).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import ConvergenceError, InputError
+
+# |q| within this fraction of the bound counts as on the rim.
+_RIM = 1e-12
+# Force-control redistribution passes per iteration.
+_REDISTRIBUTE = 50
+
+
+@dataclass(frozen=True)
+class ShearResult:
+    """One converged increment.
+
+    Tractions [Pa], slip increment w [m] (everywhere, also out of contact), rigid displacement
+    [m], stick set (contact points not slipping), iterations and residual.
+    """
+
+    qx: np.ndarray
+    qy: np.ndarray
+    wx: np.ndarray
+    wy: np.ndarray
+    delta: tuple[float, float]
+    stick: np.ndarray
+    iterations: int
+    residual: float
+
+
+def _project(qx, qy, bound):
+    """Radial projection of each (qx, qy) onto its disc of radius ``bound`` (in place)."""
+    norm = np.hypot(qx, qy)
+    over = norm > bound
+    scale = np.where(over, bound / np.where(over, norm, 1.0), 1.0)
+    qx *= scale
+    qy *= scale
+
+
+def _give_back(qx, qy, bound, stick, target, pixel_area):
+    """Shift the stick points' tractions until sum(q) A_px meets ``target`` (force control)."""
+    for _ in range(_REDISTRIBUTE):
+        missing = (target[0] / pixel_area - qx.sum(), target[1] / pixel_area - qy.sum())
+        scale = max(abs(target[0]), abs(target[1])) / pixel_area
+        if abs(missing[0]) + abs(missing[1]) <= 1e-14 * max(scale, bound.sum()):
+            return
+        room = stick & (np.hypot(qx, qy) < bound * (1 - _RIM))
+        if not room.any():
+            room = bound > 0
+        n = room.sum()
+        qx[room] += missing[0] / n
+        qy[room] += missing[1] / n
+        _project(qx, qy, bound)
+
+
+def _weighted(values, weights):
+    return float(np.dot(values, weights))
+
+
+def solve_increment(
+    shear: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]],
+    bound: np.ndarray,
+    offset: tuple[np.ndarray, np.ndarray],
+    *,
+    pixel_area: float,
+    displacement: tuple[float, float] | None = None,
+    force: tuple[float, float] | None = None,
+    initial: tuple[np.ndarray, np.ndarray] | None = None,
+    tolerance: float = 1e-8,
+    max_iterations: int = 10_000,
+    solver: str = "solve_tangential",
+) -> ShearResult:
+    """Solve the increment of the module docstring.
+
+    Parameters
+    ----------
+    shear : callable
+        (q_x, q_y) [Pa] -> (s_x, s_y) [m], the tangential compliance of the pair.
+    bound : ndarray
+        c = mu p [Pa] (0 outside the contact).
+    offset : (ndarray, ndarray)
+        The known field e [m] of the module docstring.
+    pixel_area : float
+        [m^2]; the force is pixel_area * sum(q).
+    displacement, force : (float, float)
+        Exactly one: rigid displacement (delta_x, delta_y) [m] or total force (F_x, F_y) [N].
+    initial : (ndarray, ndarray), optional
+        Warm start (projected onto the discs first).
+    tolerance, max_iterations, solver
+        Stop criterion, iteration limit (then :class:`ConvergenceError`), name for messages.
+    """
+    shape = bound.shape
+    c = np.ascontiguousarray(bound, dtype=float)
+    contact = c > 0
+    ex, ey = offset
+    load_control = force is not None
+    if load_control:
+        capacity = c.sum() * pixel_area
+        if np.hypot(*force) >= capacity * (1 - 1e-12):
+            raise InputError(
+                "force",
+                f"|F_t| = {np.hypot(*force):.6g} N reaches the sliding force mu F_0 = {capacity:.6g} N: "
+                "the contact slides as a whole (no partial-slip solution).",
+                "keep the tangential force below mu F_0, or prescribe a displacement path.",
+            )
+    if initial is None:
+        qx, qy = np.zeros(shape), np.zeros(shape)
+    else:
+        qx, qy = (np.where(contact, initial[0], 0.0), np.where(contact, initial[1], 0.0))
+    _project(qx, qy, c)
+    if load_control:
+        _give_back(qx, qy, c, contact, force, pixel_area)
+    delta = (0.0, 0.0) if load_control else (float(displacement[0]), float(displacement[1]))
+    weights = c[contact]
+    total_weight = weights.sum()
+    tx = ty = None
+    previous_norm = None
+    previous_stick = None
+    residual = np.inf
+    for iteration in range(max_iterations + 1):
+        sx, sy = shear(qx, qy)
+        sx += ex
+        sy += ey
+        norm = np.hypot(qx, qy)
+        rim = contact & (norm >= c * (1 - _RIM))
+        if load_control:
+            interior = contact & ~rim
+            pool = interior if interior.any() else contact
+            delta = (float(sx[pool].mean()), float(sy[pool].mean()))
+        wx, wy = sx - delta[0], sy - delta[1]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            nx, ny = np.where(rim, qx / norm, 0.0), np.where(rim, qy / norm, 0.0)
+        along = wx * nx + wy * ny
+        slip = rim & (along < 0)
+        stick = contact & ~slip
+        zx = np.where(stick, wx, np.where(slip, wx - along * nx, 0.0))
+        zy = np.where(stick, wy, np.where(slip, wy - along * ny, 0.0))
+        scale = (
+            np.sqrt(np.mean(sx[contact] ** 2 + sy[contact] ** 2)) + np.hypot(*delta) if contact.any() else 0.0
+        )
+        if scale == 0.0 or total_weight == 0.0:
+            residual = 0.0
+        else:
+            residual = _weighted(np.hypot(zx, zy)[contact], weights) / total_weight / scale
+        if residual <= tolerance:
+            return ShearResult(qx, qy, wx, wy, delta, stick, iteration, float(residual))
+        if iteration == max_iterations:
+            break
+        if load_control and stick.any():
+            zx[stick] -= zx.sum() / stick.sum()
+            zy[stick] -= zy.sum() / stick.sum()
+        z_norm = float(np.vdot(zx, zx) + np.vdot(zy, zy))
+        if (
+            tx is None
+            or previous_stick is None
+            or not np.array_equal(stick, previous_stick)
+            or previous_norm == 0
+        ):
+            tx, ty = zx, zy
+        else:
+            beta = z_norm / previous_norm
+            # the old direction, tangent to the rim where points slip
+            old_along = np.where(slip, tx * nx + ty * ny, 0.0)
+            tx = zx + beta * (tx - old_along * nx)
+            ty = zy + beta * (ty - old_along * ny)
+        previous_norm, previous_stick = z_norm, stick
+        rx, ry = shear(tx, ty)
+        # Curvature along t of the Lagrangian: t.Ct plus, on the rim, the bending of the disc
+        # boundary weighted by the multiplier lambda = -w.n / c (a turn by |t| costs lambda |t|^2).
+        bending = np.where(slip, -along / np.where(slip, c, 1.0), 0.0)
+        curvature = float(np.vdot(rx, tx) + np.vdot(ry, ty) + np.vdot(bending, tx * tx + ty * ty))
+        if curvature <= 0:
+            tx = ty = None
+            continue
+        tau = float(np.vdot(zx, tx) + np.vdot(zy, ty)) / curvature
+        qx -= tau * tx
+        qy -= tau * ty
+        _project(qx, qy, c)
+        if load_control:
+            _give_back(qx, qy, c, stick, force, pixel_area)
+    raise ConvergenceError(solver, float(residual), iteration, tolerance)

@@ -1,0 +1,349 @@
+r"""Partial-slip tangential contact along a loading programme: :func:`solve_tangential` (paper 001).
+
+A rough body pressed on a flat by a constant normal force F_0 (a converged
+:class:`~roughcontact.contact.NormalContactResult`) is loaded by a path of rigid tangential
+displacements delta (or forces) of the flat. Each step is an increment with the local Coulomb
+law of paper 001 eq. 3 (stick where |q| < mu p and the slip does not change; slip where
+|q| = mu p, opposing the slip increment), solved by :mod:`roughcontact.contact._shear_cg`. The
+increments carry the history, so unloading and reloading trace Masing-type hysteresis loops
+(Mindlin and Deresiewicz 1953).
+
+Normal-tangential coupling (paper 001 sec. 2: "the effect of shear stress components on the
+contact pressure is also included in an iterative manner"). For dissimilar materials (Dundurs
+beta != 0) the shear tractions move the surface normally and the pressure moves it tangentially
+(:mod:`roughcontact.elasticity.tangential`). With ``coupling=True`` each step alternates
+
+1. normal solve at F_0 with the separation h_0 + u_z(q) (warm-started);
+2. tangential increment at the new bound mu p, with the slip the pressure causes, s_t(p);
+
+until the pressure and the tractions change by less than ``coupling_tolerance`` relative to
+their maxima (a block Gauss-Seidel iteration, as Chen and Wang 2008 and Bazrafshan et al. 2019
+describe it). When D = 0 (similar materials, or two incompressible bodies) the coupling terms
+vanish identically and the result equals the uncoupled (Goodman) one exactly, which is also
+what ``coupling=False`` computes for any pair.
+
+Assumptions, stated: the normal loading that precedes the programme is frictionless (the slip
+the pressure causes then is free; history starts at the first tangential step); points that
+come into contact during a step stick where they are unless the Coulomb law makes them slip;
+the friction coefficient is constant (no static/kinetic distinction, as in the paper).
+
+References
+----------
+Mindlin, R. D. and Deresiewicz, H. (1953). J. Appl. Mech. 20, 327-344.
+Chen, W. W. and Wang, Q. J. (2008). J. Tribol. 130, 041402 (coupled partial slip by FFT).
+Bazrafshan, M., de Rooij, M. B. and Schipper, D. J. (2019). Int. J. Mech. Sci. 155, 9-18 (paper 001 ref. 28).
+Seed paper 001, eqs. 1-4.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from .. import __version__
+from ..elasticity.tangential import TractionCompliance
+from ..errors import ConvergenceError, InputError
+from ..materials import Material, contact_modulus
+from . import _constrained_cg, _shear_cg
+from .normal import compliance_for
+from .paths import as_path
+from .result import NormalContactResult
+from .tangential_result import TangentialPathResult, TangentialState
+
+
+def _check_inputs(normal, material, counter_body, friction_coefficient):
+    if not isinstance(normal, NormalContactResult):
+        raise InputError("normal", f"got {type(normal).__name__}.", "pass the result of solve_normal.")
+    if normal.hardness is not None:
+        raise InputError("normal", "the normal contact is elastic-plastic.", "solve it without hardness.")
+    if not isinstance(material, Material):
+        raise InputError("material", "a Material is needed (shear moduli and Poisson's ratios).", None)
+    mu = friction_coefficient
+    if not (isinstance(mu, (int, float)) and np.isfinite(mu) and mu > 0):
+        raise InputError("friction_coefficient", f"must be positive and finite, got {mu!r}.", "e.g. 0.15.")
+    expected = contact_modulus(material, counter_body)
+    if not np.isclose(expected, normal.contact_modulus, rtol=1e-9):
+        raise InputError(
+            "material",
+            f"E* = {expected:.6g} Pa of these materials differs from the normal solution's "
+            f"{normal.contact_modulus:.6g} Pa (a layered body, or other materials).",
+            "solve the normal contact with the same material and counter_body (half-spaces).",
+        )
+    if normal.topography.dim != 2:
+        raise InputError("normal", "tangential contact needs a 2D map.", "pass a 2D topography.")
+
+
+def _steps_to_keep(fields_at, steps: int) -> set[int]:
+    if isinstance(fields_at, str):
+        if fields_at not in ("all", "none", "last"):
+            raise InputError("fields_at", f"unknown {fields_at!r}.", "use 'all', 'none', 'last' or indices.")
+        return {"all": set(range(steps)), "none": set(), "last": {steps - 1}}[fields_at]
+    keep = {int(i) % steps for i in fields_at}
+    return keep
+
+
+def solve_tangential(
+    normal: NormalContactResult,
+    material: Material,
+    *,
+    friction_coefficient: float,
+    displacement=None,
+    force=None,
+    counter_body: Material | None = None,
+    coupling: bool = True,
+    tolerance: float = 1e-8,
+    coupling_tolerance: float = 1e-6,
+    max_iterations: int = 10_000,
+    max_coupling_iterations: int = 50,
+    fields_at: str | Sequence[int] = "all",
+    workers: int | None = None,
+) -> TangentialPathResult:
+    """Solve a tangential loading programme from a normal contact (paper 001).
+
+    Parameters
+    ----------
+    normal : NormalContactResult
+        Elastic normal contact at the constant normal force F_0 (from :func:`solve_normal`).
+    material : Material
+        The rough body's material (the one the normal contact was solved with).
+    friction_coefficient : float
+        mu_f of the local Coulomb law (> 0; paper 001 Table 1: 0.099-0.153).
+    displacement, force : array_like, shape (n,) or (n, 2)
+        Exactly one: the rigid tangential displacement of the flat after each step [m]
+        (a 1D path is along x; e.g. :func:`roughcontact.contact.paths.stroke_path`) or the
+        tangential force on the rough body [N] (force control: |F| must stay below mu F_0).
+        A periodic surface needs force control: the mean tangential displacement of a periodic
+        half-space is undetermined.
+    counter_body : Material, optional
+        The flat (default: rigid). Paper 001: silicon wafer.
+    coupling : bool
+        Iterate the normal-tangential coupling of dissimilar materials (default; see the module
+        docstring). False gives the uncoupled (Goodman) solution.
+    tolerance : float
+        Scale-free residual of each tangential increment (and of the coupled normal solves).
+    coupling_tolerance : float
+        Relative change of p and q between coupling passes that ends a step.
+    max_iterations, max_coupling_iterations : int
+        Limits; beyond them :class:`~roughcontact.errors.ConvergenceError` is raised.
+    fields_at : {"all", "last", "none"} or sequence of int
+        Steps whose full fields are kept in ``states`` (per-step scalars are always kept).
+    workers : int, optional
+        FFT threads.
+
+    Returns
+    -------
+    TangentialPathResult
+
+    Raises
+    ------
+    InputError
+        mu <= 0, paths with NaN, both or neither path, a force at or above mu F_0 (full
+        sliding: the message gives the sliding force), displacement control of a periodic
+        surface, materials that do not match the normal solution.
+    ConvergenceError
+        A step or its coupling iteration did not converge (residual and iterations given).
+    """
+    _check_inputs(normal, material, counter_body, friction_coefficient)
+    if (displacement is None) == (force is None):
+        raise InputError(
+            "path", "give exactly one of displacement and force.", "e.g. displacement=stroke_path(3e-6)."
+        )
+    load_control = force is not None
+    path = as_path(force if load_control else displacement, "force" if load_control else "displacement")
+    if normal.boundary == "periodic" and not load_control:
+        raise InputError(
+            "displacement",
+            "a periodic half-space has no fixed point, so a rigid tangential displacement loads nothing.",
+            "prescribe a force path (force=...), or solve a free (non-periodic) window.",
+        )
+    mu = float(friction_coefficient)
+    topography = normal.topography
+    shape = topography.shape
+    operator = TractionCompliance(
+        shape, topography.size, material, counter_body, boundary=normal.boundary, workers=workers
+    )
+    coupled = coupling and operator.coupled
+    pixel_area = operator.pixel_area
+    keep = _steps_to_keep(fields_at, len(path))
+
+    pressure = np.array(normal.pressure)
+    heights = topography.heights
+    separation = heights.max() - heights
+    normal_force = normal.force
+    normal_operator = (
+        compliance_for(
+            topography, material, counter_body=counter_body, boundary=normal.boundary, workers=workers
+        )
+        if coupled
+        else None
+    )
+    slip_from_p = operator.slip_from_pressure(pressure) if coupled else (np.zeros(shape), np.zeros(shape))
+    slip_x, slip_y = slip_from_p[0].copy(), slip_from_p[1].copy()  # frictionless normal loading
+    qx, qy = np.zeros(shape), np.zeros(shape)
+
+    n = len(path)
+    record = {k: np.zeros(n) for k in ("contact", "stick", "slip", "residual")}
+    forces = np.zeros((n, 2))
+    displacements = np.zeros((n, 2))
+    iterations = np.zeros(n, dtype=int)
+    passes = np.zeros(n, dtype=int)
+    states: dict[int, TangentialState] = {}
+    for step, target in enumerate(path):
+        control = {"force": tuple(target)} if load_control else {"displacement": tuple(target)}
+        pressure, slip_from_p, increment, iterations[step], passes[step] = _coupled_step(
+            operator,
+            normal_operator if coupled else None,
+            separation,
+            normal_force,
+            mu,
+            pressure,
+            slip_from_p,
+            (qx, qy),
+            (slip_x, slip_y),
+            control,
+            tolerance,
+            coupling_tolerance,
+            max_iterations,
+            max_coupling_iterations,
+        )
+        qx, qy = increment.qx, increment.qy
+        contact = pressure > 0
+        wx = np.where(contact, increment.wx, 0.0)
+        wy = np.where(contact, increment.wy, 0.0)
+        slip_x, slip_y = slip_x + increment.wx, slip_y + increment.wy
+        stick = increment.stick & contact
+        displacements[step] = increment.delta
+        forces[step] = (qx.sum() * pixel_area, qy.sum() * pixel_area)
+        record["contact"][step] = contact.sum() * pixel_area
+        record["stick"][step] = stick.sum() * pixel_area
+        record["slip"][step] = (contact & ~stick).sum() * pixel_area
+        record["residual"][step] = increment.residual
+        if step in keep:
+            states[step] = TangentialState(
+                shear_x=qx.copy(),
+                shear_y=qy.copy(),
+                pressure=pressure.copy(),
+                slip_x=slip_x.copy(),
+                slip_y=slip_y.copy(),
+                slip_increment_x=wx,
+                slip_increment_y=wy,
+                stick=stick,
+                displacement=increment.delta,
+                friction_coefficient=mu,
+                pixel_area=pixel_area,
+            )
+    return TangentialPathResult(
+        normal=normal,
+        displacement=displacements,
+        force=forces,
+        contact_area=record["contact"],
+        stick_area=record["stick"],
+        slip_area=record["slip"],
+        iterations=iterations,
+        coupling_iterations=passes,
+        residual=record["residual"],
+        states=states,
+        parameters={
+            "friction_coefficient": mu,
+            "control": "force" if load_control else "displacement",
+            "coupling": bool(coupling),
+            "dundurs_beta": operator.pair.dundurs_beta,
+            "tolerance": tolerance,
+            "version": __version__,
+        },
+    )
+
+
+def _coupled_step(
+    operator,
+    normal_operator,
+    separation,
+    normal_force,
+    mu,
+    pressure,
+    slip_from_p,
+    shear,
+    slip,
+    control,
+    tolerance,
+    coupling_tolerance,
+    max_iterations,
+    max_passes,
+):
+    """One step: the tangential increment, alternated with normal solves when coupled.
+
+    Returns the pressure, the slip it causes, the increment, the CG iterations and the passes.
+    ``normal_operator`` is None when uncoupled (one pass).
+    """
+    qx, qy = shear
+    iterations = 0
+    for coupling_pass in range(1, max_passes + 1):
+        previous_p, previous_q = pressure, (qx, qy)
+        if normal_operator is not None and (np.any(qx) or np.any(qy)):
+            pressure = _coupled_pressure(
+                normal_operator,
+                operator,
+                separation,
+                qx,
+                qy,
+                pressure,
+                normal_force,
+                operator.pixel_area,
+                tolerance,
+                max_iterations,
+            )
+            slip_from_p = operator.slip_from_pressure(pressure)
+        increment = _shear_cg.solve_increment(
+            operator.shear,
+            mu * pressure,
+            (slip_from_p[0] - slip[0], slip_from_p[1] - slip[1]),
+            pixel_area=operator.pixel_area,
+            initial=(qx, qy),
+            tolerance=tolerance,
+            max_iterations=max_iterations,
+            **control,
+        )
+        qx, qy = increment.qx, increment.qy
+        iterations += increment.iterations
+        if normal_operator is None:
+            return pressure, slip_from_p, increment, iterations, coupling_pass
+        scale_p = max(float(np.max(pressure)), 1e-300)
+        change = max(
+            float(np.max(np.abs(pressure - previous_p))) / scale_p,
+            float(np.max(np.abs(qx - previous_q[0]) + np.abs(qy - previous_q[1]))) / (mu * scale_p),
+        )
+        if change <= coupling_tolerance:
+            return pressure, slip_from_p, increment, iterations, coupling_pass
+    raise ConvergenceError(
+        "solve_tangential (normal-tangential coupling)", change, max_passes, coupling_tolerance
+    )
+
+
+def _coupled_pressure(
+    normal_operator,
+    operator,
+    separation,
+    qx,
+    qy,
+    pressure,
+    normal_force,
+    pixel_area,
+    tolerance,
+    max_iterations,
+):
+    """Pressure at F_0 with the normal displacement of the shear tractions added to the separation."""
+    shifted = separation + operator.normal_from_shear(qx, qy)
+    shifted -= shifted.min()
+    raw = _constrained_cg.solve(
+        normal_operator,
+        shifted,
+        pixel_area=pixel_area,
+        force=normal_force,
+        initial_pressure=pressure,
+        tolerance=tolerance,
+        max_iterations=max_iterations,
+        preconditioner=normal_operator.inverse,
+        solver="solve_tangential (coupled normal step)",
+    )
+    return raw.pressure

@@ -1,0 +1,227 @@
+"""Results of partial-slip tangential contact: one state per step and the whole loading programme."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .result import NormalContactResult
+
+
+@dataclass(frozen=True)
+class TangentialState:
+    """Converged state after one tangential step (all SI, fields on the topography's grid).
+
+    Attributes
+    ----------
+    shear_x, shear_y : ndarray
+        Shear tractions q_x, q_y [Pa] on the rough body (in the direction the flat drags it).
+    pressure : ndarray
+        Contact pressure [Pa] (changes along the path only when normal and tangential are coupled).
+    slip_x, slip_y : ndarray
+        Accumulated relative tangential displacement s = u_t - delta [m] (paper 001 eq. 1).
+    slip_increment_x, slip_increment_y : ndarray
+        Change of s in this step [m] (0 in stick, eq. 3), 0 outside the contact.
+    stick : ndarray of bool
+        Contact points that stick in this step.
+    displacement : (float, float)
+        Rigid tangential displacement (delta_x, delta_y) of the flat [m].
+    friction_coefficient : float
+        mu of the local Coulomb law.
+    pixel_area : float
+        [m^2].
+    """
+
+    shear_x: np.ndarray
+    shear_y: np.ndarray
+    pressure: np.ndarray
+    slip_x: np.ndarray
+    slip_y: np.ndarray
+    slip_increment_x: np.ndarray
+    slip_increment_y: np.ndarray
+    stick: np.ndarray
+    displacement: tuple[float, float]
+    friction_coefficient: float
+    pixel_area: float
+
+    def __post_init__(self):
+        for name in (
+            "shear_x",
+            "shear_y",
+            "pressure",
+            "slip_x",
+            "slip_y",
+            "slip_increment_x",
+            "slip_increment_y",
+            "stick",
+        ):
+            getattr(self, name).setflags(write=False)
+
+    @property
+    def contact(self) -> np.ndarray:
+        """Points with positive pressure."""
+        return self.pressure > 0
+
+    @property
+    def slip(self) -> np.ndarray:
+        """Contact points that slip in this step (|q| = mu p, eq. 3)."""
+        return self.contact & ~self.stick
+
+    @property
+    def force(self) -> tuple[float, float]:
+        """Friction force (F_x, F_y) [N] on the rough body."""
+        return (float(self.shear_x.sum() * self.pixel_area), float(self.shear_y.sum() * self.pixel_area))
+
+    @property
+    def normalised_shear(self) -> np.ndarray:
+        """sqrt(q_x^2 + q_y^2) / (mu p): < 1 in stick, 1 in slip, NaN outside the contact (Figs. 11-12)."""
+        out = np.full(self.pressure.shape, np.nan)
+        contact = self.contact
+        out[contact] = np.hypot(self.shear_x, self.shear_y)[contact] / (
+            self.friction_coefficient * self.pressure[contact]
+        )
+        return out
+
+
+@dataclass(frozen=True)
+class TangentialPathResult:
+    """A tangential loading programme under a constant normal force (paper 001 Figs. 6, 10-14).
+
+    Attributes
+    ----------
+    normal : NormalContactResult
+        The normal contact the programme starts from (q = 0, delta = 0).
+    displacement : ndarray, shape (n, 2)
+        Rigid tangential displacement of the flat at each step [m].
+    force : ndarray, shape (n, 2)
+        Friction force on the rough body at each step [N].
+    contact_area, stick_area, slip_area : ndarray, shape (n,)
+        [m^2] at each step.
+    iterations, coupling_iterations : ndarray of int, shape (n,)
+        Conjugate-gradient iterations (summed over the coupling passes) and coupling passes.
+    residual : ndarray, shape (n,)
+        Scale-free residual of the last tangential solve of each step.
+    states : dict of int -> TangentialState
+        Full fields at the steps that were kept (see ``fields_at`` of the solver).
+    parameters : dict
+        What was asked for.
+    """
+
+    normal: NormalContactResult
+    displacement: np.ndarray
+    force: np.ndarray
+    contact_area: np.ndarray
+    stick_area: np.ndarray
+    slip_area: np.ndarray
+    iterations: np.ndarray
+    coupling_iterations: np.ndarray
+    residual: np.ndarray
+    states: dict[int, TangentialState]
+    parameters: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def steps(self) -> int:
+        """Number of steps."""
+        return len(self.displacement)
+
+    @property
+    def normal_force(self) -> float:
+        """F_0 [N]."""
+        return self.normal.force
+
+    def _controlled(self, axis: int) -> np.ndarray:
+        """Return the prescribed series along ``axis`` (force under force control, else displacement)."""
+        series = self.force if self.parameters.get("control") == "force" else self.displacement
+        return series[:, axis]
+
+    def reversals(self, axis: int = 0) -> np.ndarray:
+        """Return the indices of the steps where the prescribed path along ``axis`` changes direction."""
+        x = np.concatenate([[0.0], self._controlled(axis)])
+        dx = np.diff(x)
+        moving = np.flatnonzero(dx != 0)
+        turns = [
+            moving[i] for i in range(1, len(moving)) if np.sign(dx[moving[i]]) != np.sign(dx[moving[i - 1]])
+        ]
+        return np.asarray([t - 1 for t in turns], dtype=int)
+
+    def loops(self, axis: int = 0) -> list[tuple[int, int]]:
+        """(start, stop) step indices of each closed loop.
+
+        A loop runs from a reversal to the second turning point after it (a reversal, or the last
+        step when the path ends where the loop began), e.g. stroke -> 0 -> stroke.
+        """
+        d = self._controlled(axis)
+        turns = [int(t) for t in self.reversals(axis)]
+        scale = float(np.ptp(d)) or 1.0
+        if len(turns) >= 2 and abs(d[-1] - d[turns[-2]]) <= 1e-9 * scale and turns[-1] != self.steps - 1:
+            turns.append(self.steps - 1)
+        return [(turns[i], turns[i + 2]) for i in range(0, len(turns) - 2, 2)]
+
+    def dissipated_energy(self, axis: int = 0) -> np.ndarray:
+        """Energy dissipated in each closed loop, the loop's area: sum of F . d(delta) [J]."""
+        energies = []
+        for start, stop in self.loops(axis):
+            d = self.displacement[start : stop + 1]
+            f = self.force[start : stop + 1]
+            energies.append(float(np.sum(0.5 * (f[1:] + f[:-1]) * np.diff(d, axis=0))))
+        return np.asarray(energies)
+
+    def scalars(self) -> dict[str, np.ndarray]:
+        """Per-step series, keyed by name with the unit."""
+        return {
+            "delta_x [m]": self.displacement[:, 0],
+            "delta_y [m]": self.displacement[:, 1],
+            "F_x [N]": self.force[:, 0],
+            "F_y [N]": self.force[:, 1],
+            "contact_area [m^2]": self.contact_area,
+            "stick_area [m^2]": self.stick_area,
+            "slip_area [m^2]": self.slip_area,
+            "iterations": self.iterations,
+            "coupling_iterations": self.coupling_iterations,
+            "residual": self.residual,
+        }
+
+    def to_xarray(self):
+        """Return an xarray Dataset: per-step series along ``step``, kept fields along ``kept_step, x, y``."""
+        import xarray as xr
+
+        data = {
+            "delta_x": ("step", self.displacement[:, 0], {"units": "m"}),
+            "delta_y": ("step", self.displacement[:, 1], {"units": "m"}),
+            "force_x": ("step", self.force[:, 0], {"units": "N"}),
+            "force_y": ("step", self.force[:, 1], {"units": "N"}),
+            "contact_area": ("step", self.contact_area, {"units": "m^2"}),
+            "stick_area": ("step", self.stick_area, {"units": "m^2"}),
+            "slip_area": ("step", self.slip_area, {"units": "m^2"}),
+            "iterations": ("step", self.iterations),
+            "residual": ("step", self.residual),
+        }
+        kept = sorted(self.states)
+        units = {"shear_x": "Pa", "shear_y": "Pa", "pressure": "Pa", "slip_x": "m", "slip_y": "m"}
+        dims = ("kept_step", "x", "y")
+        for name, unit in units.items():
+            data[name] = (
+                dims,
+                np.stack([getattr(self.states[k], name) for k in kept])
+                if kept
+                else np.empty((0, *self.normal.pressure.shape)),
+                {"units": unit},
+            )
+        data["stick"] = (
+            dims,
+            np.stack([self.states[k].stick for k in kept])
+            if kept
+            else np.empty((0, *self.normal.pressure.shape), dtype=bool),
+        )
+        x, y = self.normal.topography.coordinates()
+        coords = {
+            "step": np.arange(self.steps),
+            "kept_step": np.asarray(kept, dtype=int),
+            "x": ("x", x, {"units": "m"}),
+            "y": ("y", y, {"units": "m"}),
+        }
+        attrs = {f"parameter_{k}": str(v) for k, v in self.parameters.items()}
+        attrs["normal_force"] = self.normal_force
+        return xr.Dataset(data, coords=coords, attrs=attrs)
