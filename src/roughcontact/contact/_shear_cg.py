@@ -60,6 +60,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import ConvergenceError, InputError
+from . import _shear_kernels as kernels
 
 # |q| within this fraction of the bound counts as on the rim.
 _RIM = 1e-12
@@ -110,8 +111,9 @@ def _give_back(qx, qy, bound, stick, target, pixel_area):
         _project(qx, qy, bound)
 
 
-def _weighted(values, weights):
-    return float(np.dot(values, weights))
+def _slip_sum(z, state):
+    """Sum of z over the slip set (their tangential moves also change the total force)."""
+    return float(z[state == kernels.SLIP].sum())
 
 
 def solve_increment(
@@ -147,7 +149,7 @@ def solve_increment(
         Stop criterion, iteration limit (then :class:`ConvergenceError`), name for messages.
     """
     shape = bound.shape
-    c = np.ascontiguousarray(bound, dtype=float)
+    c = np.array(bound, dtype=float)
     contact = c > 0
     ex, ey = offset
     load_control = force is not None
@@ -163,76 +165,65 @@ def solve_increment(
     if initial is None:
         qx, qy = np.zeros(shape), np.zeros(shape)
     else:
-        qx, qy = (np.where(contact, initial[0], 0.0), np.where(contact, initial[1], 0.0))
+        qx, qy = np.where(contact, initial[0], 0.0), np.where(contact, initial[1], 0.0)
     _project(qx, qy, c)
     if load_control:
         _give_back(qx, qy, c, contact, force, pixel_area)
     delta = (0.0, 0.0) if load_control else (float(displacement[0]), float(displacement[1]))
-    weights = c[contact]
-    total_weight = weights.sum()
-    tx = ty = None
-    previous_norm = None
-    previous_stick = None
+    flat = {name: np.zeros(c.size) for name in ("zx", "zy", "nx", "ny", "bend")}
+    tx, ty = np.zeros(shape), np.zeros(shape)
+    state = np.full(c.size, 255, dtype=np.uint8)
+    c_flat = c.ravel()
+    previous_norm = 0.0
     residual = np.inf
     for iteration in range(max_iterations + 1):
         sx, sy = shear(qx, qy)
         sx += ex
         sy += ey
-        norm = np.hypot(qx, qy)
-        rim = contact & (norm >= c * (1 - _RIM))
         if load_control:
-            interior = contact & ~rim
-            pool = interior if interior.any() else contact
-            delta = (float(sx[pool].mean()), float(sy[pool].mean()))
-        wx, wy = sx - delta[0], sy - delta[1]
-        with np.errstate(invalid="ignore", divide="ignore"):
-            nx, ny = np.where(rim, qx / norm, 0.0), np.where(rim, qy / norm, 0.0)
-        along = wx * nx + wy * ny
-        slip = rim & (along < 0)
-        stick = contact & ~slip
-        zx = np.where(stick, wx, np.where(slip, wx - along * nx, 0.0))
-        zy = np.where(stick, wy, np.where(slip, wy - along * ny, 0.0))
-        scale = (
-            np.sqrt(np.mean(sx[contact] ** 2 + sy[contact] ** 2)) + np.hypot(*delta) if contact.any() else 0.0
+            delta = kernels.interior_mean(qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), _RIM)
+        changed, violation, weight, ss, n_contact, n_stick, zsx, zsy, z_norm = kernels.classify(
+            qx.ravel(),
+            qy.ravel(),
+            c_flat,
+            sx.ravel(),
+            sy.ravel(),
+            delta[0],
+            delta[1],
+            _RIM,
+            state,
+            flat["zx"],
+            flat["zy"],
+            flat["nx"],
+            flat["ny"],
+            flat["bend"],
         )
-        if scale == 0.0 or total_weight == 0.0:
-            residual = 0.0
-        else:
-            residual = _weighted(np.hypot(zx, zy)[contact], weights) / total_weight / scale
+        scale = np.sqrt(ss / n_contact) + np.hypot(*delta) if n_contact else 0.0
+        residual = violation / weight / scale if scale > 0.0 and weight > 0.0 else 0.0
         if residual <= tolerance:
-            return ShearResult(qx, qy, wx, wy, delta, stick, iteration, float(residual))
+            stick = (state == kernels.STICK).reshape(shape)
+            return ShearResult(qx, qy, sx, sy, delta, stick, iteration, float(residual))
         if iteration == max_iterations:
             break
-        if load_control and stick.any():
-            zx[stick] -= zx.sum() / stick.sum()
-            zy[stick] -= zy.sum() / stick.sum()
-        z_norm = float(np.vdot(zx, zx) + np.vdot(zy, zy))
-        if (
-            tx is None
-            or previous_stick is None
-            or not np.array_equal(stick, previous_stick)
-            or previous_norm == 0
-        ):
-            tx, ty = zx, zy
-        else:
-            beta = z_norm / previous_norm
-            # the old direction, tangent to the rim where points slip
-            old_along = np.where(slip, tx * nx + ty * ny, 0.0)
-            tx = zx + beta * (tx - old_along * nx)
-            ty = zy + beta * (ty - old_along * ny)
-        previous_norm, previous_stick = z_norm, stick
+        if load_control and n_stick:
+            z_norm = kernels.remove_stick_mean(
+                flat["zx"],
+                flat["zy"],
+                state,
+                (zsx + _slip_sum(flat["zx"], state)) / n_stick,
+                (zsy + _slip_sum(flat["zy"], state)) / n_stick,
+            )
+        beta = 0.0 if changed or previous_norm == 0.0 else z_norm / previous_norm
+        previous_norm = z_norm
+        along_z = kernels.update_direction(
+            tx.ravel(), ty.ravel(), flat["zx"], flat["zy"], flat["nx"], flat["ny"], state, beta
+        )
         rx, ry = shear(tx, ty)
-        # Curvature along t of the Lagrangian: t.Ct plus, on the rim, the bending of the disc
-        # boundary weighted by the multiplier lambda = -w.n / c (a turn by |t| costs lambda |t|^2).
-        bending = np.where(slip, -along / np.where(slip, c, 1.0), 0.0)
-        curvature = float(np.vdot(rx, tx) + np.vdot(ry, ty) + np.vdot(bending, tx * tx + ty * ty))
+        curvature = kernels.curvature(tx.ravel(), ty.ravel(), rx.ravel(), ry.ravel(), flat["bend"])
         if curvature <= 0:
-            tx = ty = None
+            previous_norm = 0.0
             continue
-        tau = float(np.vdot(zx, tx) + np.vdot(zy, ty)) / curvature
-        qx -= tau * tx
-        qy -= tau * ty
-        _project(qx, qy, c)
+        kernels.step_and_project(qx.ravel(), qy.ravel(), tx.ravel(), ty.ravel(), along_z / curvature, c_flat)
         if load_control:
-            _give_back(qx, qy, c, stick, force, pixel_area)
+            _give_back(qx, qy, c, state.reshape(shape) == kernels.STICK, force, pixel_area)
     raise ConvergenceError(solver, float(residual), iteration, tolerance)
