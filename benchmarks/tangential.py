@@ -76,7 +76,6 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).parent))
 from _timing import best_of  # noqa: E402
-
 from roughcontact.analytic import mindlin  # noqa: E402
 from roughcontact.contact import solve_normal  # noqa: E402
 from roughcontact.contact.paths import stroke_path  # noqa: E402
@@ -350,7 +349,8 @@ def cattaneo_case(n: int, args, available: dict) -> dict:
 
 def _print_cattaneo(row: dict) -> None:
     print(
-        f"\n{row['case']}: a = {row['contact_radius_pixels']:.1f} px, Cattaneo c/a = {row['expected_c_over_a']:.4f}",
+        f"\n{row['case']}: a = {row['contact_radius_pixels']:.1f} px, "
+        f"Cattaneo c/a = {row['expected_c_over_a']:.4f}",
         flush=True,
     )
     print(
@@ -419,7 +419,7 @@ def _ours_loop(topo, material, counter, path, cycles, tol) -> tuple[dict, np.nda
 
 def loop_case(n: int, args, available: dict) -> dict:
     """Problem A (nu = 0, ball and flat of one material, E* of HDPE on a rigid flat): ours and aspher;
-    problem P (the paper's: HDPE, nu = 0.5, on a rigid flat): ours only (aspher does not converge at nu != 0)."""
+    problem P (the paper's: HDPE, nu = 0.5, on a rigid flat): ours only (aspher fails at nu != 0)."""
     hdpe = Material(0.98e9, 0.5, "HDPE")
     modulus = contact_modulus(hdpe, None)
     pair = Material(2.0 * modulus, 0.0, "nu = 0 pair")  # E* = E / 2 = modulus
@@ -497,7 +497,8 @@ def _print_loop(row: dict) -> None:
         flush=True,
     )
     print(
-        f"  {'code':<28} {'normal s':>9} {'total s':>9} {'ms/step':>9} {'s/loop':>8} {'it/step':>8} {'max it':>7}  note"
+        f"  {'code':<28} {'normal s':>9} {'total s':>9} {'ms/step':>9} {'s/loop':>8} {'it/step':>8} "
+        f"{'max it':>7}  note"
     )
     for name, code in row["codes"].items():
         if "n/a" in code:
@@ -513,8 +514,9 @@ def _print_loop(row: dict) -> None:
             note.append(f"ratio ours[A]/peer {code['time_ratio_ours_over_peer']:.3g}")
             note.extend(code["failures"][:1])
         print(
-            f"  {name:<28} {code['normal_seconds']:9.3f} {code['total_seconds']:9.3f} {code['ms_per_step']:9.2f} "
-            f"{code['seconds_per_loop']:8.3f} {code['iterations_per_step']:8.1f} {code['max_iterations_step']:7d}  "
+            f"  {name:<28} {code['normal_seconds']:9.3f} {code['total_seconds']:9.3f} "
+            f"{code['ms_per_step']:9.2f} {code['seconds_per_loop']:8.3f} {code['iterations_per_step']:8.1f} "
+            f"{code['max_iterations_step']:7d}  "
             f"{'; '.join(note)}",
             flush=True,
         )
@@ -569,7 +571,8 @@ def main() -> None:
     print(
         f"Case 1: Cattaneo-Mindlin, smooth sphere, Q = {FRACTION} mu P, mu = {MU}; [A] nu = 0, same material "
         "(exact Cattaneo; ours, aspher), [B] nu = 0.5 on a rigid flat (ours, tamaas: periodic); "
-        f"c/a from |q| < (1 - {STICK_EPS:g}) mu p; MATCHED = cheapest run with forces within {FORCE_RTOL:g} and "
+        f"c/a from |q| < (1 - {STICK_EPS:g}) mu p; MATCHED = cheapest run with forces within "
+        f"{FORCE_RTOL:g} and "
         f"c/a within {MATCH:g} of the code's most accurate run",
         flush=True,
     )
@@ -580,8 +583,9 @@ def main() -> None:
     loop_rows = []
     if not args.no_loop:
         print(
-            f"\nCase 2: rough ball (R = {BALL_RADIUS * 1e3:g} mm, rms {RMS * 1e6:g} um), E* of HDPE on a rigid "
-            f"flat, F0 = {F0:g} N, mu = {MU_LOOP}, stroke {STROKE * 1e6:g} um (paper 001 path), free boundary; "
+            f"\nCase 2: rough ball (R = {BALL_RADIUS * 1e3:g} mm, rms {RMS * 1e6:g} um), E* of HDPE on a "
+            f"rigid flat, F0 = {F0:g} N, mu = {MU_LOOP}, stroke {STROKE * 1e6:g} um (paper 001 path), "
+            "free boundary; "
             "[A] nu = 0 pair (ours, aspher), [P] HDPE nu = 0.5 on a rigid flat (ours)",
             flush=True,
         )
