@@ -234,12 +234,6 @@ def test_non_convergence_raises_with_residual_and_iterations(free_normal):
     assert "solve_tangential" in str(error.value)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="BUG: contact/tangential.py _steps_to_keep: fields_at indices are taken modulo the number "
-    "of steps (out-of-range 7 or -4 silently keeps another step), non-integers are truncated, a bare "
-    "int raises TypeError and a non-numeric entry ValueError instead of InputError('fields_at')",
-)
 @pytest.mark.parametrize("fields_at", [[7], [-4], [1.5], 5, ["x"]], ids=["7", "-4", "1.5", "int", "str"])
 def test_fields_at_bad_indices(free_normal, fields_at):
     _field_error(
@@ -254,12 +248,6 @@ def test_fields_at_bad_indices(free_normal, fields_at):
     )
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="BUG: contact/tangential.py _check_inputs refuses numpy scalars (np.float32(0.3), np.int64(1)) "
-    "as friction_coefficient with the misleading message 'must be positive and finite' "
-    "(isinstance(mu, (int, float)) check)",
-)
 @pytest.mark.parametrize("mu", [np.float32(0.3), np.int64(1)], ids=["float32", "int64"])
 def test_numpy_scalar_friction_coefficient_is_accepted(free_normal, mu):
     result = solve_tangential(free_normal, MATERIAL, friction_coefficient=mu, displacement=[1e-9])

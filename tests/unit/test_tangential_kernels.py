@@ -126,11 +126,6 @@ def test_compliance_sums_match_their_definitions(a, b):
     assert pair.D == pytest.approx(_johnson_beta(a, b) * pair.C, rel=1e-13)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="BUG: PairCompliance.dundurs_beta returns D/(2C), half of Dundurs' beta (= D/C); "
-    "materials.dundurs_beta gives the correct value",
-)
 @pytest.mark.parametrize("a, b", PAIRS)
 def test_dundurs_beta_matches_dundurs_formula(a, b):
     expected = _johnson_beta(a, b)

@@ -111,6 +111,11 @@ def _give_back(qx, qy, bound, stick, target, pixel_area):
         _project(qx, qy, bound)
 
 
+def _stick_sum(z, state):
+    """Sum of z over the stick set."""
+    return float(z[state == kernels.STICK].sum())
+
+
 def _slip_sum(z, state):
     """Sum of z over the slip set (their tangential moves also change the total force)."""
     return float(z[state == kernels.SLIP].sum())
@@ -128,6 +133,7 @@ def solve_increment(
     tolerance: float = 1e-8,
     max_iterations: int = 10_000,
     solver: str = "solve_tangential",
+    preconditioner: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]] | None = None,
 ) -> ShearResult:
     """Solve the increment of the module docstring.
 
@@ -147,6 +153,9 @@ def solve_increment(
         Warm start (projected onto the discs first).
     tolerance, max_iterations, solver
         Stop criterion, iteration limit (then :class:`ConvergenceError`), name for messages.
+    preconditioner : callable, optional
+        An approximate inverse of ``shear`` (e.g. ``TractionCompliance.inverse_shear``): the
+        directions are then built from M z restricted like z (two more FFT pairs per iteration).
     """
     shape = bound.shape
     c = np.array(bound, dtype=float)
@@ -205,19 +214,24 @@ def solve_increment(
             return ShearResult(qx, qy, sx, sy, delta, stick, iteration, float(residual))
         if iteration == max_iterations:
             break
+        dx, dy = flat["zx"], flat["zy"]
+        if preconditioner is not None:
+            mx, my = preconditioner(flat["zx"].reshape(shape), flat["zy"].reshape(shape))
+            dx, dy = mx.ravel(), my.ravel()
+            z_norm, msx, msy = kernels.restrict(dx, dy, flat["zx"], flat["zy"], flat["nx"], flat["ny"], state)
+            zsx, zsy = msx, msy
         if load_control and n_stick:
-            z_norm = kernels.remove_stick_mean(
-                flat["zx"],
-                flat["zy"],
-                state,
-                (zsx + _slip_sum(flat["zx"], state)) / n_stick,
-                (zsy + _slip_sum(flat["zy"], state)) / n_stick,
-            )
+            mean_x = (zsx + _slip_sum(dx, state)) / n_stick
+            mean_y = (zsy + _slip_sum(dy, state)) / n_stick
+            removed = kernels.remove_stick_mean(dx, dy, state, mean_x, mean_y)
+            if preconditioner is None:
+                z_norm = removed
+            else:
+                z_norm -= mean_x * _stick_sum(flat["zx"], state) + mean_y * _stick_sum(flat["zy"], state)
         beta = 0.0 if changed or previous_norm == 0.0 else z_norm / previous_norm
         previous_norm = z_norm
-        along_z = kernels.update_direction(
-            tx.ravel(), ty.ravel(), flat["zx"], flat["zy"], flat["nx"], flat["ny"], state, beta
-        )
+        kernels.update_direction(tx.ravel(), ty.ravel(), dx, dy, flat["nx"], flat["ny"], state, beta)
+        along_z = float(np.dot(flat["zx"], tx.ravel()) + np.dot(flat["zy"], ty.ravel()))
         rx, ry = shear(tx, ty)
         curvature = kernels.curvature(tx.ravel(), ty.ravel(), rx.ravel(), ry.ravel(), flat["bend"])
         if curvature <= 0:

@@ -138,3 +138,22 @@ def step_and_project(qx, qy, tx, ty, tau, c):
             x *= scale
             y *= scale
         qx[i], qy[i] = x, y
+
+
+@nb.njit(**_JIT)
+def restrict(mx, my, zx, zy, nx, ny, state):
+    """Restrict M z like z (0 outside, tangent on slip); return (z.Mz, its sums on stick)."""
+    dot, sx, sy = 0.0, 0.0, 0.0
+    for i in range(mx.size):
+        if state[i] == OUT:
+            mx[i], my[i] = 0.0, 0.0
+            continue
+        if state[i] == SLIP:
+            along = mx[i] * nx[i] + my[i] * ny[i]
+            mx[i] -= along * nx[i]
+            my[i] -= along * ny[i]
+        else:
+            sx += mx[i]
+            sy += my[i]
+        dot += zx[i] * mx[i] + zy[i] * my[i]
+    return dot, sx, sy

@@ -18,7 +18,19 @@ def _check_counts(cycles: int, steps: int) -> None:
         raise InputError("cycles", f"cycles={cycles!r}, steps={steps!r}: both must be >= 1.", None)
 
 
-def stroke_path(stroke: float, *, cycles: int = 4, steps_per_stroke: int = 25) -> np.ndarray:
+def _branch(steps: int, spacing: str) -> np.ndarray:
+    """Fractions (0, 1] of a branch after each step: uniform, or quadratic (fine after the reversal)."""
+    k = np.arange(1, steps + 1) / steps
+    if spacing == "uniform":
+        return k
+    if spacing == "quadratic":
+        return k**2
+    raise InputError("spacing", f"unknown spacing {spacing!r}.", "use 'uniform' or 'quadratic'.")
+
+
+def stroke_path(
+    stroke: float, *, cycles: int = 4, steps_per_stroke: int = 25, spacing: str = "uniform"
+) -> np.ndarray:
     """Paper 001 Fig. 6: from 0 to ``stroke`` and back to 0, ``cycles`` times.
 
     Parameters
@@ -29,6 +41,10 @@ def stroke_path(stroke: float, *, cycles: int = 4, steps_per_stroke: int = 25) -
         Number of 0 -> stroke -> 0 cycles (the paper uses four; the last loop is compared).
     steps_per_stroke : int
         Steps on each monotonic branch.
+    spacing : {"uniform", "quadratic"}
+        Equal steps, or steps growing as (k/N)^2 from each reversal, which resolves the
+        pre-sliding part of a branch (a rough contact may slide after a few percent of the
+        stroke) with the same number of steps.
 
     Returns
     -------
@@ -37,9 +53,8 @@ def stroke_path(stroke: float, *, cycles: int = 4, steps_per_stroke: int = 25) -
     """
     stroke = _check_amplitude("stroke", stroke)
     _check_counts(cycles, steps_per_stroke)
-    up = np.linspace(0.0, stroke, steps_per_stroke + 1)[1:]
-    down = up[::-1][1:]
-    cycle = np.concatenate([up, down, [0.0]])
+    fractions = _branch(int(steps_per_stroke), spacing)
+    cycle = np.concatenate([stroke * fractions, stroke * (1.0 - fractions)])
     return np.tile(cycle, int(cycles))
 
 

@@ -28,7 +28,7 @@ compliances add, except the cross terms, which come with the difference of the t
     C = \sum_i \frac{1-\nu_i}{G_i} = \frac{2}{E^*},\quad
     D = \frac{1-2\nu_1}{2 G_1} - \frac{1-2\nu_2}{2 G_2}
 
-(a rigid body adds nothing). D = 2 beta C with beta Dundurs' second constant; D = 0 for similar
+(a rigid body adds nothing). D = beta C with beta Dundurs' second constant; D = 0 for similar
 materials, and then shear and pressure do not interact. The Fourier coefficients of the
 displacements of a periodic surface are (k the wavevector; the factors follow from the 2D
 transforms of 1/rho, X^2/rho^3, XY/rho^3 and X/rho^2, i.e. 2 pi/k, 2 pi k_y^2/k^3,
@@ -94,8 +94,8 @@ class PairCompliance:
 
     @property
     def dundurs_beta(self) -> float:
-        """Dundurs' beta = D / (2 C) (0 for similar materials or two incompressible bodies)."""
-        return self.D / (2.0 * self.C)
+        """Dundurs' beta = D / C (0 for similar materials or two incompressible bodies)."""
+        return self.D / self.C
 
     @property
     def contact_modulus(self) -> float:
@@ -239,6 +239,7 @@ class TractionCompliance:
                 free_kernels(self.shape, self.size, self.pair),
             )
         self._k = built
+        self._inverse = None
         self.coupled = self.pair.D != 0.0
         self._fft = RealFFT2(fft_shape, resolve_workers(workers), input_shape=self.shape)
 
@@ -254,6 +255,30 @@ class TractionCompliance:
         sx = self._fft.inverse(k["xx"] * fx + k["xy"] * fy)
         sy = self._fft.inverse(k["xy"] * fx + k["yy"] * fy)
         return sx, sy
+
+    def inverse_shear(self, sx: np.ndarray, sy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Apply the mode-wise inverse of the 2 x 2 shear kernel: tractions [Pa] of displacements [m].
+
+        Exact for a periodic surface except the undetermined k = 0 mode, which gets the stiffness
+        of the longest wavelength; for a free surface the inverse of the zero-padded operator
+        (an approximate inverse, used as a preconditioner).
+        """
+        if self._inverse is None:
+            k = self._k
+            det = k["xx"] * k["yy"] - k["xy"] ** 2
+            regular = det > 0
+            safe = np.where(regular, det, 1.0)
+            inverse = {"xx": k["yy"] / safe, "yy": k["xx"] / safe, "xy": -k["xy"] / safe}
+            stiffest_long = float(np.min(inverse["xx"][regular]))
+            for name, value in inverse.items():
+                value[~regular] = stiffest_long if name != "xy" else 0.0
+            self._inverse = inverse
+        inverse = self._inverse
+        fx, fy = self._fft.forward(sx), self._fft.forward(sy)
+        return (
+            self._fft.inverse(inverse["xx"] * fx + inverse["xy"] * fy),
+            self._fft.inverse(inverse["xy"] * fx + inverse["yy"] * fy),
+        )
 
     def slip_from_pressure(self, pressure: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Relative tangential displacements [m] caused by the pressure (zero when D = 0)."""
