@@ -1,4 +1,4 @@
-"""Command line: ``roughcontact inspect | plot | contact | demo | friction | friction-compare | asperity``.
+"""Command line: ``roughcontact inspect | plot | contact | demo | friction | asperity | presliding | ...``.
 
 The edges of the program live here: unit strings from the user are converted once
 (through :mod:`roughcontact.units`), errors are turned into one readable line and an exit
@@ -341,6 +341,9 @@ def build_parser() -> argparse.ArgumentParser:
     from .cli_indentation import add_indentation_commands
 
     add_indentation_commands(commands)
+    from .cli_presliding import add_presliding_commands
+
+    add_presliding_commands(commands)
     return parser
 
 

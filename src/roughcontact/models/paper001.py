@@ -34,7 +34,7 @@ from ..contact.paths import stroke_path
 from ..contact.tangential import solve_tangential
 from ..errors import InputError
 from ..experiment.friction_loop import LoopAnalysis, analyse_loop
-from ..materials import get_material
+from ..materials import Material, get_material
 from ..topography import Topography, generate
 from ..topography.process import crop
 
@@ -86,9 +86,10 @@ def _check_inside(pressure: np.ndarray, label: str) -> None:
 
 
 @dataclass(frozen=True)
-class Paper001Case:
+class PreslidingCase:
     """One ball at one load: the simulated programme, its last-loop analysis and Mindlin's K_L."""
 
+    label: str
     ball: str
     normal_force: float
     stroke: float
@@ -109,6 +110,7 @@ class Paper001Case:
     def scalars(self) -> dict[str, float]:
         """Table row: inputs, contact, K_L at A, B, C simulated and Mindlin (both readings) [N/m]."""
         row = {
+            "case": self.label,
             "ball": self.ball,
             "F0 [N]": self.normal_force,
             "stroke [m]": self.stroke,
@@ -123,7 +125,87 @@ class Paper001Case:
         for reading, values in self.mindlin.items():
             for name, value in values.items():
                 row[f"K_L_{name}_mindlin_{reading} [N/m]"] = value
+        row.update({f"note_{k}": v for k, v in self.notes.items()})
         return row
+
+
+def presliding_case(
+    surface: Topography,
+    material: Material,
+    counter: Material | None,
+    normal_force: float,
+    *,
+    stroke: float,
+    friction_coefficient: float,
+    radius: float = RADIUS,
+    label: str = "",
+    ball: str = "",
+    cycles: int = 4,
+    steps_per_stroke: int = 20,
+    coupling: bool = True,
+    tolerance: float = 1e-8,
+) -> PreslidingCase:
+    """Run paper 001's programme on any ball surface and analyse the last loop.
+
+    Normal contact at ``normal_force`` (free boundary; the pressure must vanish on the window's
+    border), the path of Fig. 6 with quadratic spacing, the last loop analysed by
+    :func:`roughcontact.experiment.friction_loop.analyse_loop` (K_L at A, B, C = 0.25, 0.5,
+    0.75 of the pre-sliding span) and Mindlin's K_L at the same points (eqs. 10-12, both
+    readings) for a smooth ball of ``radius``. Fields are kept for the last cycle only.
+    """
+    normal = solve_normal(surface, material, counter_body=counter, force=normal_force, tolerance=tolerance)
+    _check_inside(normal.pressure, label or "the surface")
+    path = stroke_path(stroke, cycles=cycles, steps_per_stroke=steps_per_stroke, spacing="quadratic")
+    last_cycle = range(len(path) - 2 * steps_per_stroke, len(path))
+    result = solve_tangential(
+        normal,
+        material,
+        counter_body=counter,
+        friction_coefficient=friction_coefficient,
+        displacement=path,
+        coupling=coupling,
+        tolerance=tolerance,
+        fields_at=list(last_cycle),
+    )
+    displacement = np.concatenate([[0.0], result.displacement[:, 0]])
+    force = np.concatenate([[0.0], result.force[:, 0]])
+    analysis = analyse_loop(displacement, force, normal_force, fractions=POINTS)
+    rising = analysis.branch.direction > 0
+    branch = [k for k in last_cycle if (k < len(path) - steps_per_stroke) == rising]
+    point_steps = {
+        point: min(branch, key=lambda k, target=target: abs(result.displacement[k, 0] - target))
+        for point, target in zip(analysis.point_names, analysis.branch.point_displacement, strict=True)
+    }
+    references = {}
+    for reading in ("johnson", "printed"):
+        reference = paper001_mindlin(
+            mu=friction_coefficient,
+            normal_force=normal_force,
+            radius=radius,
+            material=material,
+            counter=counter,
+            normalisation=reading,
+        )
+        stiffness = map(float, reference.point_stiffness(POINTS))
+        references[reading] = dict(zip(analysis.point_names, stiffness, strict=True))
+    notes = {
+        "window [m]": surface.size[0],
+        "pixel [m]": surface.spacing[0],
+        "steps": len(path),
+        "coupling": coupling,
+    }
+    return PreslidingCase(
+        label,
+        ball,
+        float(normal_force),
+        float(stroke),
+        float(friction_coefficient),
+        result,
+        analysis,
+        references,
+        point_steps,
+        notes,
+    )
 
 
 def run_case(
@@ -133,14 +215,11 @@ def run_case(
     scan: Topography | None = None,
     window: int = 160,
     pixels: int = 512,
-    cycles: int = 4,
-    steps_per_stroke: int = 20,
     seed: int = 1,
-    coupling: bool = True,
     stroke: float | None = None,
     friction_coefficient: float | None = None,
-    tolerance: float = 1e-8,
-) -> Paper001Case:
+    **options,
+) -> PreslidingCase:
     """Simulate one ball at one load of Table 1 and analyse its last loop (paper 001 secs. 4-5).
 
     Parameters
@@ -156,17 +235,14 @@ def run_case(
         Pixels across the generated 1.1 mm scan (the paper's 1024 gives 1.07 um; the default
         512 gives 2.15 um, so the default 160-pixel window is 0.34 mm, wide enough for the
         HDPE ball at 75 mN).
-    cycles, steps_per_stroke : int
-        Path of Fig. 6 (quadratic spacing from each reversal).
     seed : int
         Seed of the generated roughness.
-    coupling : bool
-        Normal-tangential coupling (beta = -0.0014 for HDPE/Si: small, as expected for a nearly
-        incompressible ball).
     stroke, friction_coefficient : float, optional
         Override Table 1 (needed for other loads).
-    tolerance : float
-        Solver tolerance.
+    **options
+        ``cycles``, ``steps_per_stroke``, ``coupling``, ``tolerance`` of :func:`presliding_case`
+        (normal-tangential coupling is on by default; beta = -0.003 for HDPE on silicon, small as
+        expected for a nearly incompressible ball).
     """
     name = _ball(ball)
     table = TABLE1[name].get(round(float(normal_force), 6))
@@ -176,55 +252,17 @@ def run_case(
             f"{normal_force} N is not in Table 1 (25, 50, 75 mN).",
             "pass stroke= and friction_coefficient= for other loads.",
         )
-    stroke = table[0] if stroke is None else stroke
-    mu = table[1] if friction_coefficient is None else friction_coefficient
-    ball_material, wafer = get_material(name), get_material("silicon wafer")
     surface = central_window(scan if scan is not None else roughness(name, seed=seed, pixels=pixels), window)
-    normal = solve_normal(surface, ball_material, counter_body=wafer, force=normal_force, tolerance=tolerance)
-    _check_inside(normal.pressure, f"{name} at {normal_force * 1e3:g} mN")
-    path = stroke_path(stroke, cycles=cycles, steps_per_stroke=steps_per_stroke, spacing="quadratic")
-    last_cycle = range(len(path) - 2 * steps_per_stroke, len(path))
-    result = solve_tangential(
-        normal,
-        ball_material,
-        counter_body=wafer,
-        friction_coefficient=mu,
-        displacement=path,
-        coupling=coupling,
-        tolerance=tolerance,
-        fields_at=list(last_cycle),
+    case = presliding_case(
+        surface,
+        get_material(name),
+        get_material("silicon wafer"),
+        normal_force,
+        stroke=table[0] if stroke is None else stroke,
+        friction_coefficient=table[1] if friction_coefficient is None else friction_coefficient,
+        label=f"{name} {normal_force * 1e3:g} mN",
+        ball=name,
+        **options,
     )
-    displacement = np.concatenate([[0.0], result.displacement[:, 0]])
-    force = np.concatenate([[0.0], result.force[:, 0]])
-    analysis = analyse_loop(displacement, force, normal_force, fractions=POINTS)
-    point_steps = {}
-    for point, target in zip(analysis.point_names, analysis.branch.point_displacement, strict=True):
-        branch = (
-            [k for k in last_cycle if k < len(path) - steps_per_stroke]
-            if analysis.branch.direction > 0
-            else [k for k in last_cycle if k >= len(path) - steps_per_stroke]
-        )
-        point_steps[point] = min(branch, key=lambda k: abs(result.displacement[k, 0] - target))
-    references = {}
-    for reading in ("johnson", "printed"):
-        reference = paper001_mindlin(
-            mu=mu,
-            normal_force=normal_force,
-            radius=RADIUS,
-            material=ball_material,
-            counter=wafer,
-            normalisation=reading,
-        )
-        references[reading] = dict(
-            zip(analysis.point_names, map(float, reference.point_stiffness(POINTS)), strict=True)
-        )
-    notes = {
-        "surface": "measured scan" if scan is not None else f"generated (seed {seed}, Hurst 0.8)",
-        "window [m]": surface.size[0],
-        "pixel [m]": surface.spacing[0],
-        "steps": len(path),
-        "coupling": coupling,
-    }
-    return Paper001Case(
-        name, float(normal_force), float(stroke), float(mu), result, analysis, references, point_steps, notes
-    )
+    case.notes["surface"] = "measured scan" if scan is not None else f"generated (seed {seed}, Hurst 0.8)"
+    return case
