@@ -82,7 +82,7 @@ def _paper_001(output: Path, report: Callable[[str], None]) -> None:
     )
     analysis = case.analysis
     report(
-        f"  last loop: stroke {format_si(analysis.stroke, 'm')}, mu {analysis.mu:.3f}, "
+        f"  last loop: stroke {format_si(analysis.stroke, 'm')}, sliding force / F0 {analysis.mu:.3f}, "
         f"energy {format_si(analysis.energy, 'J')}"
     )
     for point, value in analysis.lateral_stiffness.items():

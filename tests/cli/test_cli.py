@@ -128,6 +128,8 @@ def test_demo_prints_statistics_and_writes_figures(capsys, tmp_path):
     assert "omega_c (eq. 6)" in out and "12.47 nm" in out  # paper 002 critical interference
     assert "statistical load-unload" in out and "residual" in out  # paper 002 KKE load-unload
     assert "Winkler-layer Lennard-Jones" in out and out.count(" mu ") == 3  # paper 000, three samples
+    assert "seed paper 001" in out and out.count("K_L at") == 3  # paper 001 loop, points A, B, C
+    assert (tmp_path / "presliding_loop.png").exists()
     assert (tmp_path / "contact.png").exists() and (tmp_path / "von_mises_20nm.png").exists()
     pngs = sorted(p.name for p in tmp_path.glob("*.png"))
     assert len(pngs) >= 2
