@@ -81,16 +81,15 @@ class PairCompliance:
     @classmethod
     def of(cls, body: Material, counter_body: Material | None = None) -> PairCompliance:
         """Return the sums for ``body`` (receives q and p) against ``counter_body`` (None: rigid)."""
-        terms = []
-        for material in (body, counter_body):
+        def terms(material):  # (1/G, nu/G, (1 - nu)/G, (1 - 2 nu)/(2G)); a rigid body adds nothing
             if material is None:
-                terms.append((0.0, 0.0, 0.0, 0.0))
-                continue
-            nu = material.poissons_ratio
-            g = material.youngs_modulus / (2.0 * (1.0 + nu))
-            terms.append((1.0 / g, nu / g, (1.0 - nu) / g, (1.0 - 2.0 * nu) / (2.0 * g)))
-        (a1, b1, c1, d1), (a2, b2, c2, d2) = terms
-        return cls(a1 + a2, b1 + b2, c1 + c2, d1 - d2)
+                return np.zeros(4)
+            nu, g = material.poissons_ratio, material.shear_modulus
+            return np.array([1.0, nu, 1.0 - nu, (1.0 - 2.0 * nu) / 2.0]) / g
+
+        first, second = terms(body), terms(counter_body)
+        a, b, c, _ = first + second
+        return cls(float(a), float(b), float(c), float(first[3] - second[3]))
 
     @property
     def dundurs_beta(self) -> float:
