@@ -183,6 +183,12 @@ def _inspect(args: argparse.Namespace) -> int:
 def _plot(args: argparse.Namespace) -> int:
     from .plotting import plot_overview
 
+    if args.file.is_dir():
+        from .cli_study import plot_study
+
+        return plot_study(args.file)
+    if args.output is None:
+        raise InputError("-o/--output", "no figure file given.", "add -o FIGURE.png.")
     topography = _read(args)
     figure = plot_overview(topography)
     args.output.parent.mkdir(parents=True, exist_ok=True)
@@ -276,10 +282,12 @@ def _contact(args: argparse.Namespace) -> int:
 
 
 def _demo(args: argparse.Namespace) -> int:
-    from .demo import run_demo
+    from .cli_study import demo_study, run_and_report
+    from .study import load_study
 
-    run_demo(args.output, report=print)
-    return 0
+    study = load_study(demo_study())
+    print(f"demo study {study.name!r}: {len(study.cases)} cases ({demo_study()})")
+    return run_and_report(study, args.output, progress=sys.stderr.isatty(), resume=True)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -301,9 +309,13 @@ def build_parser() -> argparse.ArgumentParser:
     inspect.set_defaults(handler=_inspect)
 
     plot = commands.add_parser(
-        "plot", parents=[_read_options()], help="draw the height map and PSD of a file"
+        "plot",
+        parents=[_read_options()],
+        help="draw the height map and PSD of a file, or re-draw a study's figures (plot OUT/)",
+        description="FILE a topography: draw its height map and PSD into -o. FILE a study's output "
+        "folder: re-draw its figures and tables from the stored results (nothing is solved again).",
     )
-    plot.add_argument("-o", "--output", type=Path, required=True, help="figure file (.png, .pdf, .svg)")
+    plot.add_argument("-o", "--output", type=Path, help="figure file (.png, .pdf, .svg) for a topography")
     plot.add_argument("--dpi", type=int, default=150)
     plot.set_defaults(handler=_plot)
 
@@ -328,10 +340,15 @@ def build_parser() -> argparse.ArgumentParser:
     contact.add_argument("--json", action="store_true", help="print the scalars as JSON (SI)")
     contact.set_defaults(handler=_contact)
 
-    demo = commands.add_parser("demo", help="run the embedded demo and write its figures")
+    demo = commands.add_parser(
+        "demo", help="run the embedded demo study (examples/demo.toml) and write its report"
+    )
     demo.add_argument("-o", "--output", type=Path, default=Path("demo-output"), help="output folder")
     demo.set_defaults(handler=_demo)
 
+    from .cli_study import add_study_commands
+
+    add_study_commands(commands)
     from .cli_friction import add_friction_commands
 
     add_friction_commands(commands)
@@ -353,6 +370,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(argv)
     level = (logging.WARNING, logging.INFO, logging.DEBUG)[min(args.verbose, 2)]
     logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")
+    logging.getLogger("distributed").setLevel(max(level, logging.WARNING) if args.verbose < 2 else level)
     try:
         return args.handler(args)
     except InputError as error:

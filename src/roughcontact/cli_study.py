@@ -1,0 +1,149 @@
+"""The ``run``, ``validate`` and ``report`` subcommands, and the study side of ``plot`` and ``demo``.
+
+``roughcontact run STUDY.toml -o OUT/ [--workers N | --scheduler ADDR] [--resume]`` validates the
+whole study first (every problem reported at once, nothing computed), then runs the cases and
+writes the table, provenance, figures and the HTML report.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from .errors import InputError
+
+EXIT_INTERRUPTED = 130
+EXIT_CASES_FAILED = 4
+
+
+def _describe(study) -> list[str]:
+    lines = [f"study {study.name!r} ({study.path}): {len(study.cases)} cases"]
+    for analysis in study.analyses:
+        swept = f", swept: {', '.join(analysis.sweep_axes)}" if analysis.sweep_axes else ""
+        lines.append(f"  {analysis.name:<16} {analysis.kind.name:<12} {len(analysis.cases):>4} cases{swept}")
+    if study.files:
+        lines.append(f"  input files: {len(study.files)} (hashes recorded)")
+    return lines
+
+
+def _validate(args: argparse.Namespace) -> int:
+    from .study import load_study
+
+    study = load_study(args.study)
+    print("\n".join(_describe(study)))
+    print("valid: nothing was computed")
+    return 0
+
+
+def finish(folder: Path, summary) -> int:
+    """Write figures and the report after a run and print what happened; return the exit status."""
+    from .study.report import write_report
+
+    report = write_report(folder)
+    print(
+        f"{summary.done} cases run, {summary.skipped} reused, {summary.failed} failed "
+        f"in {summary.wall_seconds:.1f} s ({summary.executor})"
+    )
+    for failure in summary.failures:
+        print(f"  failed: {failure}", file=sys.stderr)
+    print(f"wrote {folder}/results.csv, figures/, tables/ and {report}")
+    return EXIT_CASES_FAILED if summary.failed else 0
+
+
+def run_and_report(study, output: Path, *, progress: bool, **options) -> int:
+    """Run ``study`` into ``output`` and finish with the report; Ctrl-C keeps what finished."""
+    from .study import run_study
+
+    try:
+        summary = run_study(study, output, progress=progress, **options)
+    except KeyboardInterrupt:
+        print(
+            f"\ninterrupted: finished cases are kept in {output}; "
+            "rerun the same command with --resume to finish the study",
+            file=sys.stderr,
+        )
+        return EXIT_INTERRUPTED
+    return finish(Path(output).expanduser().resolve(), summary)
+
+
+def _run(args: argparse.Namespace) -> int:
+    from .study import load_study
+
+    study = load_study(args.study)
+    print("\n".join(_describe(study)))
+    return run_and_report(
+        study,
+        args.output,
+        progress=not args.no_progress and sys.stderr.isatty(),
+        workers=args.workers,
+        scheduler=args.scheduler,
+        resume=args.resume,
+        worker_storage=args.worker_storage,
+    )
+
+
+def _report(args: argparse.Namespace) -> int:
+    from .study.report import write_report
+
+    print(f"wrote {write_report(args.folder)}")
+    return 0
+
+
+def plot_study(folder: Path) -> int:
+    """Re-draw the figures and tables of a study's output folder from its stored records."""
+    from .study.outputs import draw_figures, write_tables
+
+    tables = write_tables(folder)
+    figures, problems = draw_figures(folder)
+    for path in [*tables, *figures]:
+        print(f"wrote {path}")
+    for problem in problems:
+        print(f"roughcontact: figure not drawn: {problem}", file=sys.stderr)
+    return 0 if not problems else EXIT_CASES_FAILED
+
+
+def demo_study() -> Path:
+    """Path of the embedded demo study (``roughcontact/data/demo.toml``, also ``examples/demo.toml``)."""
+    from importlib.resources import files
+
+    path = Path(str(files("roughcontact") / "data" / "demo.toml"))
+    if not path.is_file():  # pragma: no cover - a broken installation
+        raise InputError("demo", f"the embedded demo study is missing ({path}).", "reinstall roughcontact.")
+    return path
+
+
+def add_study_commands(commands) -> None:
+    """Add ``run``, ``validate`` and ``report`` to the subparsers ``commands`` of the CLI."""
+    run = commands.add_parser(
+        "run",
+        help="run a study file (TOML): every case, the results table, figures and an HTML report",
+        description="Validate STUDY (all problems at once, nothing computed), run its cases in-process, on a "
+        "local Dask cluster (--workers) or on a running one (--scheduler), and write OUT/results.csv, "
+        "OUT/cases/, OUT/figures/, OUT/tables/, OUT/provenance.json and OUT/report.html.",
+    )
+    run.add_argument("study", type=Path, help="study file (TOML), see docs/studies.md")
+    run.add_argument("-o", "--output", type=Path, required=True, help="output folder")
+    where = run.add_mutually_exclusive_group()
+    where.add_argument("--workers", type=int, help="run on a local Dask cluster of N worker processes")
+    where.add_argument("--scheduler", help="address of a running Dask scheduler, e.g. tcp://10.0.0.5:8786")
+    run.add_argument(
+        "--resume", action="store_true", help="continue a study in OUT: keep finished cases, redo the rest"
+    )
+    run.add_argument(
+        "--worker-storage", type=Path, help="folder the workers write the fields to (only scalars come back)"
+    )
+    run.add_argument("--no-progress", action="store_true", help="no progress bar")
+    run.set_defaults(handler=_run)
+
+    validate = commands.add_parser(
+        "validate", help="check a study file and list its cases without computing anything"
+    )
+    validate.add_argument("study", type=Path, help="study file (TOML)")
+    validate.set_defaults(handler=_validate)
+
+    report = commands.add_parser(
+        "report", help="write OUT/report.html: the tables and figures of a study on one offline page"
+    )
+    report.add_argument("folder", type=Path, help="the output folder of 'roughcontact run'")
+    report.set_defaults(handler=_report)

@@ -1,0 +1,50 @@
+"""Figure helpers for studies: grids of axes and field maps drawn from stored ``xarray`` fields.
+
+The study kinds (:mod:`roughcontact.study.kinds`) draw their figures from stored case records,
+not from solver result objects; these helpers take ``xarray.DataArray`` fields on ``x``/``y``
+coordinates [m] and choose readable units.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+
+from .contact import pressure_scale
+from .topography import length_scale
+
+
+def new_figure(rows: int, columns: int, *, width: float = 5.0, height: float = 4.0) -> tuple[Figure, list]:
+    """Return a figure and its axes as a list of rows (each a list of axes)."""
+    figure = Figure(figsize=(width * columns, height * rows), layout="constrained")
+    axes = figure.subplots(rows, columns, squeeze=False)
+    return figure, [list(row) for row in axes]
+
+
+def value_scale(value: float, unit: str) -> tuple[float, str]:
+    """Scale and label that make ``value`` [SI ``unit``] read between 1 and 1000 (Pa and m only)."""
+    if unit == "Pa":
+        return pressure_scale(value)
+    if unit == "m":
+        return length_scale(value)
+    return 1.0, unit
+
+
+def map_axes(
+    ax: Axes, field, label: str, unit: str, *, cmap: str = "viridis", symmetric: bool = False
+) -> None:
+    """Draw a 2D field (``xarray.DataArray`` on x, y [m]) as a map with a colour bar in readable units."""
+    x, y = np.asarray(field["x"]), np.asarray(field["y"])
+    values = np.asarray(field).T
+    largest = float(np.nanmax(np.abs(values))) or 1.0
+    scale, shown = value_scale(largest, unit)
+    size_scale, size_unit = length_scale(max(x.max() - x.min(), y.max() - y.min()) or 1e-9)
+    limits = {"vmin": -largest / scale, "vmax": largest / scale} if symmetric else {}
+    image = ax.pcolormesh(
+        x / size_scale, y / size_scale, values / scale, cmap=cmap, shading="auto", rasterized=True, **limits
+    )
+    ax.set_aspect("equal")
+    ax.set_xlabel(f"x ({size_unit})")
+    ax.set_ylabel(f"y ({size_unit})")
+    ax.figure.colorbar(image, ax=ax, label=f"{label} ({shown})" if shown else label)

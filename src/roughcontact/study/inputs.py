@@ -1,0 +1,81 @@
+"""The inputs of one case as a worker sees them: topographies built from their specifications, materials.
+
+:class:`CaseInputs` is what a kind's ``run`` receives besides its parameters. It is picklable, so
+it travels to Dask workers: file topographies go as the arrays read during validation (a worker
+need not see the user's files), generated ones as their specifications and are built there.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..materials import Material
+from ..topography import Topography
+from .schema import Combined, FileTopography, Paper002Island, SelfAffine, Strict
+
+_GENERATOR_ONLY = {"generate", "ra"}
+
+
+def build_topography(spec: Strict, resolve) -> Topography:
+    """Build a topography from its specification; ``resolve(name)`` builds the parts of a composite."""
+    from ..topography import generate
+    from ..topography.process import combine
+
+    if isinstance(spec, Combined):
+        first, second = (resolve(name) for name in spec.combine)
+        return combine(first, second, resample=spec.resample)
+    if isinstance(spec, FileTopography):
+        raise TypeError("file topographies are read during validation and passed in")
+    if isinstance(spec, Paper002Island):
+        from ..models.thin_film_island import paper002_island
+
+        return paper002_island(spec.shape, seed=spec.seed, margin=spec.margin)
+    options = {k: v for k, v in spec.model_dump().items() if k not in _GENERATOR_ONLY}
+    shape, size = options.pop("shape"), options.pop("size")
+    surface = getattr(generate, spec.generate)(shape, size, **options)
+    if isinstance(spec, SelfAffine) and spec.ra is not None:
+        from ..topography.statistics import ra
+
+        surface = surface.with_heights(
+            surface.heights * (spec.ra / ra(surface)), step=f"scaled to Ra {spec.ra:g} m"
+        )
+    return surface
+
+
+@dataclass
+class CaseInputs:
+    """Topographies and materials of one case, resolved by name.
+
+    Attributes
+    ----------
+    specs : dict
+        Name -> topography specification (with the case's overrides and seeds).
+    files : dict
+        Name -> Topography already read, for the file topographies.
+    materials : dict
+        Name -> Material.
+    """
+
+    specs: dict[str, Strict]
+    files: dict[str, Topography]
+    materials: dict[str, Material]
+    _built: dict[str, Topography] = field(default_factory=dict, repr=False)
+
+    def topography(self, name: str) -> Topography:
+        """Return the topography called ``name`` (built once per case)."""
+        if name not in self._built:
+            if name in self.files:
+                self._built[name] = self.files[name]
+            else:
+                self._built[name] = build_topography(self.specs[name], self.topography)
+        return self._built[name]
+
+    def material(self, name: str | None) -> Material | None:
+        """Return the material called ``name`` (None for None: a rigid body)."""
+        return None if name is None else self.materials[name]
+
+    def __getstate__(self) -> dict[str, Any]:
+        state = dict(self.__dict__)
+        state["_built"] = {}
+        return state

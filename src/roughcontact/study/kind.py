@@ -1,0 +1,159 @@
+"""What every analysis kind of a study provides: parameters, a run function, units, figures and tables.
+
+A *kind* (``model = "normal"`` in a study file) adapts one of roughcontact's models to the runner:
+
+* ``parameters``: a pydantic schema (a :class:`CaseParameters`) of the analysis' keys, in SI after
+  validation; fields typed :data:`~roughcontact.study.schema.TopographyName` or
+  :data:`~roughcontact.study.schema.MaterialName` name the study's topographies and materials;
+* ``run(parameters, inputs)``: solves one case and returns its scalars and (optionally) an
+  ``xarray.Dataset`` of fields and curves; it runs on a Dask worker as well as in-process, so it
+  takes and returns only picklable values;
+* ``figures`` and ``tables``: drawn and written from *stored* case records only, so
+  ``roughcontact plot OUT/`` re-draws them without solving anything again.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+from .schema import Strict
+
+
+class CaseParameters(Strict):
+    """Keys every analysis accepts besides its model's own.
+
+    Attributes
+    ----------
+    sample : str
+        Label of the sample a case belongs to; cases are grouped by it in figures and in the
+        comparison with measured data (paper 000: the three polysilicon samples).
+    replicate : int
+        Index of a repeated case (paper 000: one of seven scans per sample). With ``sample`` it
+        selects the derived seed of every generated topography that has no fixed seed.
+    """
+
+    sample: str = ""
+    replicate: int = 0
+
+
+@dataclass(frozen=True)
+class CaseOutput:
+    """What a kind's ``run`` returns: scalars (SI, JSON-ready) and optional fields and curves."""
+
+    scalars: dict[str, Any]
+    dataset: Any = None  # xarray.Dataset or None
+
+
+@dataclass(frozen=True)
+class CaseRecord:
+    """A finished (or failed) case as stored in ``OUT/cases/ANALYSIS/CASE.json``.
+
+    Attributes
+    ----------
+    data : dict
+        The JSON record: ``analysis``, ``case``, ``status``, ``parameters`` (SI), ``axes`` (the
+        swept values as written), ``scalars``, ``seconds``, ``fields`` (path of the NetCDF file, or
+        None), ``error``.
+    folder : Path
+        The study's output folder (relative field paths are relative to it).
+    """
+
+    data: dict[str, Any]
+    folder: Path
+
+    @classmethod
+    def read(cls, path: Path, folder: Path) -> CaseRecord:
+        """Read a record file."""
+        return cls(json.loads(path.read_text()), folder)
+
+    def __getitem__(self, key: str) -> Any:
+        return self.data[key]
+
+    @property
+    def parameters(self) -> dict[str, Any]:
+        """The case's validated parameters (SI)."""
+        return self.data["parameters"]
+
+    @property
+    def scalars(self) -> dict[str, Any]:
+        """The case's scalar results (SI)."""
+        return self.data.get("scalars") or {}
+
+    @property
+    def done(self) -> bool:
+        """True when the case finished."""
+        return self.data.get("status") == "done"
+
+    @property
+    def label(self) -> str:
+        """A short legend label: the swept values as written (``sample=A, force=10 uN``)."""
+        axes = self.data.get("axes") or {}
+        return ", ".join(f"{k.rsplit('.', 1)[-1]}={v}" for k, v in axes.items()) or self.data["case"]
+
+    @cached_property
+    def fields_path(self) -> Path | None:
+        """Where the case's NetCDF file is (None when the case stored none)."""
+        fields = self.data.get("fields")
+        return None if fields is None else self.folder / fields
+
+    def dataset(self):
+        """Load the case's fields and curves as an ``xarray.Dataset`` (None when it has none)."""
+        import xarray as xr
+
+        path = self.fields_path
+        if path is None or not path.exists():
+            return None
+        return xr.load_dataset(path, engine="h5netcdf")
+
+
+@dataclass(frozen=True)
+class FigureContext:
+    """What a figure or table function gets besides the records: the analysis' name and comparison."""
+
+    analysis: str
+    compare: Any = None  # the validated ``compare`` table of the analysis, or None
+    options: Mapping[str, Any] = field(default_factory=dict)
+
+
+FigureFunction = Callable[[Sequence[CaseRecord], FigureContext], Any]
+"""Draws one figure from the analysis' finished cases; returns a matplotlib Figure, or None to skip."""
+
+TableFunction = Callable[[Sequence[CaseRecord], FigureContext], list[dict[str, Any]] | None]
+"""Derives one table (a list of rows) from the finished cases; returns None to skip."""
+
+
+@dataclass(frozen=True)
+class Kind:
+    """One analysis kind: see the module docstring.
+
+    Attributes
+    ----------
+    name : str
+        The ``model = "..."`` value.
+    summary : str
+        One line for ``roughcontact validate`` and the report.
+    parameters : type of CaseParameters
+        The schema of the analysis' keys.
+    run : callable
+        ``run(parameters, inputs) -> CaseOutput``.
+    units : mapping
+        Scalar name -> SI unit, for the table's column headers.
+    figures, tables : mapping
+        Name -> function drawing a figure or deriving a table from stored records.
+    compare : type of Strict, optional
+        Schema of the analysis' ``[analysis.compare]`` table (measured data), if it takes one.
+    """
+
+    name: str
+    summary: str
+    parameters: type[CaseParameters]
+    run: Callable[[Any, Any], CaseOutput]
+    units: Mapping[str, str] = field(default_factory=dict)
+    figures: Mapping[str, FigureFunction] = field(default_factory=dict)
+    tables: Mapping[str, TableFunction] = field(default_factory=dict)
+    compare: type[Strict] | None = None

@@ -1,0 +1,32 @@
+"""Helpers the study kinds share: choosing, grouping and ordering stored case records."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from ..kind import CaseRecord
+
+
+def evenly_chosen(items: Sequence, count: int) -> list:
+    """At most ``count`` items, evenly spread over ``items`` (first and last included)."""
+    if len(items) <= count:
+        return list(items)
+    picks = np.unique(np.linspace(0, len(items) - 1, count).round().astype(int))
+    return [items[i] for i in picks]
+
+
+def grouped(records: Sequence[CaseRecord], key: str = "sample") -> dict[str, list[CaseRecord]]:
+    """Return the records grouped by a parameter (default the sample label), in order of first appearance."""
+    groups: dict[str, list[CaseRecord]] = {}
+    for record in records:
+        groups.setdefault(str(record.parameters.get(key, "")), []).append(record)
+    return groups
+
+
+def scalar_series(records: Sequence[CaseRecord], *names: str) -> tuple[np.ndarray, ...]:
+    """Arrays of the scalars ``names`` over ``records``, ordered by the first of them."""
+    values = np.array([[float(r.scalars[name]) for name in names] for r in records], dtype=float)
+    values = values[np.argsort(values[:, 0], kind="stable")]
+    return tuple(values.T)

@@ -1,0 +1,202 @@
+"""Study kind ``normal``: one normal contact of a rough surface against a flat per case.
+
+Wraps :func:`roughcontact.contact.solve_normal` (FFT boundary elements, constrained conjugate
+gradients; paper 001 eq. 4): load control by ``mean_pressure`` or ``force``, displacement control
+by ``approach``; elastic-perfectly-plastic with ``hardness``; the body a half-space, or a film of
+``film_thickness`` on a rigid base or bonded to a ``substrate``; von Mises stress on the planes
+``stress_depths`` below the surface (half-space solution under the contact pressure).
+
+Figures: ``contact`` (pressure and gap maps of up to four cases), ``area_load`` (real contact
+area against load, one line per sample), ``load_approach`` (load against approach), ``von_mises``
+(von Mises maps at the first stress depth).
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+import numpy as np
+from pydantic import Field, model_validator
+from pydantic_core import PydanticCustomError
+
+from ..kind import CaseOutput, CaseParameters, Kind
+from ..schema import Force, Length, MaterialName, Pressure, TopographyName
+from .common import evenly_chosen, grouped, scalar_series
+
+
+class NormalParameters(CaseParameters):
+    """Keys of a ``model = "normal"`` analysis (SI after validation)."""
+
+    surface: TopographyName
+    material: MaterialName
+    counter: MaterialName | None = None
+    mean_pressure: Pressure | None = None
+    force: Force | None = None
+    approach: Length | None = None
+    hardness: Pressure | None = None
+    boundary: Literal["periodic", "free"] | None = None
+    film_thickness: Length | None = None
+    substrate: MaterialName | None = None
+    film_base: Literal["bonded", "frictionless"] = "bonded"
+    tolerance: float = Field(default=1e-8, gt=0.0, lt=1.0)
+    stress_depths: list[Length] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _one_target(self) -> NormalParameters:
+        given = [k for k in ("mean_pressure", "force", "approach") if getattr(self, k) is not None]
+        if len(given) != 1:
+            raise PydanticCustomError(
+                "quantity",
+                "give exactly one of mean_pressure, force, approach (found {found})",
+                {"found": ", ".join(given) or "none", "fix": "e.g. mean_pressure = '20 MPa'"},
+            )
+        if self.substrate is not None and self.film_thickness is None:
+            raise PydanticCustomError(
+                "quantity", "a substrate needs film_thickness", {"fix": "add film_thickness = '50 nm'"}
+            )
+        return self
+
+
+def run(parameters: NormalParameters, inputs) -> CaseOutput:
+    """Solve one case; scalars as :meth:`NormalContactResult.scalars` plus E* and stress maxima."""
+    import xarray as xr
+
+    from ...contact import solve_normal
+    from ...elasticity.halfspace import ElasticLayer
+    from ...elasticity.stress import subsurface_stress
+
+    surface = inputs.topography(parameters.surface)
+    material = inputs.material(parameters.material)
+    layer = None
+    if parameters.film_thickness is not None:
+        base = inputs.material(parameters.substrate) or parameters.film_base
+        layer = ElasticLayer(parameters.film_thickness, material, base=base)
+    result = solve_normal(
+        surface,
+        None if layer is not None else material,
+        counter_body=inputs.material(parameters.counter),
+        layer=layer,
+        mean_pressure=parameters.mean_pressure,
+        force=parameters.force,
+        approach=parameters.approach,
+        hardness=parameters.hardness,
+        boundary=parameters.boundary,
+        tolerance=parameters.tolerance,
+    )
+    scalars = result.scalars() | {"contact_modulus": result.contact_modulus}
+    dataset = result.to_xarray().drop_vars(["displacement"])
+    dataset.attrs = {}
+    if parameters.stress_depths and surface.dim == 2:
+        stress = subsurface_stress(
+            result.pressure,
+            surface.size,
+            parameters.stress_depths,
+            poissons_ratio=material.poissons_ratio,
+            boundary=result.boundary,
+        )
+        von_mises = stress.von_mises()
+        peak, (x, y, z) = stress.max_von_mises()
+        scalars |= {"max_von_mises": peak, "max_von_mises_depth": z}
+        dataset["von_mises"] = xr.DataArray(
+            von_mises,
+            dims=("depth", "x", "y"),
+            coords={"depth": ("depth", np.asarray(parameters.stress_depths), {"units": "m"})},
+            attrs={"units": "Pa"},
+        )
+    return CaseOutput(scalars, dataset)
+
+
+def _contact_maps(records, context):
+    from ...plotting.study import map_axes, new_figure
+
+    chosen = evenly_chosen([r for r in records if r.fields_path is not None], 4)
+    fields = [record.dataset() for record in chosen]
+    if not chosen or "y" not in fields[0].dims:
+        return None
+    figure, axes = new_figure(2, len(chosen), width=3.6, height=3.2)
+    for column, (record, data) in enumerate(zip(chosen, fields, strict=True)):
+        pressure_axis, gap_axis = axes[0][column], axes[1][column]
+        map_axes(pressure_axis, data["pressure"], "pressure", "Pa", cmap="magma")
+        pressure_axis.set_title(
+            f"{record.label}\n{100 * record.scalars['contact_fraction']:.3g} % in contact"
+        )
+        map_axes(gap_axis, data["gap"], "gap", "m", cmap="viridis")
+    return figure
+
+
+def _area_load(records, context):
+    from ...plotting.study import new_figure
+
+    if len(records) < 2:
+        return None
+    figure, axes = new_figure(1, 1)
+    ax = axes[0][0]
+    for sample, group in grouped(records).items():
+        pressure, fraction = scalar_series(group, "mean_pressure", "contact_fraction")
+        ax.plot(pressure / 1e6, 100 * fraction, "o-", label=sample or None)
+    ax.set_xlabel("nominal mean pressure (MPa)")
+    ax.set_ylabel("real contact area (% of nominal)")
+    ax.set_title("real contact area against load")
+    if any(grouped(records)):
+        ax.legend()
+    return figure
+
+
+def _load_approach(records, context):
+    from ...plotting.study import new_figure
+
+    if len(records) < 2:
+        return None
+    figure, axes = new_figure(1, 1)
+    ax = axes[0][0]
+    for sample, group in grouped(records).items():
+        approach, force = scalar_series(group, "approach", "force")
+        ax.plot(approach * 1e9, force * 1e6, "o-", label=sample or None)
+    ax.set_xlabel("approach (nm)")
+    ax.set_ylabel("force (µN)")
+    ax.set_title("load against approach")
+    if any(grouped(records)):
+        ax.legend()
+    return figure
+
+
+def _von_mises(records, context):
+    from ...plotting.study import map_axes, new_figure
+
+    chosen = evenly_chosen([r for r in records if "max_von_mises" in r.scalars], 4)
+    if not chosen:
+        return None
+    figure, axes = new_figure(1, len(chosen), width=3.6, height=3.2)
+    for column, record in enumerate(chosen):
+        field = record.dataset()["von_mises"].isel(depth=0)
+        ax = axes[0][column]
+        map_axes(ax, field, "von Mises stress", "Pa", cmap="inferno")
+        ax.set_title(f"{record.label}\nz = {float(field.depth) * 1e9:.3g} nm")
+    return figure
+
+
+KIND = Kind(
+    name="normal",
+    summary="normal contact against a flat: FFT-BEM, load or approach control, optional hardness/film",
+    parameters=NormalParameters,
+    run=run,
+    units={
+        "force": "N",
+        "mean_pressure": "Pa",
+        "approach": "m",
+        "contact_area": "m^2",
+        "mean_gap": "m",
+        "max_pressure": "Pa",
+        "contact_modulus": "Pa",
+        "max_von_mises": "Pa",
+        "max_von_mises_depth": "m",
+        "hardness": "Pa",
+        "film_thickness": "m",
+    },
+    figures={
+        "contact": _contact_maps,
+        "area_load": _area_load,
+        "load_approach": _load_approach,
+        "von_mises": _von_mises,
+    },
+)

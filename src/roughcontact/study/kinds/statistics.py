@@ -1,0 +1,107 @@
+"""Study kind ``statistics``: roughness statistics of one topography per case.
+
+Scalars from :func:`roughcontact.topography.statistics.summary` (Ra, Rq, Rsk, Rku, Rz, rms slope
+and curvature, spectral moments m0, m2, m4 of paper 002 eqs. 1-3, and McCool's summit density,
+radius and height deviation, eqs. 4-5), plus the grid and physical size. Fields: the heights and
+the radially averaged PSD (maps) or the 1D PSD (profiles).
+
+Figures: ``heights`` (height maps of up to four cases), ``psd`` (every case's PSD on one plot).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..kind import CaseOutput, CaseParameters, Kind
+from ..schema import TopographyName
+from .common import evenly_chosen
+
+
+class StatisticsParameters(CaseParameters):
+    """Keys of a ``model = "statistics"`` analysis."""
+
+    surface: TopographyName
+
+
+def run(parameters: StatisticsParameters, inputs) -> CaseOutput:
+    """Statistics of the surface; the heights and PSD as fields."""
+    import xarray as xr
+
+    from ...topography.statistics import psd_1d, psd_radial, summary
+
+    surface = inputs.topography(parameters.surface)
+    scalars = {
+        "points_x": surface.shape[0],
+        "points_y": surface.shape[1] if surface.dim == 2 else 1,
+        "size_x": surface.size[0],
+        "size_y": surface.size[1] if surface.dim == 2 else 0.0,
+    } | summary(surface)
+    q, psd = psd_radial(surface) if surface.dim == 2 else psd_1d(surface)
+    axes = ("x", "y")[: surface.dim]
+    coordinates = {a: (a, c, {"units": "m"}) for a, c in zip(axes, surface.coordinates(), strict=True)}
+    dataset = xr.Dataset(
+        {
+            "heights": (axes, surface.heights, {"units": "m"}),
+            "psd": ("q", np.asarray(psd), {"units": "m^4" if surface.dim == 2 else "m^3"}),
+        },
+        coords=coordinates | {"q": ("q", np.asarray(q), {"units": "rad/m"})},
+    )
+    return CaseOutput(scalars, dataset)
+
+
+def _heights(records, context):
+    from ...plotting.study import map_axes, new_figure
+
+    chosen = evenly_chosen(records, 4)
+    fields = [record.dataset() for record in chosen]
+    if "y" not in fields[0].dims:
+        figure, axes = new_figure(1, 1, width=7.0)
+        for record, data in zip(chosen, fields, strict=True):
+            axes[0][0].plot(data["x"] * 1e6, data["heights"] * 1e9, label=record.label)
+        axes[0][0].set_xlabel("x (µm)")
+        axes[0][0].set_ylabel("height (nm)")
+        axes[0][0].legend()
+        return figure
+    figure, axes = new_figure(1, len(chosen), width=3.8, height=3.2)
+    for column, (record, data) in enumerate(zip(chosen, fields, strict=True)):
+        map_axes(axes[0][column], data["heights"], "height", "m")
+        axes[0][column].set_title(f"{record.label}\nRq {record.scalars['Rq'] * 1e9:.3g} nm")
+    return figure
+
+
+def _psd(records, context):
+    from ...plotting.study import new_figure
+
+    figure, axes = new_figure(1, 1)
+    ax = axes[0][0]
+    for record in records:
+        data = record.dataset()
+        ax.loglog(data["q"], data["psd"], label=record.label)
+    ax.set_xlabel("wavevector q (rad/m)")
+    ax.set_ylabel(f"PSD ({records[0].dataset()['psd'].attrs['units']})")
+    ax.set_title("power spectral density")
+    if 1 < len(records) <= 12:
+        ax.legend(fontsize="small")
+    return figure
+
+
+KIND = Kind(
+    name="statistics",
+    summary="roughness statistics, spectral moments (m0, m2, m4) and McCool summit parameters",
+    parameters=StatisticsParameters,
+    run=run,
+    units={
+        "size_x": "m",
+        "size_y": "m",
+        "Ra": "m",
+        "Rq": "m",
+        "Rz": "m",
+        "rms_curvature": "1/m",
+        "m0": "m^2",
+        "m4": "1/m^2",
+        "summit_density": "1/m^2",
+        "summit_radius": "m",
+        "summit_height_std": "m",
+    },
+    figures={"heights": _heights, "psd": _psd},
+)

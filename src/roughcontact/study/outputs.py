@@ -1,0 +1,170 @@
+"""What a study's output folder shows: results table, derived tables and figures, from stored records only.
+
+Everything here reads ``OUT/study.json`` and the case records, never the study file or the solvers,
+so ``roughcontact plot OUT/`` and ``roughcontact report OUT/`` work on a finished (or partly
+finished) study, also on another machine.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from ..errors import InputError
+from .kind import CaseRecord, FigureContext, Kind
+from .store import read_record, write_table
+
+log = logging.getLogger(__name__)
+
+
+@dataclass(frozen=True)
+class StoredAnalysis:
+    """One analysis of a stored study: its kind, its records (None for cases not yet stored), options."""
+
+    name: str
+    kind: Kind
+    summary: str
+    figures: tuple[str, ...]
+    compare: Any
+    sweep_axes: tuple[str, ...]
+    cases: tuple[str, ...]
+    records: tuple[CaseRecord | None, ...]
+
+    @property
+    def finished(self) -> list[CaseRecord]:
+        """Records of the cases that finished."""
+        return [r for r in self.records if r is not None and r.done]
+
+    @property
+    def context(self) -> FigureContext:
+        """What the kind's figure and table functions get besides the records."""
+        return FigureContext(self.name, self.compare)
+
+
+def read_study(folder: str | Path) -> tuple[dict[str, Any], list[StoredAnalysis]]:
+    """Read ``OUT/study.json`` and every stored record of the study in ``folder``."""
+    from .kinds import get_kind
+
+    folder = Path(folder).expanduser().resolve()
+    marker = folder / "study.json"
+    if not marker.is_file():
+        raise InputError(
+            "OUT",
+            f"{folder} holds no study results (no study.json).",
+            "give the folder 'roughcontact run' wrote.",
+        )
+    document = json.loads(marker.read_text())
+    analyses = []
+    for entry in document["analyses"]:
+        kind = get_kind(entry["model"])
+        compare = entry.get("compare")
+        if compare is not None and kind.compare is not None:
+            compare = kind.compare.model_validate(compare)
+        records = tuple(read_record(folder, entry["name"], case) for case in entry["cases"])
+        analyses.append(
+            StoredAnalysis(
+                entry["name"],
+                kind,
+                entry.get("summary", kind.summary),
+                tuple(entry["figures"]),
+                compare,
+                tuple(entry.get("sweep_axes", ())),
+                tuple(entry["cases"]),
+                records,
+            )
+        )
+    return document, analyses
+
+
+def _header(name: str, units: dict[str, str]) -> str:
+    unit = units.get(name.rsplit(".", 1)[-1])
+    return f"{name} [{unit}]" if unit else name
+
+
+def result_rows(analyses: list[StoredAnalysis]) -> list[dict[str, Any]]:
+    """One row per case of every analysis: status, swept values (SI), scalars (SI), time, error."""
+    rows = []
+    for analysis in analyses:
+        units = dict(analysis.kind.units)
+        for case_id, record in zip(analysis.cases, analysis.records, strict=True):
+            row: dict[str, Any] = {"analysis": analysis.name, "model": analysis.kind.name, "case": case_id}
+            if record is None:
+                rows.append(row | {"status": "pending"})
+                continue
+            row["status"] = record["status"]
+            row["sample"] = record.parameters.get("sample", "")
+            row["replicate"] = record.parameters.get("replicate", 0)
+            for axis, value in (record.data.get("axes_si") or {}).items():
+                if axis not in ("sample", "replicate"):
+                    row[_header(axis, units)] = value
+            for name, value in record.scalars.items():
+                row[_header(name, units)] = value
+            row["seconds"] = record.data.get("seconds")
+            row["error"] = record.data.get("error") or ""
+            rows.append(row)
+    return rows
+
+
+def write_results_table(folder: str | Path) -> Path:
+    """Write ``OUT/results.csv`` from the stored records; return its path."""
+    folder = Path(folder).expanduser().resolve()
+    _, analyses = read_study(folder)
+    path = folder / "results.csv"
+    write_table(path, result_rows(analyses))
+    return path
+
+
+def write_tables(folder: str | Path) -> list[Path]:
+    """Write every analysis' derived tables to ``OUT/tables/ANALYSIS_TABLE.csv``; return the paths."""
+    folder = Path(folder).expanduser().resolve()
+    _, analyses = read_study(folder)
+    written = []
+    for analysis in analyses:
+        records = analysis.finished
+        if not records:
+            continue
+        for name, function in analysis.kind.tables.items():
+            rows = function(records, analysis.context)
+            if rows:
+                path = folder / "tables" / f"{analysis.name}_{name}.csv"
+                write_table(path, rows)
+                written.append(path)
+    return written
+
+
+def draw_figures(folder: str | Path, *, dpi: int = 150) -> tuple[list[Path], list[str]]:
+    """Draw every analysis' figures into ``OUT/figures``; return the files and the problems met.
+
+    A figure that cannot be drawn (too few finished cases, say) is skipped by its function; one
+    that fails is reported in the problems and the others are still drawn.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+
+    folder = Path(folder).expanduser().resolve()
+    _, analyses = read_study(folder)
+    written, problems = [], []
+    for analysis in analyses:
+        records = analysis.finished
+        if not records:
+            continue
+        for name in analysis.figures:
+            try:
+                figure = analysis.kind.figures[name](records, analysis.context)
+            except Exception as error:  # one figure's failure must not lose the others
+                problems.append(f"{analysis.name}/{name}: {type(error).__name__}: {error}")
+                log.warning("figure %s of %s failed: %s", name, analysis.name, error)
+                continue
+            if figure is None:
+                continue
+            path = folder / "figures" / f"{analysis.name}_{name}.png"
+            path.parent.mkdir(parents=True, exist_ok=True)
+            partial = path.with_name(f".{path.name}.part")
+            figure.savefig(partial, dpi=dpi, bbox_inches="tight", format="png")
+            partial.replace(path)
+            written.append(path)
+    return written, problems

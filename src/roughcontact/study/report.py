@@ -1,0 +1,167 @@
+"""One self-contained HTML page of a study: status, tables, figures, failures and provenance.
+
+Figures are embedded as base64 PNG and the styles inline, so ``report.html`` reads offline and
+can be mailed or archived on its own.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import json
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import Any
+
+from .outputs import StoredAnalysis, draw_figures, read_study, result_rows, write_results_table, write_tables
+from .store import read_table, write_atomically
+
+_STYLE = """
+body { font-family: system-ui, sans-serif; margin: 2em auto; max-width: 75em; color: #222; }
+h1 { margin-bottom: 0.2em; } h2 { border-bottom: 1px solid #ccc; padding-bottom: 0.2em; margin-top: 2em; }
+table { border-collapse: collapse; margin: 0.8em 0; font-size: 0.85em; }
+th, td { border: 1px solid #ddd; padding: 0.25em 0.5em; text-align: right; }
+th { background: #f3f3f3; } td.text { text-align: left; }
+.failed { color: #a00; } .pending { color: #a60; } .done { color: #070; }
+figure { margin: 1em 0; } figure img { max-width: 100%; border: 1px solid #eee; }
+pre { background: #f7f7f7; padding: 0.8em; overflow-x: auto; font-size: 0.85em; }
+.scroll { overflow-x: auto; }
+"""
+
+
+def _cell(value: Any) -> str:
+    if value is None or value == "":
+        return "<td></td>"
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return f'<td class="text">{html.escape(str(value))}</td>'
+    if isinstance(value, bool) or str(value) in ("True", "False"):
+        return f'<td class="text">{html.escape(str(value))}</td>'
+    if number.is_integer() and abs(number) < 1e6:
+        return f"<td>{int(number)}</td>"
+    return f"<td>{number:.4g}</td>"
+
+
+def _table(rows: list[dict[str, Any]], drop: tuple[str, ...] = ()) -> str:
+    if not rows:
+        return "<p>(no rows)</p>"
+    columns = [c for c in dict.fromkeys(k for row in rows for k in row) if c not in drop]
+    columns = [c for c in columns if any(row.get(c) not in (None, "") for row in rows)]
+    head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
+    body = []
+    for row in rows:
+        status = row.get("status", "")
+        cells = "".join(
+            f'<td class="text {html.escape(str(status))}">{html.escape(str(status))}</td>'
+            if c == "status"
+            else _cell(row.get(c))
+            for c in columns
+        )
+        body.append(f"<tr>{cells}</tr>")
+    return f'<div class="scroll"><table><tr>{head}</tr>{"".join(body)}</table></div>'
+
+
+def _image(path: Path) -> str:
+    data = base64.b64encode(path.read_bytes()).decode()
+    caption = html.escape(path.stem.replace("_", " "))
+    image = f'<img alt="{caption}" src="data:image/png;base64,{data}">'
+    return f"<figure>{image}<figcaption>{caption}</figcaption></figure>"
+
+
+def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) -> str:
+    counts: dict[str, int] = {}
+    for row in rows:
+        counts[row["status"]] = counts.get(row["status"], 0) + 1
+    parts = [
+        f"<h2>{html.escape(analysis.name)} <small>({html.escape(analysis.kind.name)})</small></h2>",
+        f"<p>{html.escape(analysis.summary)}. Cases: "
+        + ", ".join(f'<span class="{s}">{n} {s}</span>' for s, n in counts.items())
+        + (f"; swept: {html.escape(', '.join(analysis.sweep_axes))}" if analysis.sweep_axes else "")
+        + "</p>",
+        _table(rows, drop=("analysis", "model", "error")),
+    ]
+    for path in sorted((folder / "tables").glob(f"{analysis.name}_*.csv")):
+        parts.append(f"<h3>{html.escape(path.stem.removeprefix(analysis.name + '_').replace('_', ' '))}</h3>")
+        parts.append(_table(read_table(path)))
+    for name in analysis.figures:
+        path = folder / "figures" / f"{analysis.name}_{name}.png"
+        if path.exists():
+            parts.append(_image(path))
+    failed = [row for row in rows if row["status"] == "failed"]
+    if failed:
+        parts.append("<h3>Failed cases</h3><ul>")
+        parts += [
+            f'<li class="failed">{html.escape(row["case"])}: {html.escape(str(row.get("error", "")))}</li>'
+            for row in failed
+        ]
+        parts.append("</ul>")
+    return "\n".join(parts)
+
+
+def _run_line(provenance: dict[str, Any]) -> str:
+    wall, cases = (float(provenance.get(k) or 0.0) for k in ("wall_seconds", "case_seconds"))
+    return (
+        f"roughcontact {provenance.get('roughcontact', '?')}, {provenance.get('executor', '?')}, "
+        f"finished {provenance.get('finished', '?')}, wall time {wall:.1f} s (cases {cases:.1f} s)."
+    )
+
+
+def write_report(folder: str | Path, *, redraw: bool = True) -> Path:
+    """Write ``OUT/report.html`` for the study in ``folder`` (tables and figures re-drawn first).
+
+    Parameters
+    ----------
+    folder : str or Path
+        A study's output folder.
+    redraw : bool
+        Re-write the results table, derived tables and figures from the records before the page.
+
+    Returns
+    -------
+    Path
+        The report file.
+    """
+    folder = Path(folder).expanduser().resolve()
+    problems: list[str] = []
+    if redraw:
+        write_results_table(folder)
+        write_tables(folder)
+        problems = draw_figures(folder)[1]
+    document, analyses = read_study(folder)
+    rows = result_rows(analyses)
+    provenance_path = folder / "provenance.json"
+    provenance = json.loads(provenance_path.read_text()) if provenance_path.exists() else {}
+    status = "complete" if provenance.get("complete") else "incomplete: rerun with --resume to finish it"
+    title = html.escape(document["name"])
+    parts = [
+        f"<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>{title}</title>",
+        f"<style>{_STYLE}</style></head><body>",
+        f"<h1>{title}</h1>",
+        f"<p>{html.escape(document.get('description', ''))}</p>",
+        f"<p>Study {html.escape(status)}. {html.escape(_run_line(provenance))} "
+        "Values in SI units; column headers give them.</p>",
+    ]
+    if problems:
+        parts.append(
+            "<p class='failed'>Figures that could not be drawn: " + html.escape("; ".join(problems)) + "</p>"
+        )
+    for analysis in analyses:
+        parts.append(_analysis_section(folder, analysis, [r for r in rows if r["analysis"] == analysis.name]))
+    parts.append("<h2>Provenance</h2>")
+    inputs = provenance.get("input_files", {})
+    if inputs:
+        parts.append(_table([{"file": path, "sha256": digest} for path, digest in inputs.items()]))
+    shown = {k: v for k, v in provenance.items() if k not in ("input_files", "seeds")}
+    parts.append(f"<pre>{html.escape(json.dumps(shown, indent=2))}</pre>")
+    study_file = folder / "study.toml"
+    if study_file.exists():
+        parts.append(f"<h3>Study file</h3><pre>{html.escape(study_file.read_text())}</pre>")
+    parts.append(
+        f"<p><small>Written {datetime.now(UTC).isoformat(timespec='seconds')} by roughcontact report."
+        "</small></p>"
+    )
+    parts.append("</body></html>")
+    path = folder / "report.html"
+    write_atomically(path, "\n".join(parts))
+    return path

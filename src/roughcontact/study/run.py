@@ -1,0 +1,437 @@
+"""Run a study: every case once, in-process or on a Dask cluster, restartable, with provenance.
+
+The runner turns each pending :class:`~roughcontact.study.config.Case` into a picklable
+:class:`Task`, runs it with :func:`execute` (the same function in-process and on a Dask worker),
+and stores what comes back (:mod:`roughcontact.study.store`) as soon as it comes back. So:
+
+* a rerun with ``resume=True`` skips every case whose record is stored with the same key (same
+  model, parameters, inputs and seeds) and redoes failed, interrupted and changed ones;
+* Ctrl-C or a killed process loses no finished case, and leaves no half-written file (each is
+  renamed into place when complete); the table written on the way out marks what is pending;
+* a case that raises is recorded with its error (``status = "failed"``) and the others go on;
+* on a Dask cluster, a case whose worker dies is rerun by the scheduler on another worker and is
+  stored once, when its result reaches the client.
+
+Scale-out uses Dask's own machinery: ``workers=N`` starts a ``distributed.LocalCluster`` of N
+single-threaded worker processes on loopback; ``scheduler="tcp://host:8786"`` connects to a
+running cluster (its workers need roughcontact installed; they get the topographies read here, so
+they need no access to the input files). ``worker_storage=PATH`` makes the workers write the
+cases' fields there (a path they share, e.g. a cluster file system) and send back only scalars.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import platform
+import socket
+import sys
+import time
+import traceback
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import Any
+
+from ..errors import InputError
+from .config import Case, Study
+from .inputs import CaseInputs
+from .kind import CaseParameters
+from .schema import FileTopography
+from .store import (
+    clean_partial_files,
+    dumps,
+    fields_path,
+    json_ready,
+    read_record,
+    record_path,
+    write_atomically,
+    write_dataset,
+)
+
+MARKER = "study.json"
+
+
+@dataclass(frozen=True)
+class Task:
+    """Everything a worker needs to run one case (picklable)."""
+
+    study: str
+    analysis: str
+    case_id: str
+    key: str
+    kind: str
+    parameters: CaseParameters
+    inputs: CaseInputs
+    axes: dict[str, Any]
+    axes_si: dict[str, Any]
+    seeds: dict[str, int]
+    worker_storage: str | None = None
+
+
+def _version() -> str:
+    from .. import __version__
+
+    return __version__
+
+
+def execute(task: Task) -> tuple[dict[str, Any], Any]:
+    """Run one case and return its record and its dataset (None if it has none or it went to storage).
+
+    Errors of the case itself are caught and recorded (``status = "failed"`` with the message and
+    the last lines of the traceback); only interruptions (KeyboardInterrupt, SystemExit) propagate.
+    """
+    from .kinds import get_kind
+
+    record: dict[str, Any] = {
+        "analysis": task.analysis,
+        "case": task.case_id,
+        "key": task.key,
+        "model": task.kind,
+        "status": "failed",
+        "axes": task.axes,
+        "axes_si": task.axes_si,
+        "parameters": task.parameters.model_dump(mode="json"),
+        "seeds": task.seeds,
+        "scalars": {},
+        "fields": None,
+        "error": None,
+        "version": _version(),
+        "host": socket.gethostname(),
+        "pid": os.getpid(),
+        "started": datetime.now(UTC).isoformat(timespec="seconds"),
+    }
+    start = time.perf_counter()
+    dataset = None
+    try:
+        output = get_kind(task.kind).run(task.parameters, task.inputs)
+        record["scalars"] = json_ready(output.scalars)
+        dataset = output.dataset
+        record["status"] = "done"
+    except Exception as error:  # recorded, the study goes on
+        record["error"] = f"{type(error).__name__}: {error}"
+        record["traceback"] = traceback.format_exc(limit=-4)
+    record["seconds"] = time.perf_counter() - start
+    if dataset is not None and task.worker_storage is not None:
+        path = Path(task.worker_storage) / task.study / task.analysis / f"{task.case_id}.nc"
+        write_dataset(path, dataset)
+        record["fields"] = str(path.resolve())
+        dataset = None
+    return record, dataset
+
+
+def store(folder: Path, record: dict[str, Any], dataset) -> None:
+    """Store a case: its NetCDF file first (if any), then its record, the mark of a finished case."""
+    if dataset is not None:
+        path = fields_path(folder, record["analysis"], record["case"])
+        write_dataset(path, dataset)
+        record["fields"] = str(path.relative_to(folder))
+    write_atomically(record_path(folder, record["analysis"], record["case"]), dumps(record))
+
+
+def _axes_si(case: Case) -> dict[str, Any]:
+    values = {}
+    for axis in case.axes:
+        section, _, rest = axis.partition(".")
+        table, _, key = rest.partition(".")
+        if section == "topographies" and key:
+            values[axis] = getattr(case.topographies.get(table), key, None)
+        elif section == "materials" and key:
+            material = next((m for n, m in case.materials.items() if n == table), None)
+            values[axis] = getattr(material, key, None)
+        else:
+            values[axis] = getattr(case.parameters, axis)
+    return json_ready(values)
+
+
+def make_task(study: Study, case: Case, worker_storage: str | None = None) -> Task:
+    """Build the picklable task of a case (file topographies travel as the arrays read in validation)."""
+    files = {
+        name: study.loaded[spec.model_dump_json()]
+        for name, spec in case.topographies.items()
+        if isinstance(spec, FileTopography)
+    }
+    inputs = CaseInputs(dict(case.topographies), files, dict(case.materials))
+    return Task(
+        study=study.name,
+        analysis=case.analysis,
+        case_id=case.case_id,
+        key=case.key,
+        kind=study.analysis(case.analysis).kind.name,
+        parameters=case.parameters,
+        inputs=inputs,
+        axes=dict(case.axes),
+        axes_si=_axes_si(case),
+        seeds=case.seeds,
+        worker_storage=worker_storage,
+    )
+
+
+def is_finished(folder: Path, case: Case) -> bool:
+    """Return True when ``case`` is stored as done with the same key (and its fields file, if any, exists)."""
+    record = read_record(folder, case.analysis, case.case_id)
+    if record is None or not record.done or record["key"] != case.key:
+        return False
+    path = record.fields_path
+    return path is None or path.exists()
+
+
+@dataclass
+class RunSummary:
+    """What a run did: counts, times and the executor."""
+
+    total: int
+    skipped: int = 0
+    done: int = 0
+    failed: int = 0
+    interrupted: bool = False
+    executor: str = "in-process"
+    wall_seconds: float = 0.0
+    case_seconds: float = 0.0
+    failures: list[str] = field(default_factory=list)
+
+    @property
+    def pending(self) -> int:
+        """Cases neither finished nor failed (after an interruption)."""
+        return self.total - self.skipped - self.done - self.failed
+
+
+def _in_process(tasks: list[Task]) -> Iterator[tuple[dict, Any]]:
+    for task in tasks:
+        yield execute(task)
+
+
+@contextlib.contextmanager
+def dask_client(workers: int | None = None, scheduler: str | None = None):
+    """Yield a Dask ``Client`` on a new local cluster of ``workers`` processes, or on ``scheduler``."""
+    try:
+        from distributed import Client, LocalCluster
+    except ImportError as error:  # pragma: no cover - distributed is a dependency
+        raise InputError(
+            "--workers", f"Dask distributed does not import ({error}).", "pip install distributed"
+        ) from None
+    if scheduler is not None:
+        try:
+            client = Client(scheduler, timeout="20s")
+        except OSError as error:
+            raise InputError(
+                "--scheduler",
+                f"cannot reach a Dask scheduler at {scheduler!r} ({error}).",
+                "start one (dask scheduler) or check the address, e.g. tcp://10.0.0.5:8786.",
+            ) from None
+        with client:
+            yield client
+        return
+    with (
+        LocalCluster(
+            n_workers=workers,
+            threads_per_worker=1,
+            processes=True,
+            host="127.0.0.1",
+            dashboard_address=None,
+            silence_logs=40,
+        ) as cluster,
+        Client(cluster) as client,
+    ):
+        yield client
+
+
+def _on_dask(client, tasks: list[Task]) -> Iterator[tuple[dict, Any]]:
+    from distributed import as_completed
+
+    futures = {
+        client.submit(execute, task, key=f"roughcontact-{task.analysis}-{task.case_id}", pure=False): task
+        for task in tasks
+    }
+    try:
+        for future in as_completed(futures):
+            try:
+                yield future.result()
+            except Exception as error:  # the task could not run at all (e.g. its workers kept dying)
+                task = futures[future]
+                record = {
+                    "analysis": task.analysis,
+                    "case": task.case_id,
+                    "key": task.key,
+                    "model": task.kind,
+                    "status": "failed",
+                    "axes": task.axes,
+                    "axes_si": task.axes_si,
+                    "parameters": task.parameters.model_dump(mode="json"),
+                    "seeds": task.seeds,
+                    "scalars": {},
+                    "fields": None,
+                    "error": f"{type(error).__name__}: {error}",
+                    "version": _version(),
+                    "seconds": None,
+                }
+                yield record, None
+    finally:
+        client.cancel(list(futures))
+
+
+def _progress(total: int, enabled: bool):
+    from tqdm.auto import tqdm
+
+    return tqdm(total=total, disable=not enabled, unit="case", desc="cases", file=sys.stderr, leave=False)
+
+
+def check_output(folder: Path, resume: bool) -> None:
+    """Refuse to mix a new study into a folder that holds another one's results, unless resuming."""
+    if resume or not folder.exists() or not any(folder.iterdir()):
+        return
+    if (folder / MARKER).exists():
+        raise InputError(
+            "-o/--output",
+            f"{folder} already holds a study's results.",
+            "pass --resume to continue it (finished cases are kept), or choose another folder.",
+        )
+    raise InputError("-o/--output", f"{folder} is not empty.", "choose a new or empty folder.")
+
+
+def run_study(
+    study: Study,
+    output: str | Path,
+    *,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    resume: bool = False,
+    worker_storage: str | Path | None = None,
+    progress: bool = False,
+    on_record: Callable[[dict], None] | None = None,
+) -> RunSummary:
+    """Run every pending case of ``study`` into ``output`` and write the table and provenance.
+
+    Parameters
+    ----------
+    study : Study
+        From :func:`roughcontact.study.config.load_study`.
+    output : str or Path
+        The output folder (layout in :mod:`roughcontact.study.store`).
+    workers : int, optional
+        Run on a local Dask cluster of this many worker processes (default: in-process).
+    scheduler : str, optional
+        Address of a running Dask scheduler to send the cases to.
+    resume : bool
+        Continue a study in a folder that holds results: finished cases with the same key are kept.
+    worker_storage : str or Path, optional
+        Folder (shared with the workers) where they write the fields; only scalars come back.
+    progress : bool
+        Show a progress bar on standard error.
+    on_record : callable, optional
+        Called with each stored record (for tests and logging).
+
+    Returns
+    -------
+    RunSummary
+        Counts of skipped, done, failed and pending cases; ``interrupted`` after Ctrl-C (the
+        KeyboardInterrupt is re-raised after the table and provenance are written).
+    """
+    if workers is not None and scheduler is not None:
+        raise InputError("--workers", "both --workers and --scheduler were given.", "give one of them.")
+    if workers is not None and workers < 1:
+        raise InputError("--workers", f"need at least 1 worker, got {workers}.", "e.g. --workers 2.")
+    folder = Path(output).expanduser().resolve()
+    check_output(folder, resume)
+    folder.mkdir(parents=True, exist_ok=True)
+    clean_partial_files(folder)
+    write_atomically(folder / "study.toml", study.text)
+    write_atomically(folder / MARKER, dumps(study_document(study)))
+
+    cases = study.cases
+    pending = [case for case in cases if not (resume and is_finished(folder, case))]
+    summary = RunSummary(total=len(cases), skipped=len(cases) - len(pending))
+    storage = None if worker_storage is None else str(Path(worker_storage).expanduser().resolve())
+    tasks = [make_task(study, case, storage) for case in pending]
+    started = datetime.now(UTC)
+    clock = time.perf_counter()
+    bar = _progress(len(tasks), progress)
+    try:
+        with contextlib.ExitStack() as stack:
+            if workers is not None or scheduler is not None:
+                client = stack.enter_context(dask_client(workers, scheduler))
+                summary.executor = (
+                    f"dask scheduler {scheduler}" if scheduler else f"dask local cluster, {workers} workers"
+                )
+                results = _on_dask(client, tasks)
+            else:
+                results = _in_process(tasks)
+            for record, dataset in results:
+                store(folder, record, dataset)
+                summary.case_seconds += record.get("seconds") or 0.0
+                if record["status"] == "done":
+                    summary.done += 1
+                else:
+                    summary.failed += 1
+                    summary.failures.append(f"{record['analysis']}/{record['case']}: {record['error']}")
+                bar.update()
+                if on_record is not None:
+                    on_record(record)
+    except KeyboardInterrupt:
+        summary.interrupted = True
+        raise
+    finally:
+        bar.close()
+        summary.wall_seconds = time.perf_counter() - clock
+        write_summary_files(study, folder, summary, started)
+    return summary
+
+
+def study_document(study: Study) -> dict[str, Any]:
+    """Return what ``plot`` and ``report`` need of the study: analyses, figures, comparisons, case ids."""
+    return {
+        "name": study.name,
+        "description": study.description,
+        "study_file": str(study.path),
+        "analyses": [
+            {
+                "name": analysis.name,
+                "model": analysis.kind.name,
+                "summary": analysis.kind.summary,
+                "figures": list(analysis.figures),
+                "compare": None if analysis.compare is None else analysis.compare.model_dump(mode="json"),
+                "sweep_axes": list(analysis.sweep_axes),
+                "cases": [case.case_id for case in analysis.cases],
+            }
+            for analysis in study.analyses
+        ],
+    }
+
+
+def write_summary_files(study: Study, folder: Path, summary: RunSummary, started: datetime) -> None:
+    """Write ``results.csv`` (every case, pending ones marked) and ``provenance.json``."""
+    from .outputs import write_results_table
+
+    write_results_table(folder)
+    import numpy
+    import scipy
+    import xarray
+
+    document = {
+        "roughcontact": _version(),
+        "python": sys.version.split()[0],
+        "platform": platform.platform(),
+        "packages": {"numpy": numpy.__version__, "scipy": scipy.__version__, "xarray": xarray.__version__},
+        "command": sys.argv,
+        "study_file": str(study.path),
+        "study_sha256": __import__("hashlib").sha256(study.text.encode()).hexdigest(),
+        "input_files": study.files,
+        "study_seed": study.seed,
+        "seeds": {f"{c.analysis}/{c.case_id}": c.seeds for c in study.cases if c.seeds},
+        "executor": summary.executor,
+        "started": started.isoformat(timespec="seconds"),
+        "finished": datetime.now(UTC).isoformat(timespec="seconds"),
+        "wall_seconds": summary.wall_seconds,
+        "case_seconds": summary.case_seconds,
+        "cases": {
+            "total": summary.total,
+            "reused": summary.skipped,
+            "done": summary.done,
+            "failed": summary.failed,
+            "pending": summary.pending,
+        },
+        "complete": summary.pending == 0 and not summary.interrupted,
+        "interrupted": summary.interrupted,
+    }
+    write_atomically(folder / "provenance.json", dumps(document))

@@ -1,0 +1,302 @@
+"""Building blocks of a study file's schema: quantities with units, references, topographies, materials.
+
+A study file is TOML (see ``docs/studies.md``). Every physical value is written with its unit
+(``"20 nm"``, ``"70 GPa"``, ``"10 uN"``, ``"72 mJ/m^2"``) and converted to SI here, once, through
+:func:`roughcontact.units.quantity`; a bare number is taken to be in SI already, as everywhere in
+roughcontact. The pydantic models forbid unknown keys, so a misspelt field is an error that names
+it rather than a silently ignored line.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, model_validator
+from pydantic_core import PydanticCustomError
+
+from ..errors import InputError
+from ..materials import Material, get_material
+from ..units import quantity
+
+
+class Strict(BaseModel):
+    """A frozen pydantic model that refuses keys it does not know."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+def _si(dimension: str):
+    def convert(value: Any) -> float:
+        if isinstance(value, bool) or not isinstance(value, str | int | float):
+            raise PydanticCustomError(
+                "quantity", "expected a {dimension} such as a string with a unit", {"dimension": dimension}
+            )
+        try:
+            return quantity(value, dimension)
+        except InputError as error:
+            raise PydanticCustomError(
+                "quantity", "{problem}", {"problem": error.problem, "fix": error.fix}
+            ) from None
+
+    return BeforeValidator(convert)
+
+
+def _si_per_axis(dimension: str):
+    """One value for both axes, or a pair ``["5 um", "10 um"]``; a single error either way."""
+    single = _si(dimension).func
+
+    def convert(value: Any) -> float | tuple[float, float]:
+        if isinstance(value, list | tuple):
+            if len(value) != 2:
+                raise PydanticCustomError(
+                    "quantity", "give one value or two (one per axis), got {n}", {"n": len(value)}
+                )
+            return (single(value[0]), single(value[1]))
+        return single(value)
+
+    return BeforeValidator(convert)
+
+
+def _grid_shape(value: Any) -> tuple[int, ...]:
+    """``128`` is a square map of 128 x 128 points, ``[256, 128]`` a rectangular one, ``[1024]`` a profile."""
+    values = list(value) if isinstance(value, list | tuple) else [value, value]
+    if not 1 <= len(values) <= 2 or not all(isinstance(v, int) and not isinstance(v, bool) for v in values):
+        raise PydanticCustomError(
+            "shape",
+            "expected a number of points or a list of one or two",
+            {"fix": "e.g. shape = 128 or [256, 128]"},
+        )
+    if min(values) < 2:
+        raise PydanticCustomError("shape", "a grid needs at least 2 points per axis", {"fix": "e.g. 128"})
+    return tuple(values)
+
+
+Length = Annotated[float, _si("length")]
+Area = Annotated[float, _si("area")]
+InverseArea = Annotated[float, _si("inverse_area")]
+Pressure = Annotated[float, _si("pressure")]
+Force = Annotated[float, _si("force")]
+Time = Annotated[float, _si("time")]
+SurfaceEnergy = Annotated[float, _si("surface_energy")]
+PositiveInt = Annotated[int, Field(gt=0)]
+Fraction = Annotated[float, Field(ge=0.0, le=1.0)]
+LengthPerAxis = Annotated[float | tuple[float, float], _si_per_axis("length")]
+GridShape = Annotated[tuple[int, ...], BeforeValidator(_grid_shape)]
+
+
+@dataclasses.dataclass(frozen=True)
+class Reference:
+    """Marks a string field that names a study's topography or material (resolved by the runner)."""
+
+    kind: Literal["topography", "material"]
+
+
+TopographyName = Annotated[str, Reference("topography")]
+"""Name of a ``[topographies.NAME]`` table."""
+
+MaterialName = Annotated[str, Reference("material")]
+"""Name of a ``[materials.NAME]`` table or of a library material (``"SU-8"``, ``"SiO2"``, ...)."""
+
+
+# --- topographies --------------------------------------------------------------------------------
+
+
+class FileTopography(Strict):
+    """An instrument file read through :func:`roughcontact.topography.io.read_topography`.
+
+    ``file`` is relative to the study file. ``size`` and ``height_unit`` are needed only where the
+    file lacks them; ``detrend`` removes a background after reading (``none``, ``mean``, ``plane``,
+    ``curvature``).
+    """
+
+    file: Path
+    channel: int | str | None = None
+    size: LengthPerAxis | None = None
+    height_unit: str | None = None
+    fill_undefined: bool = False
+    periodic: bool = False
+    detrend: Literal["none", "mean", "plane", "curvature"] = "none"
+
+
+class _Generated(Strict):
+    shape: GridShape
+    size: LengthPerAxis
+
+
+class _Seeded(_Generated):
+    seed: int | None = Field(
+        default=None,
+        description="fixed seed; without it the runner derives one per (sample, replicate) of a case",
+    )
+
+
+class SelfAffine(_Seeded):
+    """:func:`~roughcontact.topography.generate.self_affine`; ``ra`` rescales to an exact Ra afterwards."""
+
+    generate: Literal["self_affine"]
+    hurst: float
+    rms_height: Length | None = None
+    rms_slope: float | None = None
+    ra: Length | None = None
+    short_cutoff: Length | None = None
+    long_cutoff: Length | None = None
+    rolloff: float | None = None
+
+
+class GaussianRandom(_Seeded):
+    """:func:`~roughcontact.topography.generate.gaussian_random`."""
+
+    generate: Literal["gaussian_random"]
+    rms_height: Length
+    correlation_length: Length
+
+
+class Sphere(_Generated):
+    """:func:`~roughcontact.topography.generate.sphere` (apex at height 0, centred)."""
+
+    generate: Literal["sphere"]
+    radius: Length
+    kind: Literal["sphere", "paraboloid"] = "sphere"
+
+
+class SphereWithRoughness(_Seeded):
+    """:func:`~roughcontact.topography.generate.sphere_with_roughness`."""
+
+    generate: Literal["sphere_with_roughness"]
+    radius: Length
+    rms_height: Length
+    hurst: float = 0.8
+    kind: Literal["sphere", "paraboloid"] = "paraboloid"
+    short_cutoff: Length | None = None
+    long_cutoff: Length | None = None
+
+
+class Sinusoid(_Generated):
+    """:func:`~roughcontact.topography.generate.sinusoid`."""
+
+    generate: Literal["sinusoid"]
+    amplitude: Length
+    wavelength: Length
+    axis: Literal[0, 1] = 0
+
+
+class Bisinusoid(_Generated):
+    """:func:`~roughcontact.topography.generate.bisinusoid`."""
+
+    generate: Literal["bisinusoid"]
+    amplitude: Length
+    wavelength: LengthPerAxis
+
+
+class FlatPunch(_Generated):
+    """:func:`~roughcontact.topography.generate.flat_punch`."""
+
+    generate: Literal["flat_punch"]
+    radius: Length
+    depth: Length
+
+
+class RaisedIsland(_Seeded):
+    """:func:`~roughcontact.topography.generate.raised_island`."""
+
+    generate: Literal["raised_island"]
+    island_size: Length
+    thickness: Length
+    rms_height: Length = 0.0
+    hurst: float = 0.8
+
+
+class Paper002Island(Strict):
+    """:func:`~roughcontact.models.thin_film_island.paper002_island`: paper 002's island stand-in."""
+
+    generate: Literal["paper002_island"]
+    shape: GridShape = (64, 64)
+    seed: int | None = None
+    margin: Length = 2.5e-6
+
+
+class Combined(Strict):
+    """The composite of two named topographies (:func:`~roughcontact.topography.process.combine`)."""
+
+    combine: tuple[TopographyName, TopographyName]
+    resample: bool = False
+
+
+GENERATED = (
+    SelfAffine,
+    GaussianRandom,
+    Sphere,
+    SphereWithRoughness,
+    Sinusoid,
+    Bisinusoid,
+    FlatPunch,
+    RaisedIsland,
+    Paper002Island,
+)
+GENERATORS = {model.model_fields["generate"].annotation.__args__[0]: model for model in GENERATED}
+"""Generator name -> its schema."""
+
+
+def topography_schema(raw: Any) -> type[Strict]:
+    """Return the schema a raw ``[topographies.NAME]`` table is validated with.
+
+    One of ``file``, ``generate`` or ``combine`` says what the table is; unknown generators are
+    refused by the ``generate`` field itself, with the known ones listed.
+    """
+    if not isinstance(raw, dict):
+        raise PydanticCustomError("topography", "expected a table with file, generate or combine", {})
+    given = [key for key in ("file", "generate", "combine") if key in raw]
+    if len(given) != 1:
+        raise PydanticCustomError(
+            "topography",
+            "give exactly one of file, generate, combine (found {found})",
+            {"found": ", ".join(given) or "none", "fix": "e.g. file = 'scan.di' or generate = 'self_affine'"},
+        )
+    if given[0] == "file":
+        return FileTopography
+    if given[0] == "combine":
+        return Combined
+    name = raw["generate"]
+    if name not in GENERATORS:
+        raise PydanticCustomError(
+            "topography",
+            "unknown generator {name!r}",
+            {"name": name, "fix": f"use one of {sorted(GENERATORS)}"},
+        )
+    return GENERATORS[name]
+
+
+# --- materials -----------------------------------------------------------------------------------
+
+
+class MaterialSpec(Strict):
+    """A material: a library entry (``library = "SU-8"``) with optional overrides, or given in full."""
+
+    library: str | None = None
+    youngs_modulus: Pressure | None = None
+    poissons_ratio: float | None = None
+    hardness: Pressure | None = None
+    yield_strength: Pressure | None = None
+    surface_energy: SurfaceEnergy | None = None
+
+    @model_validator(mode="after")
+    def _complete(self) -> MaterialSpec:
+        if self.library is None and (self.youngs_modulus is None or self.poissons_ratio is None):
+            raise PydanticCustomError(
+                "material",
+                "a material needs library = NAME, or youngs_modulus and poissons_ratio",
+                {"fix": "e.g. youngs_modulus = '70 GPa' and poissons_ratio = 0.17"},
+            )
+        return self
+
+    def build(self, name: str) -> Material:
+        """Return the :class:`~roughcontact.materials.Material` (checked by its constructor)."""
+        overrides = {
+            key: value for key, value in self.model_dump(exclude={"library"}).items() if value is not None
+        }
+        if self.library is None:
+            return Material(name=name, source="study file", **overrides)
+        base = get_material(self.library)
+        return dataclasses.replace(base, **overrides) if overrides else base

@@ -1,0 +1,140 @@
+"""The output folder of a study: where each case, the table, the provenance and the figures go.
+
+Layout::
+
+    OUT/study.toml                       the study file as written
+    OUT/study.json                       name, analyses, figures and comparisons (for plot / report)
+    OUT/provenance.json                  versions, input hashes, seeds, timings, executor, completeness
+    OUT/cases/ANALYSIS/CASE.json         one record per case: parameters, swept values, scalars, status
+    OUT/cases/ANALYSIS/CASE.nc           its fields and curves (xarray / NetCDF), when it has any
+    OUT/results.csv                      one row per case: status, swept values, scalars (SI units)
+    OUT/tables/ANALYSIS_TABLE.csv        derived tables (comparisons with measured data, ...)
+    OUT/figures/ANALYSIS_FIGURE.png      figures
+    OUT/report.html                      everything above on one page, readable offline
+
+Every file is written to a temporary name in the same folder and renamed into place, so a killed
+run leaves either the whole file or none; a case counts as finished only when its ``.json`` record
+exists, and that is written after its ``.nc``.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import os
+import tempfile
+from collections.abc import Iterable
+from pathlib import Path
+from typing import Any
+
+from .kind import CaseRecord
+
+CASES = "cases"
+
+
+def write_atomically(path: Path, data: bytes | str) -> None:
+    """Write ``data`` to ``path`` through a temporary file and a rename (never half a file)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".part")
+    try:
+        with os.fdopen(handle, "wb") as stream:
+            stream.write(data.encode() if isinstance(data, str) else data)
+            stream.flush()
+            os.fsync(stream.fileno())
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+
+
+def write_dataset(path: Path, dataset) -> None:
+    """Write an ``xarray.Dataset`` to ``path`` (NetCDF4 through h5netcdf), atomically."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".part")
+    os.close(handle)
+    try:
+        dataset.to_netcdf(temporary, engine="h5netcdf")
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+
+
+def json_ready(value: Any) -> Any:
+    """Return ``value`` with numpy scalars as Python numbers, tuples as lists, non-finite floats as None."""
+    if isinstance(value, dict):
+        return {str(k): json_ready(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [json_ready(v) for v in value]
+    if hasattr(value, "item") and getattr(value, "ndim", 1) == 0:
+        value = value.item()
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    if isinstance(value, Path):
+        return str(value)
+    return value
+
+
+def dumps(value: Any) -> str:
+    """JSON text of ``value`` (see :func:`json_ready`), indented."""
+    return json.dumps(json_ready(value), indent=2, sort_keys=False)
+
+
+def clean_partial_files(folder: Path) -> int:
+    """Remove temporary files an interrupted run left behind; return how many."""
+    count = 0
+    if folder.exists():
+        for path in folder.rglob(".*.part"):
+            path.unlink(missing_ok=True)
+            count += 1
+    return count
+
+
+def record_path(folder: Path, analysis: str, case_id: str) -> Path:
+    """Path of a case's JSON record."""
+    return folder / CASES / analysis / f"{case_id}.json"
+
+
+def fields_path(folder: Path, analysis: str, case_id: str) -> Path:
+    """Path of a case's NetCDF file in the output folder."""
+    return folder / CASES / analysis / f"{case_id}.nc"
+
+
+def read_record(folder: Path, analysis: str, case_id: str) -> CaseRecord | None:
+    """Return the stored record of a case, or None where there is none (or it cannot be read)."""
+    path = record_path(folder, analysis, case_id)
+    try:
+        return CaseRecord.read(path, folder)
+    except (OSError, ValueError):
+        return None
+
+
+def write_table(path: Path, rows: Iterable[dict[str, Any]]) -> None:
+    """Write rows (dicts) as CSV with the union of their keys as columns, in first-seen order."""
+    rows = list(rows)
+    columns: dict[str, None] = {}
+    for row in rows:
+        columns.update(dict.fromkeys(row))
+    buffer = io.StringIO()
+    writer = csv.DictWriter(buffer, fieldnames=list(columns), lineterminator="\n")
+    writer.writeheader()
+    for row in rows:
+        writer.writerow({k: _cell(v) for k, v in row.items()})
+    write_atomically(path, buffer.getvalue())
+
+
+def _cell(value: Any) -> Any:
+    value = json_ready(value)
+    if isinstance(value, float):
+        return repr(value)
+    if isinstance(value, list | dict):
+        return json.dumps(value)
+    return "" if value is None else value
+
+
+def read_table(path: Path) -> list[dict[str, str]]:
+    """Read a CSV written by :func:`write_table` (values as strings)."""
+    with path.open(newline="") as handle:
+        return list(csv.DictReader(handle))
