@@ -113,11 +113,22 @@ class CaseRecord:
 
 @dataclass(frozen=True)
 class FigureContext:
-    """What a figure or table function gets besides the records: the analysis' name and comparison."""
+    """What a figure or table function gets besides its analysis' records.
+
+    Attributes
+    ----------
+    analysis : str
+        The analysis' name.
+    compare : Strict or None
+        The validated ``[analysis.compare]`` table (measured data), or None.
+    others : mapping
+        Name -> (model, finished records) of the study's other analyses, for figures that overlay
+        them (paper 002's Fig. 7: the statistical KKE curve beside the BEM island's).
+    """
 
     analysis: str
-    compare: Any = None  # the validated ``compare`` table of the analysis, or None
-    options: Mapping[str, Any] = field(default_factory=dict)
+    compare: Any = None
+    others: Mapping[str, tuple[str, Sequence[CaseRecord]]] = field(default_factory=dict)
 
 
 FigureFunction = Callable[[Sequence[CaseRecord], FigureContext], Any]

@@ -38,10 +38,11 @@ class StoredAnalysis:
         """Records of the cases that finished."""
         return [r for r in self.records if r is not None and r.done]
 
-    @property
-    def context(self) -> FigureContext:
-        """What the kind's figure and table functions get besides the records."""
-        return FigureContext(self.name, self.compare)
+
+def context(analysis: StoredAnalysis, analyses: list[StoredAnalysis]) -> FigureContext:
+    """Return what the figure and table functions of ``analysis`` get besides its records."""
+    others = {a.name: (a.kind.name, a.finished) for a in analyses if a.name != analysis.name}
+    return FigureContext(analysis.name, analysis.compare, others)
 
 
 def read_study(folder: str | Path) -> tuple[dict[str, Any], list[StoredAnalysis]]:
@@ -127,7 +128,7 @@ def write_tables(folder: str | Path) -> list[Path]:
         if not records:
             continue
         for name, function in analysis.kind.tables.items():
-            rows = function(records, analysis.context)
+            rows = function(records, context(analysis, analyses))
             if rows:
                 path = folder / "tables" / f"{analysis.name}_{name}.csv"
                 write_table(path, rows)
@@ -154,7 +155,7 @@ def draw_figures(folder: str | Path, *, dpi: int = 150) -> tuple[list[Path], lis
             continue
         for name in analysis.figures:
             try:
-                figure = analysis.kind.figures[name](records, analysis.context)
+                figure = analysis.kind.figures[name](records, context(analysis, analyses))
             except Exception as error:  # one figure's failure must not lose the others
                 problems.append(f"{analysis.name}/{name}: {type(error).__name__}: {error}")
                 log.warning("figure %s of %s failed: %s", name, analysis.name, error)
