@@ -17,7 +17,7 @@ def run_cli(capsys, *argv):
     return status, captured.out, captured.err
 
 
-def shrunk(name: str, folder: Path, replacements: dict[str, str], copy: tuple[str, ...] = ()) -> Path:
+def shrink_example(name: str, folder: Path, replacements: dict[str, str], copy: tuple[str, ...] = ()) -> Path:
     """Copy ``examples/NAME`` into ``folder`` with each replacement made (each must be found once or more).
 
     ``copy`` names files of ``examples/`` the study refers to by a relative path; they are copied too.
@@ -32,6 +32,18 @@ def shrunk(name: str, folder: Path, replacements: dict[str, str], copy: tuple[st
     path = folder / name
     path.write_text(text)
     return path
+
+
+@pytest.fixture
+def shrunk():
+    """``shrunk(name, folder, replacements, copy=())``: :func:`shrink_example` (tests cannot import it)."""
+    return shrink_example
+
+
+@pytest.fixture
+def examples():
+    """The examples/ folder."""
+    return EXAMPLES
 
 
 @pytest.fixture

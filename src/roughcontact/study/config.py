@@ -79,6 +79,7 @@ class StudyError(InputError):
     """A study file with problems; ``problems`` lists each as (field, problem, fix)."""
 
     def __init__(self, source: str, problems: list[tuple[str, str, str | None]]):
+        problems = list(dict.fromkeys(problems))  # a table's problem is met again by each case using it
         self.problems = problems
         lines = [f"{field}: {problem}" + (f" Fix: {fix}" if fix else "") for field, problem, fix in problems]
         count = f"{len(problems)} problem" + ("s" if len(problems) > 1 else "")

@@ -262,8 +262,8 @@ def topography_schema(raw: Any) -> type[Strict]:
     if name not in GENERATORS:
         raise PydanticCustomError(
             "topography",
-            "unknown generator {name!r}",
-            {"name": name, "fix": f"use one of {sorted(GENERATORS)}"},
+            "unknown generator {name}",
+            {"name": repr(name), "fix": f"use one of {sorted(GENERATORS)}"},
         )
     return GENERATORS[name]
 
