@@ -83,6 +83,42 @@ def _run(args: argparse.Namespace) -> int:
     )
 
 
+def describe_kind(kind) -> list[str]:
+    """Lines describing a study model: its keys (type, default), figures, tables and comparison keys."""
+    from pydantic_core import PydanticUndefined
+
+    lines = [f"{kind.name}: {kind.summary}", "  keys:"]
+    for name, info in kind.parameters.model_fields.items():
+        default = (
+            "required"
+            if info.default is PydanticUndefined and info.default_factory is None
+            else (f"default {info.default!r}" if info.default_factory is None else "default []")
+        )
+        unit = kind.units.get(name)
+        shown = f"{name} [{unit}]" if unit else name
+        lines.append(f"    {shown:<28} {default:<22} {info.description or ''}".rstrip())
+    lines.append(f"  figures: {', '.join(kind.figures) or '-'}")
+    if kind.tables:
+        lines.append(f"  tables: {', '.join(kind.tables)}")
+    if kind.compare is not None:
+        lines.append(f"  [analysis.compare] keys: {', '.join(kind.compare.model_fields)}")
+    return lines
+
+
+def _models(args: argparse.Namespace) -> int:
+    from .study.kinds import get_kind, kind_names
+
+    names = kind_names() if args.name is None else [args.name]
+    if args.name is not None and args.name not in kind_names():
+        raise InputError("NAME", f"unknown model {args.name!r}.", f"use one of {kind_names()}.")
+    for name in names:
+        kind = get_kind(name)
+        print("\n".join(describe_kind(kind) if args.name else [f"{kind.name:<12} {kind.summary}"]))
+    if args.name is None:
+        print("roughcontact models NAME lists a model's keys")
+    return 0
+
+
 def _report(args: argparse.Namespace) -> int:
     from .study.report import write_report
 
@@ -141,6 +177,10 @@ def add_study_commands(commands) -> None:
     )
     validate.add_argument("study", type=Path, help="study file (TOML)")
     validate.set_defaults(handler=_validate)
+
+    models = commands.add_parser("models", help="list the models a study can name, or one model's keys")
+    models.add_argument("name", nargs="?", help="a model, e.g. normal")
+    models.set_defaults(handler=_models)
 
     report = commands.add_parser(
         "report", help="write OUT/report.html: the tables and figures of a study on one offline page"

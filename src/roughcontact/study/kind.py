@@ -38,7 +38,9 @@ class CaseParameters(Strict):
     """
 
     sample: str = ""
+    """Label of the sample the case belongs to (groups figures and measured data)."""
     replicate: int = 0
+    """Index of a repeated case; selects the derived seeds of generated surfaces."""
 
 
 @dataclass(frozen=True)

@@ -28,18 +28,31 @@ class NormalParameters(CaseParameters):
     """Keys of a ``model = "normal"`` analysis (SI after validation)."""
 
     surface: TopographyName
+    """The rough surface (heights towards the flat)."""
     material: MaterialName
+    """The surface's body (the film with film_thickness)."""
     counter: MaterialName | None = None
+    """The flat's material; default rigid."""
     mean_pressure: Pressure | None = None
+    """Load control by the nominal mean pressure (one of three targets)."""
     force: Force | None = None
+    """Load control by the total force."""
     approach: Length | None = None
+    """Displacement control by the rigid approach from the first touch."""
     hardness: Pressure | None = None
+    """Caps the pressure: elastic-perfectly-plastic surface."""
     boundary: Literal["periodic", "free"] | None = None
+    """Default: periodic for a periodic surface, else free."""
     film_thickness: Length | None = None
+    """The body is a film of this thickness (on film_base or substrate)."""
     substrate: MaterialName | None = None
+    """Elastic substrate the film is bonded to."""
     film_base: Literal["bonded", "frictionless"] = "bonded"
+    """Rigid base of a film without a substrate."""
     tolerance: float = Field(default=1e-8, gt=0.0, lt=1.0)
+    """Scale-free residual of the solver."""
     stress_depths: list[Length] = Field(default_factory=list)
+    """Depths of von Mises maps below the surface."""
 
     @model_validator(mode="after")
     def _one_target(self) -> NormalParameters:

@@ -21,6 +21,7 @@ class StatisticsParameters(CaseParameters):
     """Keys of a ``model = "statistics"`` analysis."""
 
     surface: TopographyName
+    """The topography to describe."""
 
 
 def run(parameters: StatisticsParameters, inputs) -> CaseOutput:
