@@ -119,22 +119,28 @@ def test_bad_size_argument_is_refused(capsys, shared_topographies):
     assert "expected a length" in err
 
 
-def test_demo_prints_statistics_and_writes_figures(capsys, tmp_path):
+def test_demo_runs_the_embedded_study_and_writes_its_report(capsys, tmp_path):
+    import csv
+
     status, out, err = run(capsys, "demo", "-o", tmp_path)
     assert status == 0, err
-    assert "Rq" in out
-    assert "R_asp" in out and "5.08" in out  # paper 002 reproduction
-    assert "real contact area" in out and "contact patches" in out  # rough-surface normal contact
-    assert "omega_c (eq. 6)" in out and "12.47 nm" in out  # paper 002 critical interference
-    assert "statistical load-unload" in out and "residual" in out  # paper 002 KKE load-unload
-    assert "Winkler-layer Lennard-Jones" in out and out.count(" mu ") == 3  # paper 000, three samples
-    assert "seed paper 001" in out and out.count("K_L at") == 3  # paper 001 loop, points A, B, C
-    assert (tmp_path / "presliding_loop.png").exists()
-    assert (tmp_path / "contact.png").exists() and (tmp_path / "von_mises_20nm.png").exists()
-    pngs = sorted(p.name for p in tmp_path.glob("*.png"))
-    assert len(pngs) >= 2
-    for png in tmp_path.glob("*.png"):
-        assert png.read_bytes().startswith(PNG_MAGIC)
+    assert "demo study 'roughcontact demo'" in out and "0 failed" in out
+    with (tmp_path / "results.csv").open() as handle:
+        rows = list(csv.DictReader(handle))
+    analyses = {row["analysis"] for row in rows}
+    assert {"afm_scan", "contact"} <= analyses
+    assert all(row["status"] == "done" for row in rows)
+    contact = [row for row in rows if row["analysis"] == "contact"]
+    fractions = [float(row["contact_fraction"]) for row in contact]
+    assert len(contact) == 5 and fractions == sorted(fractions)  # the area grows with the load
+    afm = next(row for row in rows if row["analysis"] == "afm_scan")
+    assert float(afm["size_x [m]"]) == pytest.approx(600e-9)  # the scan's size, from its file
+    for name in ("contact_contact", "contact_von_mises", "contact_area_load", "afm_scan_psd"):
+        assert (tmp_path / "figures" / f"{name}.png").read_bytes().startswith(PNG_MAGIC)
+    report = (tmp_path / "report.html").read_text()
+    assert "roughcontact demo" in report and report.count("data:image/png;base64,") >= 4
+    status, out, _ = run(capsys, "demo", "-o", tmp_path)  # a second run reuses every case
+    assert status == 0 and "0 cases run" in out
 
 
 def test_console_script_runs_as_module():
