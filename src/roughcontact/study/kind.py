@@ -110,7 +110,7 @@ class CaseRecord:
         path = self.fields_path
         if path is None or not path.exists():
             return None
-        return xr.load_dataset(path, engine="h5netcdf")
+        return xr.load_dataset(path)
 
 
 @dataclass(frozen=True)

@@ -50,12 +50,21 @@ def write_atomically(path: Path, data: bytes | str) -> None:
 
 
 def write_dataset(path: Path, dataset) -> None:
-    """Write an ``xarray.Dataset`` to ``path`` (NetCDF4 through h5netcdf), atomically."""
+    """Write an ``xarray.Dataset`` to ``path`` as NetCDF, atomically.
+
+    NetCDF3 (64-bit offset, through scipy) where the data fits it: writing a small case takes about
+    2 ms that way against 20-40 ms through HDF5 (h5netcdf), which would dominate a sweep of small
+    solves. Data NetCDF3 cannot hold (64-bit integers beyond 32 bits, say) goes to NetCDF4 through
+    h5netcdf. ``xarray.open_dataset`` reads either.
+    """
     path.parent.mkdir(parents=True, exist_ok=True)
     handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".part")
     os.close(handle)
     try:
-        dataset.to_netcdf(temporary, engine="h5netcdf")
+        try:
+            dataset.to_netcdf(temporary, engine="scipy")
+        except (ValueError, TypeError, OverflowError):
+            dataset.to_netcdf(temporary, engine="h5netcdf")
         os.replace(temporary, path)
     except BaseException:
         Path(temporary).unlink(missing_ok=True)
