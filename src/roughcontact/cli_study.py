@@ -87,6 +87,8 @@ def describe_kind(kind) -> list[str]:
     """Lines describing a study model: its keys (type, default), figures, tables and comparison keys."""
     from pydantic_core import PydanticUndefined
 
+    from .study.schema import unit_of
+
     lines = [f"{kind.name}: {kind.summary}", "  keys:"]
     for name, info in kind.parameters.model_fields.items():
         default = (
@@ -94,7 +96,7 @@ def describe_kind(kind) -> list[str]:
             if info.default is PydanticUndefined and info.default_factory is None
             else (f"default {info.default!r}" if info.default_factory is None else "default []")
         )
-        unit = kind.units.get(name)
+        unit = kind.units.get(name) or unit_of(kind.parameters, name)
         shown = f"{name} [{unit}]" if unit else name
         lines.append(f"    {shown:<28} {default:<22} {info.description or ''}".rstrip())
     lines.append(f"  figures: {', '.join(kind.figures) or '-'}")
@@ -130,12 +132,13 @@ def plot_study(folder: Path) -> int:
     """Re-draw the figures and tables of a study's output folder from its stored records."""
     from .study.outputs import draw_figures, write_tables
 
-    tables = write_tables(folder)
+    tables, table_problems = write_tables(folder)
     figures, problems = draw_figures(folder)
+    problems = table_problems + problems
     for path in [*tables, *figures]:
         print(f"wrote {path}")
     for problem in problems:
-        print(f"roughcontact: figure not drawn: {problem}", file=sys.stderr)
+        print(f"roughcontact: not drawn: {problem}", file=sys.stderr)
     return 0 if not problems else EXIT_CASES_FAILED
 
 

@@ -216,7 +216,8 @@ def _problems(error: ValidationError, prefix: str, schema: type[BaseModel] | Non
         where = _where(prefix, item["loc"])
         context = item.get("ctx") or {}
         value = item.get("input")
-        shown = "" if item["type"] == "missing" else f" (got {value!r})"
+        whole_table = not item["loc"]  # a model-level check: the value is the whole table
+        shown = "" if item["type"] == "missing" or whole_table else f" (got {value!r})"
         fix = context.get("fix")
         if item["type"] == "missing":
             problem, fix = "is required but missing.", f"add {item['loc'][-1]} = ... to the table."

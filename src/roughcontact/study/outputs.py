@@ -80,8 +80,7 @@ def read_study(folder: str | Path) -> tuple[dict[str, Any], list[StoredAnalysis]
     return document, analyses
 
 
-def _header(name: str, units: dict[str, str]) -> str:
-    unit = units.get(name.rsplit(".", 1)[-1])
+def _header(name: str, unit: str | None) -> str:
     return f"{name} [{unit}]" if unit else name
 
 
@@ -98,11 +97,12 @@ def result_rows(analyses: list[StoredAnalysis]) -> list[dict[str, Any]]:
             row["status"] = record["status"]
             row["sample"] = record.parameters.get("sample", "")
             row["replicate"] = record.parameters.get("replicate", 0)
+            axis_units = record.data.get("axes_units") or {}
             for axis, value in (record.data.get("axes_si") or {}).items():
                 if axis not in ("sample", "replicate"):
-                    row[_header(axis, units)] = value
+                    row[_header(axis, axis_units.get(axis) or units.get(axis))] = value
             for name, value in record.scalars.items():
-                row[_header(name, units)] = value
+                row[_header(name, units.get(name))] = value
             row["seconds"] = record.data.get("seconds")
             row["error"] = record.data.get("error") or ""
             rows.append(row)
@@ -118,22 +118,31 @@ def write_results_table(folder: str | Path) -> Path:
     return path
 
 
-def write_tables(folder: str | Path) -> list[Path]:
-    """Write every analysis' derived tables to ``OUT/tables/ANALYSIS_TABLE.csv``; return the paths."""
+def write_tables(folder: str | Path) -> tuple[list[Path], list[str]]:
+    """Write every analysis' derived tables to ``OUT/tables/ANALYSIS_TABLE.csv``.
+
+    Returns the files written and the problems met: a table that fails (measured data that do
+    not match the cases, say) is reported and the others are still written.
+    """
     folder = Path(folder).expanduser().resolve()
     _, analyses = read_study(folder)
-    written = []
+    written, problems = [], []
     for analysis in analyses:
         records = analysis.finished
         if not records:
             continue
         for name, function in analysis.kind.tables.items():
-            rows = function(records, context(analysis, analyses))
+            try:
+                rows = function(records, context(analysis, analyses))
+            except Exception as error:  # one table's failure must not lose the others
+                problems.append(f"{analysis.name}/{name}: {type(error).__name__}: {error}")
+                log.warning("table %s of %s failed: %s", name, analysis.name, error)
+                continue
             if rows:
                 path = folder / "tables" / f"{analysis.name}_{name}.csv"
                 write_table(path, rows)
                 written.append(path)
-    return written
+    return written, problems
 
 
 def draw_figures(folder: str | Path, *, dpi: int = 150) -> tuple[list[Path], list[str]]:

@@ -126,8 +126,7 @@ def write_report(folder: str | Path, *, redraw: bool = True) -> Path:
     problems: list[str] = []
     if redraw:
         write_results_table(folder)
-        write_tables(folder)
-        problems = draw_figures(folder)[1]
+        problems = write_tables(folder)[1] + draw_figures(folder)[1]
     document, analyses = read_study(folder)
     rows = result_rows(analyses)
     provenance_path = folder / "provenance.json"
@@ -144,7 +143,9 @@ def write_report(folder: str | Path, *, redraw: bool = True) -> Path:
     ]
     if problems:
         parts.append(
-            "<p class='failed'>Figures that could not be drawn: " + html.escape("; ".join(problems)) + "</p>"
+            "<p class='failed'>Tables and figures that could not be made: "
+            + html.escape("; ".join(problems))
+            + "</p>"
         )
     for analysis in analyses:
         parts.append(_analysis_section(folder, analysis, [r for r in rows if r["analysis"] == analysis.name]))

@@ -38,7 +38,7 @@ from ..errors import InputError
 from .config import Case, Study
 from .inputs import CaseInputs
 from .kind import CaseParameters
-from .schema import FileTopography
+from .schema import FileTopography, MaterialSpec, unit_of
 from .store import (
     clean_partial_files,
     dumps,
@@ -66,6 +66,7 @@ class Task:
     inputs: CaseInputs
     axes: dict[str, Any]
     axes_si: dict[str, Any]
+    axes_units: dict[str, str | None]
     seeds: dict[str, int]
     worker_storage: str | None = None
 
@@ -92,6 +93,7 @@ def execute(task: Task) -> tuple[dict[str, Any], Any]:
         "status": "failed",
         "axes": task.axes,
         "axes_si": task.axes_si,
+        "axes_units": task.axes_units,
         "parameters": task.parameters.model_dump(mode="json"),
         "seeds": task.seeds,
         "scalars": {},
@@ -130,19 +132,23 @@ def store(folder: Path, record: dict[str, Any], dataset) -> None:
     write_atomically(record_path(folder, record["analysis"], record["case"]), dumps(record))
 
 
-def _axes_si(case: Case) -> dict[str, Any]:
-    values = {}
+def _axes_si(case: Case) -> tuple[dict[str, Any], dict[str, str | None]]:
+    """Return the swept values of a case in SI, and their SI units (None for plain numbers and labels)."""
+    values, units = {}, {}
     for axis in case.axes:
         section, _, rest = axis.partition(".")
         table, _, key = rest.partition(".")
         if section == "topographies" and key:
-            values[axis] = getattr(case.topographies.get(table), key, None)
+            spec = case.topographies.get(table)
+            values[axis] = getattr(spec, key, None)
+            units[axis] = None if spec is None else unit_of(type(spec), key)
         elif section == "materials" and key:
-            material = next((m for n, m in case.materials.items() if n == table), None)
-            values[axis] = getattr(material, key, None)
+            values[axis] = getattr(case.materials.get(table), key, None)
+            units[axis] = unit_of(MaterialSpec, key)
         else:
             values[axis] = getattr(case.parameters, axis)
-    return json_ready(values)
+            units[axis] = unit_of(type(case.parameters), axis)
+    return json_ready(values), units
 
 
 def make_task(study: Study, case: Case, worker_storage: str | None = None) -> Task:
@@ -153,6 +159,7 @@ def make_task(study: Study, case: Case, worker_storage: str | None = None) -> Ta
         if isinstance(spec, FileTopography)
     }
     inputs = CaseInputs(dict(case.topographies), files, dict(case.materials))
+    axes_si, axes_units = _axes_si(case)
     return Task(
         study=study.name,
         analysis=case.analysis,
@@ -162,7 +169,8 @@ def make_task(study: Study, case: Case, worker_storage: str | None = None) -> Ta
         parameters=case.parameters,
         inputs=inputs,
         axes=dict(case.axes),
-        axes_si=_axes_si(case),
+        axes_si=axes_si,
+        axes_units=axes_units,
         seeds=case.seeds,
         worker_storage=worker_storage,
     )

@@ -27,6 +27,18 @@ class Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True, use_attribute_docstrings=True)
 
 
+SI_UNITS = {
+    "length": "m",
+    "area": "m^2",
+    "inverse_area": "1/m^2",
+    "pressure": "Pa",
+    "force": "N",
+    "time": "s",
+    "surface_energy": "J/m^2",
+}
+"""SI unit of each dimension a schema field may have."""
+
+
 def _si(dimension: str):
     def convert(value: Any) -> float:
         if isinstance(value, bool) or not isinstance(value, str | int | float):
@@ -40,6 +52,7 @@ def _si(dimension: str):
                 "quantity", "{problem}", {"problem": error.problem, "fix": error.fix}
             ) from None
 
+    convert.dimension = dimension
     return BeforeValidator(convert)
 
 
@@ -56,6 +69,7 @@ def _si_per_axis(dimension: str):
             return (single(value[0]), single(value[1]))
         return single(value)
 
+    convert.dimension = dimension
     return BeforeValidator(convert)
 
 
@@ -84,6 +98,25 @@ PositiveInt = Annotated[int, Field(gt=0)]
 Fraction = Annotated[float, Field(ge=0.0, le=1.0)]
 LengthPerAxis = Annotated[float | tuple[float, float], _si_per_axis("length")]
 GridShape = Annotated[tuple[int, ...], BeforeValidator(_grid_shape)]
+
+
+def unit_of(schema: type[BaseModel], name: str) -> str | None:
+    """Return the SI unit of the quantity field ``name`` of ``schema`` (``"m"``, ``"Pa"``, ...), else None."""
+    import typing
+
+    info = schema.model_fields.get(name)
+    if info is None:
+        return None
+    metadata = list(info.metadata)
+    for annotation in (info.annotation, *typing.get_args(info.annotation)):
+        metadata += list(getattr(annotation, "__metadata__", ()))
+        for inner in typing.get_args(annotation):  # list[Length]
+            metadata += list(getattr(inner, "__metadata__", ()))
+    for item in metadata:
+        dimension = getattr(getattr(item, "func", None), "dimension", None)
+        if dimension is not None:
+            return SI_UNITS[dimension]
+    return None
 
 
 @dataclasses.dataclass(frozen=True)

@@ -203,8 +203,6 @@ KIND = Kind(
         "contact_modulus": "Pa",
         "max_von_mises": "Pa",
         "max_von_mises_depth": "m",
-        "hardness": "Pa",
-        "film_thickness": "m",
     },
     figures={
         "contact": _contact_maps,
