@@ -1,0 +1,610 @@
+r"""Study kind ``friction``: the Winkler-layer Lennard-Jones friction of paper 000 at one load per case.
+
+Wraps :func:`roughcontact.friction.winkler_lj_model` and its ``solve(load)`` (details and the
+derivations in ``docs/winkler_lj.md``). The two topographies (``surface``, e.g. a polysilicon scan,
+and ``counter_surface``, e.g. the AFM tip) are merged into one composite surface z_i facing a rigid
+flat (paper 000, Fig. 1); each pixel is a spring, a cuboid of top area S (the pixel area) and
+height h (``layer_thickness``, the Winkler layer):
+
+* eq. 1: E = [(1 - nu1^2) / E1 + (1 - nu2^2) / E2]^-1 (``material`` and ``counter``; no
+  ``counter``: a rigid counter-body);
+* eqs. 3-4: spring stress P_i = E dz_i / (k h), k = (1 + s)(1 - 2s) / (1 - s), s = sqrt(nu1 nu2)
+  (the uniaxial-strain reading; eq. 4 prints the denominator 1 - nu1 nu2);
+* eqs. 5-7: attraction f(l) = (8 dgamma / 3 eps) [(eps / l)^3 - (eps / l)^9] (``epsilon``),
+  dgamma from the two surface energies (``surface_energy``, ``counter_surface_energy``; default
+  the materials' own);
+* eq. 2: sum P_i S - sum f(l_i) S = N (``load``) for the separation d, l_i = d - z_i;
+* eq. 8: extension dz_i = f(l_i) k h / E of the springs in adhesive contact;
+* eqs. 9-15: lateral force Q_i = sqrt(2 W_i / (c H_i)) that breaks the bond of an adhesive spring
+  (shear work of the cuboid = the bond energy e(l_ia) S of eq. 14);
+* eqs. 16-17: the same for the springs in mechanical contact, from the distance l_im where the
+  repulsion of eq. 7 carries P_i;
+* friction F = sum Q_i, split into its adhesive and mechanical parts, and mu = F / N.
+
+Paper 000's equations have unit and sign problems and gaps; every disputed choice is a named
+reading (:class:`~roughcontact.friction.readings.Readings`), given in the study file as a table of
+name = value strings, e.g. ``readings = {contact = "zero_gap", adhesive_cutoff = "20 nm"}``
+(``adhesive_cutoff`` takes a length with its unit, or a bare number in metres). A reading not
+named keeps its default, the physically consistent one. Stated assumptions of the model (paper
+000, sections 2-3): elastic contact only (no plasticity), the flat is rigid, the cuboid tops are
+the scan's pixels (S = 20 nm x 20 nm in the paper), epsilon = 2 nm and h = the thickness of the
+measured layer (50 nm), the defaults here.
+
+Hold time (paper 000, end of section 2: "a time-dependent elastic modulus"): with
+``relaxed_modulus`` the surface material is a standard linear solid from its Young's modulus E0 to
+``relaxed_modulus`` with ``relaxation_time`` tau, and E(hold_time) = E_inf + (E0 - E_inf)
+exp(-t / tau) replaces E0 in eq. 1 (as ``roughcontact friction --relaxed-modulus``).
+
+Scalars: those of :meth:`~roughcontact.friction.WinklerLJResult.scalars` (mu, friction, its
+adhesive and mechanical parts, separation, springs in each state, ...), the ratio of adhesive to
+mechanical friction, the model's constants (contact modulus, Winkler factor, shear modulus, work
+of adhesion, spring stiffness and area), the load the layer can carry and, with ``crossover =
+true``, the load where mechanical friction overtakes adhesive friction (paper 000, section 6:
+about 600 uN for Ra 1.7 nm). Fields: :meth:`~roughcontact.friction.WinklerLJResult.to_xarray`
+cropped to the springs that carry friction (mechanical or bonded) and a margin of
+:data:`FIELD_MARGIN` pixels (outside them Q_i = 0 by construction); none when that window exceeds
+:data:`FIELD_POINTS` points.
+
+Figures: ``friction_vs_load`` (mu and the adhesive and mechanical friction against the load, one
+line per sample; needs several loads), ``mu_boxes`` and ``mu_means`` (the simulated mu per sample
+beside the measured values when the analysis has a ``compare`` table; paper 000, Figs. 9 and 8).
+Tables: ``comparison`` (per-sample two-sample t-test and the Pearson r of the means, paper 000
+section 5, with ``compare``) and ``by_sample`` (mean, standard deviation and number of mu values
+per sample and load).
+
+References
+----------
+Seed paper 000, "Simulation model for frictional contact of two elastic surfaces in micro/nanoscale
+and its validation", eqs. 1-17, sections 3-5.
+"""
+
+from __future__ import annotations
+
+import difflib
+import logging
+import math
+from collections.abc import Sequence
+from dataclasses import fields
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from pydantic import Field, field_validator, model_validator
+from pydantic_core import PydanticCustomError
+
+from ...errors import InputError
+from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind
+from ..schema import Force, Length, MaterialName, Pressure, Strict, SurfaceEnergy, Time, TopographyName
+from .common import grouped
+
+log = logging.getLogger(__name__)
+
+FIELD_MARGIN = 4
+"""Pixels kept around the springs that carry friction when the fields are stored."""
+
+FIELD_POINTS = 128 * 128
+"""Most grid points of stored fields (about 0.7 MB a case); larger windows store no fields."""
+
+_LOAD_RTOL = 1e-9
+
+
+class FrictionParameters(CaseParameters):
+    """Keys of a ``model = "friction"`` analysis (SI after validation).
+
+    Attributes
+    ----------
+    surface : str
+        The rough surface (paper 000: a polysilicon scan).
+    counter_surface : str, optional
+        The counter-body's topography (paper 000: the AFM tip), merged with ``surface``.
+    material, counter : str
+        Materials of the surface's body and of the counter-body (None: rigid).
+    load : float
+        Normal load N [N].
+    layer_thickness, epsilon : float
+        Winkler layer height h and the Lennard-Jones equilibrium distance [m] (paper 000: 50 nm, 2 nm).
+    surface_energy, counter_surface_energy : float, optional
+        gamma1, gamma2 [J/m^2]; default the materials' own.
+    readings : dict
+        Reading name -> value (strings; ``adhesive_cutoff`` in metres after validation).
+    resample : bool
+        Bring topographies of different pixel sizes onto a common grid instead of refusing them.
+    relaxed_modulus, relaxation_time, hold_time : float, optional
+        Standard linear solid of the surface's body [Pa, s] and the hold time before sliding [s].
+    crossover : bool
+        Also find the load where mechanical friction overtakes adhesive friction.
+    """
+
+    surface: TopographyName
+    counter_surface: TopographyName | None = None
+    material: MaterialName
+    counter: MaterialName | None = None
+    load: Force
+    layer_thickness: Length = 50e-9
+    epsilon: Length = 2e-9
+    surface_energy: SurfaceEnergy | None = None
+    counter_surface_energy: SurfaceEnergy | None = None
+    readings: dict[str, str | float] = Field(default_factory=dict)
+    resample: bool = False
+    relaxed_modulus: Pressure | None = None
+    relaxation_time: Time = 1.0
+    hold_time: Time = 0.0
+    crossover: bool = False
+
+    @field_validator("readings")
+    @classmethod
+    def _check_readings(cls, value: dict[str, str | float]) -> dict[str, str]:
+        return normalized_readings(value)
+
+    @model_validator(mode="after")
+    def _check(self) -> FrictionParameters:
+        bad = [
+            name
+            for name in ("load", "layer_thickness", "epsilon", "relaxation_time")
+            if not (math.isfinite(getattr(self, name)) and getattr(self, name) > 0)
+        ]
+        if bad:
+            raise PydanticCustomError(
+                "quantity",
+                "{names} must be positive and finite, got {values}",
+                {
+                    "names": ", ".join(bad),
+                    "values": ", ".join(f"{getattr(self, name):g}" for name in bad),
+                    "fix": "e.g. " + ", ".join(f"{name} = '{_EXAMPLES[name]}'" for name in bad),
+                },
+            )
+        if self.hold_time < 0 or (self.relaxed_modulus is not None and not self.relaxed_modulus > 0):
+            raise PydanticCustomError(
+                "quantity",
+                "hold_time must be >= 0 and relaxed_modulus > 0",
+                {"fix": "e.g. relaxed_modulus = '80 GPa', hold_time = '30 s'"},
+            )
+        if self.hold_time > 0 and self.relaxed_modulus is None:
+            raise PydanticCustomError(
+                "quantity",
+                "a hold_time needs relaxed_modulus (the surface's body is elastic otherwise)",
+                {"fix": "add relaxed_modulus = '80 GPa' (and relaxation_time), or remove hold_time"},
+            )
+        return self
+
+
+_EXAMPLES = {"load": "10 uN", "layer_thickness": "50 nm", "epsilon": "2 nm", "relaxation_time": "1 s"}
+
+
+def normalized_readings(value: dict[str, Any]) -> dict[str, str]:
+    """Check a study's ``readings`` table and return it as ``{name: value}`` strings.
+
+    Every name and value is checked by :class:`~roughcontact.friction.readings.Readings`
+    (through :meth:`~roughcontact.friction.readings.Readings.from_strings`);
+    ``adhesive_cutoff`` may be a length with a unit (``"20 nm"``) and is returned in metres.
+
+    Parameters
+    ----------
+    value : dict
+        Reading name -> value as written in the study file.
+
+    Returns
+    -------
+    dict of str to str
+        Canonical strings, so that the same readings written differently give the same case key.
+
+    Raises
+    ------
+    pydantic_core.PydanticCustomError
+        An unknown name or value; the message names the reading and lists the allowed values.
+    """
+    from ...friction.readings import Readings
+    from ...units import quantity
+
+    known = [f.name for f in fields(Readings)]
+    result: dict[str, str] = {}
+    problems: list[tuple[str, str]] = []  # (problem, fix), all of them in one message
+    for name, raw in value.items():
+        text = str(raw).strip()
+        if name not in known:
+            close = difflib.get_close_matches(name, known, n=1)
+            fix = f"did you mean {close[0]!r}?" if close else f"use one of {known}"
+            problems.append((f"unknown reading {name!r}", fix))
+            continue
+        if name == "adhesive_cutoff":
+            try:
+                cutoff = math.inf if text.lower() in ("inf", "infinity") else quantity(raw, "length")
+                text = repr(float(cutoff))
+            except InputError as error:
+                problems.append(
+                    (
+                        f"reading 'adhesive_cutoff': {error.problem.rstrip('.')}",
+                        "adhesive_cutoff: give a length, e.g. '20 nm', or 'inf'",
+                    )
+                )
+                continue
+        try:
+            Readings.from_strings([f"{name}={text}"])
+        except InputError as error:
+            problem = error.problem.rstrip(".").replace("unknown reading", "unknown value")
+            problems.append((f"reading {name!r}: {problem}", f"{name}: {error.fix.rstrip('.')}"))
+            continue
+        result[name] = text
+    if problems:
+        fix = "; ".join(f for _, f in problems)
+        raise PydanticCustomError(
+            "readings",
+            "{problem}",
+            {"problem": "; ".join(p for p, _ in problems), "fix": fix if fix.endswith("?") else fix + "."},
+        )
+    return result
+
+
+def readings_of(parameters: FrictionParameters):
+    """Return the :class:`~roughcontact.friction.readings.Readings` of a case."""
+    from ...friction.readings import Readings
+
+    return Readings.from_strings(f"{name}={text}" for name, text in parameters.readings.items())
+
+
+def build_model(parameters: FrictionParameters, inputs):
+    """Return the :class:`~roughcontact.friction.WinklerLJModel` of a case (topographies merged).
+
+    Parameters
+    ----------
+    parameters : FrictionParameters
+    inputs : CaseInputs
+        The case's topographies and materials.
+
+    Returns
+    -------
+    WinklerLJModel
+
+    Raises
+    ------
+    InputError
+        A relaxed modulus above the surface material's Young's modulus, or any refusal of
+        :func:`~roughcontact.friction.winkler_lj_model`.
+    """
+    from ...friction import PronySeries, winkler_lj_model
+
+    material = inputs.material(parameters.material)
+    options: dict[str, Any] = {}
+    if parameters.relaxed_modulus is not None:
+        relaxed = parameters.relaxed_modulus
+        if relaxed > material.youngs_modulus:
+            raise InputError(
+                "relaxed_modulus",
+                f"{relaxed:.4g} Pa is above the Young's modulus {material.youngs_modulus:.4g} Pa "
+                f"of {material.name!r}.",
+                "a relaxed (long-time) modulus is at most the instantaneous one.",
+            )
+        options["relaxation"] = PronySeries(
+            relaxed, (material.youngs_modulus - relaxed,), (parameters.relaxation_time,)
+        )
+        options["hold_time"] = parameters.hold_time
+    counter_surface = parameters.counter_surface
+    return winkler_lj_model(
+        inputs.topography(parameters.surface),
+        material,
+        inputs.material(parameters.counter),
+        layer_thickness=parameters.layer_thickness,
+        counter_surface=None if counter_surface is None else inputs.topography(counter_surface),
+        epsilon=parameters.epsilon,
+        surface_energy=parameters.surface_energy,
+        counter_surface_energy=parameters.counter_surface_energy,
+        readings=readings_of(parameters),
+        resample=parameters.resample,
+        **options,
+    )
+
+
+def _cropped(result) -> Any:
+    """Return the result's fields within the box of the springs that carry friction, plus a margin.
+
+    None when that box holds more than :data:`FIELD_POINTS` points (a nominally flat contact,
+    where most of the scan carries friction): the scalars are the result then.
+    """
+    rows, columns = np.nonzero(result.mechanical | result.bonded)
+    if rows.size == 0:  # nothing carries friction (only under adhesion_sign="printed")
+        return None
+    nx, ny = result.mechanical.shape
+    x = slice(max(int(rows.min()) - FIELD_MARGIN, 0), min(int(rows.max()) + FIELD_MARGIN + 1, nx))
+    y = slice(max(int(columns.min()) - FIELD_MARGIN, 0), min(int(columns.max()) + FIELD_MARGIN + 1, ny))
+    if (x.stop - x.start) * (y.stop - y.start) > FIELD_POINTS:
+        return None
+    return result.to_xarray().isel(x=x, y=y)
+
+
+def run(parameters: FrictionParameters, inputs) -> CaseOutput:
+    """Solve one case: the separation from eq. 2 at ``load``, then friction and mu (eqs. 8-17)."""
+    model = build_model(parameters, inputs)
+    result = model.solve(parameters.load)
+    constants = model.parameters()
+    scalars: dict[str, Any] = dict(result.scalars())
+    mechanical = result.mechanical_friction
+    scalars["adhesive_to_mechanical"] = result.adhesive_friction / mechanical if mechanical > 0 else None
+    for name in (
+        "contact_modulus",
+        "winkler_factor",
+        "shear_modulus",
+        "work_of_adhesion",
+        "spring_stiffness",
+        "spring_area",
+    ):
+        scalars[name] = constants[name]
+    scalars["load_capacity"] = model.load_capacity()
+    if parameters.crossover:
+        scalars["crossover_load"] = model.crossover_load()
+    return CaseOutput(scalars, _cropped(result))
+
+
+# --- figures and tables (from stored records) ------------------------------------------------------
+
+
+def _load(record: CaseRecord) -> float:
+    return float(record.parameters["load"])
+
+
+def _loads(records: Sequence[CaseRecord]) -> list[float]:
+    distinct: list[float] = []
+    for load in sorted(_load(r) for r in records):
+        if not distinct or not math.isclose(load, distinct[-1], rel_tol=_LOAD_RTOL):
+            distinct.append(load)
+    return distinct
+
+
+def _at_one_load(records: Sequence[CaseRecord], load: float | None) -> list[CaseRecord]:
+    """Return the records at ``load``, or all of them when the analysis has one load; else InputError."""
+    loads = _loads(records)
+    if load is None:
+        if len(loads) > 1:
+            raise InputError(
+                "compare.load",
+                f"the analysis has {len(loads)} loads ({loads[0]:.4g} to {loads[-1]:.4g} N) and the "
+                "measured values are at one.",
+                "add load = '10 uN' (the load of the measurements) to [analysis.compare].",
+            )
+        return list(records)
+    chosen = [r for r in records if math.isclose(_load(r), load, rel_tol=_LOAD_RTOL)]
+    if not chosen:
+        raise InputError(
+            "compare.load",
+            f"no case at {load:.6g} N (the analysis has {', '.join(f'{x:.6g}' for x in loads)} N).",
+            "set compare.load to one of the analysis' loads.",
+        )
+    return chosen
+
+
+def simulated_mu(records: Sequence[CaseRecord]) -> dict[str, list[float]]:
+    """Return the simulated mu of every finished case, per sample (in order of first appearance)."""
+    return {sample: [float(r.scalars["mu"]) for r in group] for sample, group in grouped(records).items()}
+
+
+def comparison(records: Sequence[CaseRecord], context: FigureContext):
+    """Compare the simulated mu per sample with the measured CSV of ``[analysis.compare]``.
+
+    Parameters
+    ----------
+    records : sequence of CaseRecord
+        The analysis' finished cases.
+    context : FigureContext
+        ``context.compare`` is a :class:`FrictionCompare`.
+
+    Returns
+    -------
+    Comparison
+        From :func:`roughcontact.experiment.compare.compare`, over the samples found on both sides
+        (samples on one side only are left out with a warning).
+
+    Raises
+    ------
+    InputError
+        Several loads and no ``compare.load``, an unreadable CSV, no sample in common, or fewer
+        than two values in a sample.
+    """
+    from ...experiment.compare import compare, read_measured
+
+    spec = context.compare
+    simulated = simulated_mu(_at_one_load(records, spec.load))
+    measured = read_measured(spec.measured)
+    common = [s for s in simulated if s in measured]
+    left_out = sorted(set(simulated) ^ set(measured))
+    if not common:
+        raise InputError(
+            "compare.measured",
+            f"no sample in common: simulated {list(simulated)}, measured {list(measured)}.",
+            "name the samples of the analysis as in the CSV's sample column.",
+        )
+    if left_out:
+        log.warning("%s: samples %s are on one side only and are left out", context.analysis, left_out)
+    return compare(
+        {s: simulated[s] for s in common},
+        {s: measured[s] for s in common},
+        alpha=spec.alpha,
+        equal_var=spec.equal_var,
+    )
+
+
+def _comparison_table(records, context):
+    if context.compare is None:
+        return None
+    result = comparison(records, context)  # its errors are listed in the report
+    common = {
+        "alpha": result.alpha,
+        "test": "student" if result.equal_var else "welch",
+        "pearson_r": result.pearson_r,
+        "pearson_p": result.pearson_p,
+    }
+    return [row | common for row in result.table()]
+
+
+def _by_sample(records, context):
+    rows = []
+    for sample, group in grouped(records).items():
+        for load in _loads(group):
+            chosen = [r for r in group if math.isclose(_load(r), load, rel_tol=_LOAD_RTOL)]
+            mu = np.array([float(r.scalars["mu"]) for r in chosen])
+            row: dict[str, Any] = {
+                "sample": sample,
+                "load [N]": load,
+                "n": mu.size,
+                "mu_mean": float(mu.mean()),
+                "mu_std": float(mu.std(ddof=1)) if mu.size > 1 else None,
+                "mu_min": float(mu.min()),
+                "mu_max": float(mu.max()),
+            }
+            for name in ("friction", "adhesive_friction", "mechanical_friction", "crossover_load"):
+                values = [r.scalars.get(name) for r in chosen]
+                values = [float(v) for v in values if v is not None]
+                if values:
+                    row[f"{name}_mean [N]"] = float(np.mean(values))
+            rows.append(row)
+    return rows
+
+
+def _mean_by_load(group: Sequence[CaseRecord], name: str) -> tuple[np.ndarray, np.ndarray]:
+    loads = _loads(group)
+    means = []
+    for load in loads:
+        values = [r.scalars.get(name) for r in group if math.isclose(_load(r), load, rel_tol=_LOAD_RTOL)]
+        values = [float(v) for v in values if v is not None]
+        means.append(np.mean(values) if values else np.nan)
+    return np.array(loads), np.array(means)
+
+
+def _friction_vs_load(records, context):
+    from ...plotting.study import new_figure
+
+    loads = _loads(records)
+    if len(loads) < 2:
+        return None
+    scale, unit = (1e-3, "mN") if loads[-1] >= 1e-3 else (1e-6, "µN") if loads[-1] >= 1e-6 else (1e-9, "nN")
+    figure, axes = new_figure(1, 2, width=5.5)
+    mu_axis, force_axis = axes[0]
+    colours = [f"C{k % 10}" for k in range(len(grouped(records)))]
+    for colour, (sample, group) in zip(colours, grouped(records).items(), strict=True):
+        label = sample or None
+        load, mu = _mean_by_load(group, "mu")
+        mu_axis.semilogx(load / scale, mu, "o-", color=colour, label=label)
+        for name, style in (("adhesive_friction", "-"), ("mechanical_friction", "--")):
+            load, force = _mean_by_load(group, name)
+            shown = force > 0
+            force_axis.loglog(load[shown] / scale, force[shown] / scale, style, color=colour)
+        crossovers = [r.scalars.get("crossover_load") for r in group]
+        crossovers = [float(c) for c in crossovers if c is not None]
+        if crossovers:
+            force_axis.axvline(np.mean(crossovers) / scale, color=colour, lw=0.8, ls=":")
+    mu_axis.set_xlabel(f"normal load ({unit})")
+    mu_axis.set_ylabel("coefficient of friction μ")
+    mu_axis.set_title("μ against load" + (" (mean over replicates)" if len(records) > len(loads) else ""))
+    force_axis.set_xlabel(f"normal load ({unit})")
+    force_axis.set_ylabel(f"friction force ({unit})")
+    force_axis.set_title("adhesive (solid) and mechanical (dashed) friction")
+    if any(grouped(records)):
+        mu_axis.legend(fontsize="small")
+    return figure
+
+
+def _simulated_only(records, context) -> dict[str, list[float]] | None:
+    """Return the simulated mu per sample for the figures without measured data (None: several loads)."""
+    if len(_loads(records)) > 1:
+        return None  # a load sweep: friction_vs_load shows it
+    return simulated_mu(records)
+
+
+def _mu_boxes(records, context):
+    from ...plotting.friction import plot_mu_boxes
+    from ...plotting.study import new_figure
+
+    figure, axes = new_figure(1, 1, width=6.0)
+    ax = axes[0][0]
+    if context.compare is not None:
+        plot_mu_boxes(comparison(records, context), ax=ax)  # errors are listed in the report
+        return figure
+    simulated = _simulated_only(records, context)
+    if simulated is None:
+        return None
+    boxes = ax.boxplot(
+        list(simulated.values()), whis=(0, 100), widths=0.6, patch_artist=True, medianprops={"color": "k"}
+    )
+    for box in boxes["boxes"]:
+        box.set_facecolor("tab:blue")
+        box.set_alpha(0.6)
+    ax.set_xticks(range(1, len(simulated) + 1))
+    ax.set_xticklabels(list(simulated))
+    ax.set_ylabel("coefficient of friction μ")
+    ax.set_title("simulated μ per sample (boxes: quartiles, whiskers: min to max)")
+    return figure
+
+
+def _mu_means(records, context):
+    from ...plotting.friction import plot_mu_means
+    from ...plotting.study import new_figure
+
+    figure, axes = new_figure(1, 1, width=6.0)
+    ax = axes[0][0]
+    if context.compare is not None:
+        result = comparison(records, context)
+        plot_mu_means(result, ax=ax)
+        ax.set_title(f"mean μ per sample, Pearson r of the means = {result.pearson_r:.2f}")
+        return figure
+    simulated = _simulated_only(records, context)
+    if simulated is None:
+        return None
+    x = np.arange(len(simulated))
+    means = [float(np.mean(v)) for v in simulated.values()]
+    spread = [float(np.std(v, ddof=1)) if len(v) > 1 else 0.0 for v in simulated.values()]
+    ax.bar(x, means, width=0.5, yerr=spread, capsize=4, color="tab:blue", alpha=0.7, label="simulated")
+    ax.set_xticks(x)
+    ax.set_xticklabels(list(simulated))
+    ax.set_ylabel("mean coefficient of friction μ (± 1 s.d.)")
+    ax.legend()
+    return figure
+
+
+class FrictionCompare(Strict):
+    """The ``[analysis.compare]`` table of a friction analysis: measured mu per sample.
+
+    Attributes
+    ----------
+    measured : Path
+        CSV with columns ``sample`` and ``mu`` (``#`` lines are comments), relative to the study
+        file; the samples are matched with the cases' ``sample`` labels.
+    alpha : float
+        Threshold of the t-tests (paper 000: 0.1; p > alpha counts as agreement).
+    equal_var : bool
+        Student's pooled-variance t-test if true; Welch's (default) does not assume that simulation
+        and measurement scatter alike.
+    load : float, optional
+        Load of the measurements [N]; needed only when the analysis sweeps the load (the cases at
+        this load are compared).
+    """
+
+    measured: Path
+    alpha: float = Field(default=0.1, gt=0.0, lt=1.0)
+    equal_var: bool = False
+    load: Force | None = None
+
+
+KIND = Kind(
+    name="friction",
+    summary="Winkler-layer Lennard-Jones friction at one load: mu, adhesive and mechanical parts (paper 000)",
+    parameters=FrictionParameters,
+    run=run,
+    units={
+        "load": "N",
+        "friction": "N",
+        "adhesive_friction": "N",
+        "mechanical_friction": "N",
+        "separation": "m",
+        "approach": "m",
+        "mechanical_force": "N",
+        "adhesive_force": "N",
+        "crossover_load": "N",
+        "load_capacity": "N",
+        "contact_modulus": "Pa",
+        "shear_modulus": "Pa",
+        "work_of_adhesion": "J/m^2",
+        "spring_stiffness": "Pa/m",
+        "spring_area": "m^2",
+    },
+    figures={"friction_vs_load": _friction_vs_load, "mu_boxes": _mu_boxes, "mu_means": _mu_means},
+    tables={"comparison": _comparison_table, "by_sample": _by_sample},
+    compare=FrictionCompare,
+)

@@ -1,0 +1,494 @@
+"""The ``friction`` study kind (paper 000) and its example study examples/paper000.toml.
+
+* end to end: the example through the CLI at a reduced size (32^2 scans of the paper's 20 nm
+  pixels, three scans per sample, three loads), its table, comparison, figures and report, the
+  statistics recomputed here from the stored values with scipy;
+* the kind's scalars against a direct ``winkler_lj_model(...).solve(load)`` on surfaces built here
+  from the same generators and seeds (the same numbers, readings and hold time included);
+* validation errors (a bad reading, an unknown reading name, a missing load) before anything runs;
+* the same physics written in nm and in m gives the same mu.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import xarray as xr
+from scipy import stats
+
+from roughcontact.experiment.compare import read_measured
+from roughcontact.friction import PronySeries, Readings, winkler_lj_model
+from roughcontact.materials import get_material
+from roughcontact.study import load_study, run_study
+from roughcontact.study.config import StudyError
+from roughcontact.study.kinds import get_kind
+from roughcontact.study.run import execute, make_task
+from roughcontact.study.store import read_table
+from roughcontact.topography.generate import self_affine, sphere_with_roughness
+from roughcontact.topography.statistics import ra
+
+SAMPLES = ["Ra 1.45 nm", "Ra 1.49 nm", "Ra 1.7 nm"]
+REDUCED = {
+    "shape = 250": "shape = 32",  # the paper's 20 nm pixels over 0.64 um instead of 5 um
+    'size = "5 um"': 'size = "0.64 um"',
+    "stop = 6, step = 1": "stop = 2, step = 1",  # three scans per sample instead of seven
+    "num = 13": "num = 3",  # three loads in the load sweep
+}
+
+
+def _rows(output, analysis):
+    return [row for row in read_table(output / "results.csv") if row["analysis"] == analysis]
+
+
+def test_paper000_example_end_to_end(tmp_path, shrunk, cli):
+    """examples/paper000.toml reduced, through ``roughcontact run``: table, comparison, figures, report."""
+    study = shrunk("paper000.toml", tmp_path, REDUCED, copy=("paper000_reported_mu.csv",))
+    output = tmp_path / "out"
+    status, out, err = cli("run", study, "-o", output, "--no-progress")
+    assert status == 0, err
+    assert "18 cases run, 0 reused, 0 failed" in out
+    _check_results_table(output)
+    _check_comparison(output, study)
+    _check_figures_and_report(output)
+
+
+def _check_results_table(output):
+    rows = _rows(output, "validation")
+    assert len(rows) == 3 * 3
+    assert {row["status"] for row in rows} == {"done"}
+    for column in ("mu", "friction [N]", "adhesive_friction [N]", "mechanical_friction [N]", "load [N]"):
+        assert column in rows[0], column
+    assert "crossover_load [N]" in rows[0] and "topographies.scan.ra [m]" in rows[0]
+    for row in rows:
+        mu, friction, load = float(row["mu"]), float(row["friction [N]"]), float(row["load [N]"])
+        assert load == pytest.approx(10e-6, rel=1e-12)
+        assert mu > 0 and friction / load == pytest.approx(mu, rel=1e-12)
+        parts = float(row["adhesive_friction [N]"]) + float(row["mechanical_friction [N]"])
+        assert parts == pytest.approx(friction, rel=1e-12)
+        assert float(row["crossover_load [N]"]) > 0
+    assert sorted({row["sample"] for row in rows}) == sorted(SAMPLES)
+    ra_of = {row["sample"]: float(row["topographies.scan.ra [m]"]) for row in rows}
+    assert ra_of == pytest.approx({"Ra 1.45 nm": 1.45e-9, "Ra 1.49 nm": 1.49e-9, "Ra 1.7 nm": 1.7e-9})
+    # every scan has its own derived seed: no two cases of the validation give the same mu
+    assert len({row["mu"] for row in rows}) == len(rows)
+    sweep = _rows(output, "load_sweep")
+    assert len(sweep) == 3 * 3 and {row["status"] for row in sweep} == {"done"}
+    assert sorted({float(row["load [N]"]) for row in sweep}) == pytest.approx([1e-6, math.sqrt(1e-9), 1e-3])
+
+
+def _check_comparison(output, study):
+    rows = _rows(output, "validation")
+    simulated = {s: [float(r["mu"]) for r in rows if r["sample"] == s] for s in SAMPLES}
+    measured = read_measured(study.parent / "paper000_reported_mu.csv")
+    table = read_table(output / "tables" / "validation_comparison.csv")
+    assert [row["sample"] for row in table] == SAMPLES
+    for row in table:
+        sample = row["sample"]
+        test = stats.ttest_ind(simulated[sample], measured[sample], equal_var=False)
+        assert float(row["p_value"]) == pytest.approx(test.pvalue, rel=1e-12)
+        assert float(row["t_statistic"]) == pytest.approx(test.statistic, rel=1e-12)
+        assert (int(row["n_simulated"]), int(row["n_measured"])) == (3, 7)
+        assert row["agrees"] == str(test.pvalue > 0.1) and row["test"] == "welch"
+        assert float(row["alpha"]) == 0.1
+    means = [(np.mean(simulated[s]), np.mean(measured[s])) for s in SAMPLES]
+    pearson = stats.pearsonr(*zip(*means, strict=True))
+    assert float(table[0]["pearson_r"]) == pytest.approx(pearson.statistic, rel=1e-12)
+    assert float(table[0]["pearson_p"]) == pytest.approx(pearson.pvalue, rel=1e-9)
+    by_sample = read_table(output / "tables" / "validation_by_sample.csv")
+    for row in by_sample:
+        values = simulated[row["sample"]]
+        assert int(row["n"]) == 3
+        assert float(row["mu_mean"]) == pytest.approx(np.mean(values), rel=1e-12)
+        assert float(row["mu_std"]) == pytest.approx(np.std(values, ddof=1), rel=1e-12)
+
+
+def _check_figures_and_report(output):
+    figures = output / "figures"
+    drawn = {path.name for path in figures.glob("*.png")}
+    assert {"validation_mu_boxes.png", "validation_mu_means.png", "load_sweep_friction_vs_load.png"} <= drawn
+    assert "validation_friction_vs_load.png" not in drawn  # one load: nothing to draw against load
+    assert all((figures / name).stat().st_size > 10_000 for name in drawn)
+    report = (output / "report.html").read_text()
+    assert "Figures that could not be drawn" not in report
+    for text in ("validation", "load_sweep", "comparison", "by sample", "data:image/png;base64"):
+        assert text in report, text
+    fields = sorted((output / "cases" / "validation").glob("*.nc"))
+    assert len(fields) == 9
+    assert "lateral_force" in xr.load_dataset(fields[0])
+
+
+# --- the kind against the model called directly -------------------------------------------------
+
+DIRECT = """
+[study]
+name = "direct"
+
+[topographies.scan]
+generate = "self_affine"
+shape = 32
+size = "0.64 um"
+hurst = 0.8
+rms_height = "1 nm"
+ra = "1.7 nm"
+seed = 11
+
+[topographies.tip]
+generate = "sphere_with_roughness"
+shape = 32
+size = "0.64 um"
+radius = "1 um"
+rms_height = "0.3 nm"
+seed = 5
+
+[[analysis]]
+name = "friction"
+model = "friction"
+surface = "scan"
+counter_surface = "tip"
+material = "polysilicon"
+counter = "SiO2"
+load = "{load}"
+layer_thickness = "40 nm"
+epsilon = "1.5 nm"
+surface_energy = "45 mJ/m^2"
+crossover = true
+{extra}
+"""
+
+
+def _direct_surfaces():
+    scan = self_affine((32, 32), 0.64e-6, hurst=0.8, rms_height=1e-9, seed=11)
+    scan = scan.with_heights(scan.heights * (1.7e-9 / ra(scan)))
+    tip = sphere_with_roughness((32, 32), 0.64e-6, radius=1e-6, rms_height=0.3e-9, seed=5)
+    return scan, tip
+
+
+@pytest.mark.parametrize(
+    ("extra", "options"),
+    [
+        ("", {}),
+        (
+            'readings = {contact = "zero_gap", shear_poisson = "surface", adhesive_cutoff = "20 nm"}',
+            {"readings": Readings(contact="zero_gap", shear_poisson="surface", adhesive_cutoff=20e-9)},
+        ),
+        (
+            'relaxed_modulus = "80 GPa"\nrelaxation_time = "5 s"\nhold_time = "3 s"',
+            {"relaxation": PronySeries(80e9, (110e9 - 80e9,), (5.0,)), "hold_time": 3.0},
+        ),
+    ],
+    ids=["defaults", "readings", "hold"],
+)
+def test_scalars_are_those_of_the_model_called_directly(tmp_path, extra, options):
+    path = tmp_path / "direct.toml"
+    path.write_text(DIRECT.format(load="7 uN", extra=extra))
+    study = load_study(path)
+    (case,) = study.cases
+    task = make_task(study, case)
+    output = get_kind("friction").run(task.parameters, task.inputs)
+
+    scan, tip = _direct_surfaces()
+    model = winkler_lj_model(
+        scan,
+        get_material("polysilicon"),
+        get_material("SiO2"),
+        counter_surface=tip,
+        layer_thickness=40e-9,
+        epsilon=1.5e-9,
+        surface_energy=0.045,
+        counter_surface_energy=None,  # the SiO2 library value, 72 mJ/m^2
+        **options,
+    )
+    result = model.solve(7e-6)
+    for name, value in result.scalars().items():
+        assert output.scalars[name] == pytest.approx(value, rel=1e-12, abs=0.0), name
+    assert output.scalars["crossover_load"] == pytest.approx(model.crossover_load(), rel=1e-12)
+    assert output.scalars["load_capacity"] == pytest.approx(model.load_capacity(), rel=1e-12)
+    assert output.scalars["contact_modulus"] == pytest.approx(model.contact_modulus, rel=1e-12)
+    assert output.scalars["work_of_adhesion"] == pytest.approx(model.work_of_adhesion, rel=1e-12)
+    # the stored fields are cropped to the springs that carry friction: nothing of Q is lost
+    lateral = output.dataset["lateral_force"]
+    assert lateral.size < result.lateral_force.size
+    assert float(lateral.sum()) == pytest.approx(result.friction, rel=1e-12)
+
+
+def test_a_case_runs_through_the_runner_with_the_same_numbers(tmp_path):
+    path = tmp_path / "direct.toml"
+    path.write_text(DIRECT.format(load="7 uN", extra=""))
+    study = load_study(path)
+    record, dataset = execute(make_task(study, study.cases[0]))
+    assert record["status"] == "done", record["error"]
+    scan, tip = _direct_surfaces()
+    mu = (
+        winkler_lj_model(
+            scan,
+            get_material("polysilicon"),
+            get_material("SiO2"),
+            counter_surface=tip,
+            layer_thickness=40e-9,
+            epsilon=1.5e-9,
+            surface_energy=0.045,
+        )
+        .solve(7e-6)
+        .mu
+    )
+    assert record["scalars"]["mu"] == pytest.approx(mu, rel=1e-12)
+    assert dataset is not None and "bonded" in dataset
+
+
+# --- validation errors ---------------------------------------------------------------------------
+
+
+def _problems(tmp_path, text):
+    path = tmp_path / "bad.toml"
+    path.write_text(text)
+    with pytest.raises(StudyError) as caught:
+        load_study(path)
+    return caught.value.problems, str(caught.value)
+
+
+def test_a_bad_reading_value_is_refused_with_its_name_and_the_choices(tmp_path):
+    problems, message = _problems(
+        tmp_path, DIRECT.format(load="7 uN", extra='readings = {contact = "touch"}')
+    )
+    assert len(problems) == 1
+    field, problem, fix = problems[0]
+    assert field.endswith(".readings")
+    assert "'contact'" in problem and "touch" in problem
+    assert "epsilon" in fix and "zero_gap" in fix
+    assert "contact" in message
+
+
+def test_an_unknown_reading_name_is_refused_with_a_suggestion(tmp_path):
+    problems, _ = _problems(
+        tmp_path, DIRECT.format(load="7 uN", extra='readings = {adhesive_rang = "all_springs"}')
+    )
+    (field, problem, fix), *_ = problems
+    assert "adhesive_rang" in problem and "adhesive_range" in fix
+
+
+def test_a_bad_cutoff_unit_is_refused(tmp_path):
+    problems, _ = _problems(
+        tmp_path, DIRECT.format(load="7 uN", extra='readings = {adhesive_cutoff = "2 s"}')
+    )
+    assert "adhesive_cutoff" in problems[0][1]
+
+
+def test_a_missing_load_is_refused_before_anything_runs(tmp_path):
+    text = DIRECT.format(load="7 uN", extra="").replace('load = "7 uN"\n', "")
+    problems, _ = _problems(tmp_path, text)
+    assert [(f.rsplit(".", 1)[-1], p) for f, p, _ in problems] == [("load", "is required but missing.")]
+
+
+def test_a_load_that_is_not_a_force_is_refused(tmp_path):
+    problems, _ = _problems(tmp_path, DIRECT.format(load="7 nm", extra=""))
+    assert problems[0][0].endswith("load")
+
+
+def test_a_hold_time_without_relaxation_is_refused(tmp_path):
+    problems, _ = _problems(tmp_path, DIRECT.format(load="7 uN", extra='hold_time = "3 s"'))
+    assert "relaxed_modulus" in problems[0][1]
+
+
+def test_cli_validate_names_the_bad_reading(tmp_path, cli):
+    path = tmp_path / "bad.toml"
+    path.write_text(DIRECT.format(load="7 uN", extra='readings = {mechanical_energy = "signed"}'))
+    status, _, err = cli("validate", path)
+    assert status != 0
+    assert "mechanical_energy" in err and "eq16_signed" in err
+
+
+# --- units ---------------------------------------------------------------------------------------
+
+UNITS = """
+[study]
+name = "units"
+seed = 4
+
+[topographies.scan]
+generate = "self_affine"
+shape = 32
+size = "{size}"
+hurst = 0.8
+rms_height = "{rms}"
+ra = "{ra}"
+
+[topographies.tip]
+generate = "sphere_with_roughness"
+shape = 32
+size = "{size}"
+radius = "{radius}"
+rms_height = "{tip_rms}"
+seed = 2
+
+[[analysis]]
+name = "friction"
+model = "friction"
+surface = "scan"
+counter_surface = "tip"
+material = "polysilicon"
+counter = "SiO2"
+load = "{load}"
+layer_thickness = "{layer}"
+epsilon = "{epsilon}"
+surface_energy = "{energy}"
+readings = {{adhesive_cutoff = "{cutoff}"}}
+figures = []
+[analysis.sweep]
+replicate = [0, 1]
+[analysis.zip]
+sample = ["a", "b"]
+"topographies.scan.ra" = ["{ra}", "{ra_b}"]
+"""
+
+IN_NM = {
+    "size": "640 nm",
+    "rms": "1.5 nm",
+    "ra": "1.45 nm",
+    "ra_b": "1.7 nm",
+    "radius": "1000 nm",
+    "tip_rms": "0.3 nm",
+    "load": "10000 nN",
+    "layer": "50 nm",
+    "epsilon": "2 nm",
+    "energy": "50 mJ/m^2",
+    "cutoff": "30 nm",
+}
+IN_M = {
+    "size": "6.4e-7 m",
+    "rms": "1.5e-9 m",
+    "ra": "1.45e-9 m",
+    "ra_b": "1.7e-9 m",
+    "radius": "1e-6 m",
+    "tip_rms": "3e-10 m",
+    "load": "1e-5 N",
+    "layer": "5e-8 m",
+    "epsilon": "2e-9 m",
+    "energy": "0.05 J/m^2",
+    "cutoff": "3e-8 m",
+}
+
+
+def test_mu_does_not_depend_on_the_units_the_study_is_written_in(tmp_path):
+    mu = {}
+    for name, values in (("nm", IN_NM), ("m", IN_M)):
+        path = tmp_path / f"{name}.toml"
+        path.write_text(UNITS.format(**values))
+        output = tmp_path / f"out-{name}"
+        summary = run_study(load_study(path), output)
+        assert summary.done == 4 and summary.failed == 0
+        mu[name] = {
+            (row["sample"], row["replicate"]): float(row["mu"]) for row in read_table(output / "results.csv")
+        }
+    assert mu["nm"].keys() == mu["m"].keys() and len(mu["nm"]) == 4
+    for key, value in mu["nm"].items():
+        assert value == pytest.approx(mu["m"][key], rel=1e-9, abs=0.0), key
+    assert len(set(mu["nm"].values())) == 4  # four different scans, so the check compares four cases
+
+
+def test_the_reported_csv_is_labelled_and_has_seven_values_per_sample(examples):
+    text = (examples / "paper000_reported_mu.csv").read_text()
+    assert text.startswith("# RECONSTRUCTED FROM REPORTED STATISTICS")
+    measured = read_measured(examples / "paper000_reported_mu.csv")
+    assert list(measured) == SAMPLES
+    assert all(values.size == 7 for values in measured.values())
+
+
+# --- comparison with a load sweep ------------------------------------------------------------------
+
+SWEPT = """
+[study]
+name = "swept"
+seed = 8
+
+[topographies.scan]
+generate = "self_affine"
+shape = 24
+size = "0.48 um"
+hurst = 0.8
+rms_height = "1.5 nm"
+
+[topographies.tip]
+generate = "sphere"
+shape = 24
+size = "0.48 um"
+radius = "1 um"
+
+[[analysis]]
+name = "friction"
+model = "friction"
+surface = "scan"
+counter_surface = "tip"
+material = "polysilicon"
+counter = "SiO2"
+load = "1 uN"
+surface_energy = "50 mJ/m^2"
+[analysis.sweep]
+load = ["5 uN", "10 uN"]
+replicate = [0, 1, 2]
+sample = ["a", "b"]
+[analysis.compare]
+measured = "measured.csv"
+{load}
+"""
+
+
+def test_a_load_sweep_is_compared_at_the_load_of_the_measurements(tmp_path, caplog):
+    from roughcontact.study.outputs import draw_figures, write_tables
+
+    (tmp_path / "measured.csv").write_text(
+        "# test values\nsample,mu\n" + "".join(f"{s},{0.5 + 0.1 * k}\n" for s in "abc" for k in range(4))
+    )
+    path = tmp_path / "with.toml"
+    path.write_text(SWEPT.format(load='load = "10 uN"'))
+    output = tmp_path / "with"
+    assert run_study(load_study(path), output).done == 12
+    with caplog.at_level("WARNING"):
+        write_tables(output)
+    assert "['c']" in caplog.text  # measured only: left out, and said
+    table = read_table(output / "tables" / "friction_comparison.csv")
+    assert [row["sample"] for row in table] == ["a", "b"]
+    rows = read_table(output / "results.csv")
+    measured = read_measured(tmp_path / "measured.csv")
+    for row in table:
+        at_10 = [
+            float(r["mu"])
+            for r in rows
+            if r["sample"] == row["sample"] and math.isclose(float(r["load [N]"]), 1e-5, rel_tol=1e-12)
+        ]
+        assert len(at_10) == int(row["n_simulated"]) == 3
+        expected = stats.ttest_ind(at_10, measured[row["sample"]], equal_var=False).pvalue
+        assert float(row["p_value"]) == pytest.approx(expected, rel=1e-12)
+    by_sample = read_table(output / "tables" / "friction_by_sample.csv")
+    assert [(r["sample"], float(r["load [N]"]), int(r["n"])) for r in by_sample] == [
+        ("a", 5e-6, 3),
+        ("a", 1e-5, 3),
+        ("b", 5e-6, 3),
+        ("b", 1e-5, 3),
+    ]
+
+    path.write_text(SWEPT.format(load=""))  # two loads and no compare.load: no comparison, and said
+    output = tmp_path / "without"
+    run_study(load_study(path), output)
+    with caplog.at_level("WARNING"):
+        write_tables(output)
+    assert not (output / "tables" / "friction_comparison.csv").exists()
+    assert "compare.load" in caplog.text
+    written, problems = draw_figures(output)
+    assert {p.name for p in written} == {"friction_friction_vs_load.png"}
+    assert len(problems) == 2 and all("compare.load" in p for p in problems)
+
+
+def test_fields_beyond_the_size_limit_are_not_stored(tmp_path, monkeypatch):
+    from roughcontact.study.kinds import friction
+
+    path = tmp_path / "direct.toml"
+    path.write_text(DIRECT.format(load="7 uN", extra=""))
+    study = load_study(path)
+    task = make_task(study, study.cases[0])
+    stored = friction.run(task.parameters, task.inputs)
+    points = stored.dataset.sizes["x"] * stored.dataset.sizes["y"]
+    monkeypatch.setattr(friction, "FIELD_POINTS", points - 1)
+    output = friction.run(task.parameters, task.inputs)
+    assert output.dataset is None and output.scalars == stored.scalars
