@@ -147,9 +147,8 @@ class IslandCompression:
         )
 
 
-def _default_forces(peak_force: float, reference_force: float) -> tuple[np.ndarray, np.ndarray]:
-    loading = np.unique(np.concatenate([np.linspace(0.0, peak_force, 11), [reference_force]]))
-    return loading, loading[::-1][1:]
+def _default_loading(peak_force: float, reference_force: float) -> np.ndarray:
+    return np.unique(np.concatenate([np.linspace(0.0, peak_force, 11), [reference_force]]))
 
 
 def compress_island(
@@ -183,8 +182,8 @@ def compress_island(
     hardness : float, optional
         Pressure cap [Pa].
     loading_forces, unloading_forces : array_like, optional
-        Target loads [N]; default loading 0, reference, 0.1 ... 1.0 x peak and unloading back down to 0.
-        The loading list must end at ``peak_force``.
+        Target loads [N]; default loading 0, reference, 0.1 ... 1.0 x peak, and unloading through the
+        loading targets in reverse, down to 0. The loading list must end at ``peak_force``.
     reference_force : float
         Load of zero interference [N] (25 uN); it must be one of the loading targets.
     tolerance : float
@@ -205,9 +204,11 @@ def compress_island(
     hardness = material.hardness if hardness is None else hardness
     if hardness is None:
         raise InputError("hardness", "the material has no hardness.", "pass hardness= in Pa.")
-    default_loading, default_unloading = _default_forces(peak_force, reference_force)
-    loading = default_loading if loading_forces is None else np.asarray(loading_forces, dtype=float)
-    unloading = default_unloading if unloading_forces is None else np.asarray(unloading_forces, dtype=float)
+    if loading_forces is None:
+        loading = _default_loading(peak_force, reference_force)
+    else:
+        loading = np.asarray(loading_forces, dtype=float)
+    unloading = loading[::-1][1:] if unloading_forces is None else np.asarray(unloading_forces, dtype=float)
     if loading[-1] != peak_force or np.any(np.diff(loading) <= 0):
         raise InputError("loading_forces", "must rise strictly to peak_force.", "e.g. [0, 25e-6, ..., 1e-3].")
     if np.any(np.diff(np.concatenate([[peak_force], unloading])) >= 0):

@@ -38,7 +38,8 @@ def plot_load_interference(
     (Figure, Axes)
     """
     fig, ax = _axes(ax, figsize=(5.5, 4.2))
-    for (label, curve), color in zip(curves.items(), ("C0", "C1", "C2", "C3", "C4"), strict=False):
+    for number, (label, curve) in enumerate(curves.items()):
+        color = f"C{number % 10}"
         branches = np.asarray(curve["branch"])
         for branch, style in _BRANCH_STYLES.items():
             keep = branches == branch

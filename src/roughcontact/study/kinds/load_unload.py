@@ -1,0 +1,353 @@
+r"""Study kind ``load_unload``: elastic-perfectly-plastic load-unload of a surface against a rigid flat punch.
+
+One case wraps :func:`roughcontact.models.thin_film_island.compress_island` (seed paper 002,
+sections III and VI, Figs. 7-9): the surface is pressed by a rigid flat to ``peak_force`` and
+unloaded, force-controlled, through the targets
+
+.. math:: W_k = \frac{k}{n} W_{max}, \quad k = 0 \dots n \quad (n = \text{load\_steps}),
+
+plus ``reference_force`` on loading, and the same targets back down to zero on unloading. Each
+step is an FFT boundary-element solution (paper 001 eq. 4) with the contact pressure capped at the
+hardness H; the overlap at the cap is kept as plastic flattening, and unloading is elastic on the
+flattened surface. The interference follows the experiment's convention: omega = 0 where the
+loading branch carries ``reference_force`` (paper 002: 25 uN, the smallest load its nanoindenter
+resolves; default here 0, the first touch). The body is a film of ``film_thickness`` bonded to a
+``substrate`` (paper 002: SU-8, 6.3 um, on silicon), or a half-space of ``material``.
+
+The von Mises stress (paper 002 eq. 12) is that of an elastic half-space under each step's surface
+pressure, on the plane ``stress_depth`` below the surface (0: the surface, as the paper's maps).
+
+Assumptions (those of the model; see :mod:`roughcontact.models.thin_film_island`): plasticity is
+confined to the surface (no subsurface plastic zone, no hardening, no residual stress after
+unloading, so a map at 0 N on unloading is empty where the paper's FEM shows residual stress); the
+film is laterally infinite (the island's free side walls are not modelled); strains are small and
+the load quasi-static; the punch is rigid (diamond is ~150 times stiffer than SU-8).
+
+Scalars: peak force, peak and residual interference, peak contact area, fraction of it at the
+hardness, largest pressure, largest plastic flattening, largest von Mises stress at the peak.
+Dataset: the curve (``branch``, ``approach`` (the interference), ``force``, ``contact_area``,
+``plastic_fraction``, ``max_pressure``) on the dimension ``point``, and von Mises maps
+``von_mises(map, x, y)`` at a few loads (``von_mises_loads``), each coarsened to at most
+``map_points`` per axis by the largest value of each block, so that peaks are kept.
+
+Figures: ``load_interference`` (paper 002 Fig. 7: this analysis' curves with those of every
+``asperity`` analysis of the study and the measured curve of ``[analysis.compare]``, against
+omega / omega_c where the asperity analyses give one omega_c) and ``von_mises`` (Figs. 8-9).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from pydantic import Field, model_validator
+from pydantic_core import PydanticCustomError
+
+from ..kind import CaseOutput, CaseParameters, Kind
+from ..schema import Force, Length, MaterialName, Pressure, TopographyName
+from .asperity import MeasuredCurve, common_omega_c, curve_of, draw_load_interference, measured_of
+from .common import evenly_chosen
+
+MAPS_PER_BRANCH = 6
+"""Default number of von Mises maps on loading (evenly spread over the targets; unloading: the same loads)."""
+
+
+class LoadUnloadParameters(CaseParameters):
+    """Keys of a ``model = "load_unload"`` analysis (SI after validation).
+
+    Attributes
+    ----------
+    surface : str
+        The study topography (heights towards the punch; paper 002: ``generate = "paper002_island"``).
+    material : str
+        The film or half-space; its hardness caps the pressure unless ``hardness``.
+    substrate : str, optional
+        Substrate the film is bonded to (needs ``film_thickness``); default: a half-space.
+    film_thickness : float, optional
+        Film thickness [m] (paper 002: 6.3 um).
+    peak_force : float
+        Peak load [N].
+    reference_force : float
+        Load of zero interference on loading [N] (paper 002: 25 uN; default 0, the first touch).
+    load_steps : int
+        Equal load increments from 0 to the peak (and back).
+    hardness : float, optional
+        Pressure cap [Pa] (default: the material's).
+    tolerance : float
+        Solver tolerance (:func:`~roughcontact.contact.solve_normal`).
+    stress_depth : float
+        Depth [m] of the von Mises maps (0: the surface).
+    von_mises_loads : list of float, optional
+        Loads [N] of the maps, each one of the targets (on both branches where it occurs); default:
+        six loads evenly spread from 0 to the peak (0, 20, ..., 100 % for ``load_steps = 10``, as
+        paper 002 Figs. 8-9).
+    map_points : int
+        Largest number of map points per axis that is stored.
+    """
+
+    surface: TopographyName
+    material: MaterialName
+    substrate: MaterialName | None = None
+    film_thickness: Length | None = None
+    peak_force: Force
+    reference_force: Force = 0.0
+    load_steps: int = Field(default=10, ge=1)
+    hardness: Pressure | None = None
+    tolerance: float = Field(default=1e-8, gt=0.0, lt=1.0)
+    stress_depth: Length = 0.0
+    von_mises_loads: list[Force] | None = None
+    map_points: int = Field(default=128, ge=8)
+
+    @model_validator(mode="after")
+    def _consistent(self) -> LoadUnloadParameters:
+        if not self.peak_force > 0:
+            raise PydanticCustomError(
+                "quantity", "peak_force must be positive", {"fix": "e.g. peak_force = '1000 uN'"}
+            )
+        if not 0 <= self.reference_force < self.peak_force:
+            raise PydanticCustomError(
+                "quantity",
+                "reference_force must be >= 0 and below peak_force",
+                {"fix": "e.g. reference_force = '25 uN' with peak_force = '1000 uN'"},
+            )
+        if (self.substrate is None) != (self.film_thickness is None):
+            raise PydanticCustomError(
+                "quantity",
+                "a film needs both substrate and film_thickness (without them the body is a half-space)",
+                {"fix": "e.g. substrate = 'silicon wafer' and film_thickness = '6.3 um'"},
+            )
+        if self.film_thickness is not None and not self.film_thickness > 0:
+            raise PydanticCustomError("quantity", "film_thickness must be positive", {"fix": "e.g. '6.3 um'"})
+        if not self.stress_depth >= 0:
+            raise PydanticCustomError("quantity", "stress_depth must be >= 0", {"fix": "e.g. 0 or '0.5 um'"})
+        if self.von_mises_loads is not None:
+            loading, _ = load_targets(self.peak_force, self.reference_force, self.load_steps)
+            missing = [f for f in self.von_mises_loads if not np.isclose(loading, f, rtol=1e-9, atol=0).any()]
+            if missing:
+                raise PydanticCustomError(
+                    "quantity",
+                    "von_mises_loads {missing} uN are not among the load targets {targets} uN",
+                    {
+                        "missing": [float(f"{f * 1e6:.6g}") for f in missing],
+                        "targets": [float(f"{f * 1e6:.6g}") for f in loading],
+                        "fix": "choose among the targets (k / load_steps x peak_force, reference_force)",
+                    },
+                )
+        return self
+
+
+def load_targets(peak_force: float, reference_force: float, steps: int) -> tuple[np.ndarray, np.ndarray]:
+    """Return the loading targets 0, W/n, ..., W with ``reference_force`` added, and unloading ones [N].
+
+    With ``steps = 10`` these are the default targets of
+    :func:`~roughcontact.models.thin_film_island.compress_island` (the same floats).
+    """
+    loading = np.unique(np.concatenate([np.linspace(0.0, peak_force, steps + 1), [reference_force]]))
+    return loading, loading[::-1][1:]
+
+
+def _map_steps(parameters: LoadUnloadParameters, loading: np.ndarray, unloading: np.ndarray) -> list[int]:
+    """Return the indices of the steps (loading, then unloading) whose von Mises maps are stored."""
+    if parameters.von_mises_loads is None:
+        regular = np.linspace(0.0, parameters.peak_force, parameters.load_steps + 1)
+        wanted = evenly_chosen(list(regular), MAPS_PER_BRANCH)
+    else:
+        wanted = parameters.von_mises_loads
+    steps = [int(np.flatnonzero(np.isclose(loading, f, rtol=1e-9, atol=0))[0]) for f in wanted]
+    for force in wanted:
+        match = np.flatnonzero(np.isclose(unloading, force, rtol=1e-9, atol=0))
+        if match.size:
+            steps.append(loading.size + int(match[0]))
+    return sorted(set(steps))
+
+
+def _coarsened(field: np.ndarray, coordinates, points: int):
+    """Return the block maxima of ``field`` (>= 0), at most ``points`` blocks per axis, and their centres."""
+    factors = [max(1, math.ceil(n / points)) for n in field.shape]
+    padded_shape = [-(-n // f) * f for n, f in zip(field.shape, factors, strict=True)]
+    padded = np.zeros(padded_shape, dtype=field.dtype)
+    padded[: field.shape[0], : field.shape[1]] = field
+    (fx, fy), (px, py) = factors, padded_shape
+    blocks = padded.reshape(px // fx, fx, py // fy, fy).max(axis=(1, 3))
+    centres = [
+        c[0] + (np.arange(p // f) * f + (f - 1) / 2) * (c[1] - c[0] if c.size > 1 else 0.0)
+        for c, f, p in zip(coordinates, factors, padded_shape, strict=True)
+    ]
+    return blocks, centres
+
+
+def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
+    """Load and unload the surface; scalars, the curve and the von Mises maps."""
+    import xarray as xr
+
+    from ...models.thin_film_island import compress_island
+
+    surface = inputs.topography(parameters.surface)
+    material = inputs.material(parameters.material)
+    loading, unloading = load_targets(
+        parameters.peak_force, parameters.reference_force, parameters.load_steps
+    )
+    options = {} if parameters.film_thickness is None else {"film_thickness": parameters.film_thickness}
+    compression = compress_island(
+        surface,
+        material,
+        peak_force=parameters.peak_force,
+        substrate=inputs.material(parameters.substrate),
+        hardness=parameters.hardness,
+        loading_forces=loading,
+        unloading_forces=unloading,
+        reference_force=parameters.reference_force,
+        tolerance=parameters.tolerance,
+        **options,
+    )
+    curve = compression.curve()
+    peak_index = loading.size - 1
+    peak = compression.steps[peak_index]
+    # Fraction of the real contact area at the hardness (compress_island's curve gives it per grid point).
+    curve["plastic_fraction"] = np.array(
+        [s.plastic_mask.sum() / max(np.count_nonzero(s.contact_mask), 1) for s in compression.steps]
+    )
+    depth = [parameters.stress_depth]
+    chosen = _map_steps(parameters, loading, unloading)
+    maps = {i: compression.stress(i, depths=depth).von_mises()[0] for i in sorted({*chosen, peak_index})}
+    peak_von_mises = maps[peak_index]
+    scalars = {
+        "peak_force": peak.force,
+        "peak_interference": float(compression.interference[peak_index]),
+        "residual_interference": compression.residual_interference,
+        "peak_contact_area": peak.contact_area,
+        "plastic_fraction_at_peak": float(curve["plastic_fraction"][peak_index]),
+        "max_pressure": float(np.max(curve["max_pressure"])),
+        "max_plastic_deformation": float(compression.plastic_deformation.max()),
+        "max_von_mises_at_peak": float(peak_von_mises.max()),
+        "hardness": compression.hardness,
+    }
+    units = {
+        "approach": ("m", "interference, zero at reference_force on loading"),
+        "force": ("N", "load"),
+        "contact_area": ("m^2", "real contact area"),
+        "plastic_fraction": ("", "fraction of the real contact area at the hardness"),
+        "max_pressure": ("Pa", "largest contact pressure"),
+    }
+    variables = {"branch": ("point", np.asarray(curve["branch"]).astype(str))}
+    for name, (unit, description) in units.items():
+        variables[name] = (
+            "point",
+            np.asarray(curve[name], dtype=float),
+            {"units": unit, "long_name": description},
+        )
+    coarse = [_coarsened(maps[i], surface.coordinates(), parameters.map_points) for i in chosen]
+    x, y = coarse[0][1]
+    variables["von_mises"] = (
+        ("map", "x", "y"),
+        np.stack([blocks for blocks, _ in coarse]).astype(np.float32),
+        {"units": "Pa", "long_name": f"von Mises stress at z = {parameters.stress_depth:g} m (block maxima)"},
+    )
+    dataset = xr.Dataset(
+        variables,
+        coords={
+            "x": ("x", x, {"units": "m"}),
+            "y": ("y", y, {"units": "m"}),
+            "map_point": ("map", np.array(chosen)),
+            "map_force": ("map", np.array([compression.steps[i].force for i in chosen]), {"units": "N"}),
+            "map_branch": ("map", compression.branch[chosen].astype(str)),
+        },
+        attrs={"stress_depth": parameters.stress_depth, "reference_force": parameters.reference_force},
+    )
+    return CaseOutput(scalars, dataset)
+
+
+# --- figures -------------------------------------------------------------------------------------
+
+
+def _asperity_curves(context) -> tuple[dict[str, dict], list]:
+    """Return the curves of the study's ``asperity`` analyses (at most two) and the records they come from."""
+    curves, used = {}, []
+    sources = [
+        (name, r) for name, (model, records) in context.others.items() if model == "asperity" for r in records
+    ]
+    sources = [(name, r) for name, r in sources if r.fields_path is not None]
+    for name, record in sources[:2]:
+        curve = curve_of(record)
+        if curve is None:
+            continue
+        law = record.parameters.get("law", "")
+        label = f"KKE ({law})" if len(sources) == 1 else f"KKE {name}, {record.label}"
+        curves[label] = curve
+        used.append(record)
+    return curves, used
+
+
+def _load_interference(records, context):
+    curves, used = _asperity_curves(context)
+    own = evenly_chosen([r for r in records if r.fields_path is not None], 5 - len(curves))
+    for record in own:
+        curve = curve_of(record)
+        if curve is not None:
+            curves["BEM island" if len(own) == 1 else f"BEM, {record.label}"] = curve
+    if not curves:
+        return None
+    return draw_load_interference(curves, common_omega_c(used), measured_of(context))
+
+
+def _von_mises(records, context):
+    """Paper 002 Figs. 8-9: the stored von Mises maps of the first case, loading then unloading."""
+    from ...plotting.study import map_axes, new_figure
+
+    record = next((r for r in records if r.fields_path is not None), None)
+    data = None if record is None else record.dataset()
+    if data is None or "von_mises" not in data:
+        return None
+    count = data.sizes["map"]
+    columns = min(3, count)
+    rows = -(-count // columns)
+    figure, axes = new_figure(rows, columns, width=4.2, height=3.6)
+    flat = [ax for row in axes for ax in row]
+    for index, ax in enumerate(flat):
+        if index >= count:
+            ax.set_visible(False)
+            continue
+        field = data["von_mises"].isel(map=index)
+        if float(field.max()) > 0:
+            map_axes(ax, field, "von Mises", "Pa", cmap="inferno")
+        else:  # no load: this model keeps no residual stress (module notes)
+            ax.text(
+                0.5,
+                0.5,
+                "no pressure, no stress\n(no residual stress\nin this model)",
+                ha="center",
+                va="center",
+                transform=ax.transAxes,
+            )
+            ax.set_xticks([])
+            ax.set_yticks([])
+        ax.set_title(f"{str(field.map_branch.values)}, W = {float(field.map_force) * 1e6:.0f} µN")
+    depth = float(data.attrs.get("stress_depth", 0.0))
+    where = "surface" if depth == 0 else f"z = {depth * 1e6:.3g} µm"
+    figure.suptitle(f"von Mises stress ({where})" + (f", {record.label}" if len(records) > 1 else ""))
+    return figure
+
+
+KIND = Kind(
+    name="load_unload",
+    summary="elastic-plastic load-unload of a surface or a film island against a rigid flat punch "
+    "(FFT-BEM, force control, paper 002 Figs. 7-9)",
+    parameters=LoadUnloadParameters,
+    run=run,
+    units={
+        "peak_force": "N",
+        "peak_interference": "m",
+        "residual_interference": "m",
+        "peak_contact_area": "m^2",
+        "plastic_fraction_at_peak": "",
+        "max_pressure": "Pa",
+        "max_plastic_deformation": "m",
+        "max_von_mises_at_peak": "Pa",
+        "hardness": "Pa",
+        "reference_force": "N",
+        "film_thickness": "m",
+        "stress_depth": "m",
+    },
+    figures={"load_interference": _load_interference, "von_mises": _von_mises},
+    compare=MeasuredCurve,
+)

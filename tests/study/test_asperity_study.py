@@ -1,0 +1,238 @@
+"""The ``asperity`` and ``load_unload`` study kinds (paper 002) and the example study examples/paper002.toml.
+
+* end to end: the example through the CLI at a reduced size (a 32^2 island, two replicates, five
+  load steps, a short KKE curve) with a measured curve added, its results table, the section IV
+  table against the paper's printed numbers, the combined KKE + BEM figure and the report;
+* the kinds' scalars against direct calls of the models on the same inputs
+  (``asperity_parameters`` on a generated surface's moments, ``compress_island`` on the same
+  synthetic island);
+* validation errors (surface and moments both given, neither, a negative m0) naming the field.
+"""
+
+from __future__ import annotations
+
+import csv
+
+import numpy as np
+import pytest
+
+from roughcontact.asperity.parameters import asperity_parameters
+from roughcontact.materials import get_material
+from roughcontact.models.thin_film_island import compress_island, paper002_island
+from roughcontact.study import load_study
+from roughcontact.study.config import StudyError
+from roughcontact.study.inputs import CaseInputs
+from roughcontact.study.kinds import get_kind
+from roughcontact.study.outputs import context, read_study
+from roughcontact.study.schema import GaussianRandom, Paper002Island
+from roughcontact.study.store import read_table
+from roughcontact.topography.statistics import spectral_moments
+
+SU8, DIAMOND, SILICON = (get_material(n) for n in ("SU-8", "diamond flat tip", "silicon wafer"))
+MATERIALS = {"SU-8": SU8, "diamond flat tip": DIAMOND, "silicon wafer": SILICON}
+REDUCED = {
+    "shape = 384": "shape = 32",
+    "steps = 40": "steps = 8",
+    "load_steps = 10": "load_steps = 5",
+    "replicate = [0, 1, 2]": "replicate = [0, 1]",
+    "# [analysis.compare]\n# measured_curve": "[analysis.compare]\nmeasured_curve",
+}
+# Section IV of paper 002 as printed (eqs. 4, 5, 6, 9); the standard E' reproduces them.
+PRINTED = {
+    "summit_radius": 5.08e-6,
+    "summit_height_std": 0.0431e-6,
+    "critical_interference": 0.0125e-6,
+    "plasticity_index": 1.86,
+}
+
+
+def _rows(path):
+    with open(path, newline="") as handle:
+        return list(csv.DictReader(handle))
+
+
+def test_example_end_to_end_reproduces_section_iv_and_draws_kke_against_bem(cli, shrunk, tmp_path):
+    study = shrunk("paper002.toml", tmp_path, REDUCED)
+    # A made-up measured curve (the paper's is not published): it must appear in the combined figure.
+    (tmp_path / "paper002_measured_curve.csv").write_text(
+        "interference_m,force_N\n0,25e-6\n2e-8,3e-4\n4e-8,8e-4\n"
+    )
+    out = tmp_path / "out"
+    status, printed, err = cli("run", study, "-o", out, "--no-progress")
+    assert status == 0, err
+
+    rows = _rows(out / "results.csv")
+    assert [(r["analysis"], r["status"]) for r in rows] == [("kke", "done"), ("bem", "done"), ("bem", "done")]
+    kke, bem = rows[0], rows[1:]
+    omega_c = float(kke["critical_interference [m]"])
+    for name in ("peak_interference", "residual_interference"):
+        assert float(kke[f"{name}_over_omega_c"]) == pytest.approx(
+            float(kke[f"{name} [m]"]) / omega_c, rel=1e-12
+        )
+    assert float(kke["peak_force [N]"]) == pytest.approx(1000e-6, rel=1e-9)
+    # loading then elastic recovery: the residual interference lies below the peak one
+    assert 0 < float(kke["residual_interference [m]"]) < float(kke["peak_interference [m]"])
+    for row in bem:
+        assert float(row["peak_force [N]"]) == pytest.approx(1000e-6, rel=1e-6)
+        assert float(row["residual_interference [m]"]) < float(row["peak_interference [m]"])
+        assert float(row["max_pressure [Pa]"]) <= SU8.hardness
+    # the two replicates are two realisations of the island (derived seeds)
+    assert bem[0]["peak_interference [m]"] != bem[1]["peak_interference [m]"]
+
+    table = {row["quantity"]: row for row in read_table(out / "tables" / "kke_paper002.csv")}
+    for key, value in PRINTED.items():
+        assert table[key]["modulus_form"] == "standard"
+        assert float(table[key]["paper"]) == pytest.approx(value, rel=1e-12)
+        assert float(table[key]["this_case"]) == pytest.approx(value, rel=5e-3)
+        column = f"{key} [m]" if key != "plasticity_index" else key
+        assert float(table[key]["this_case"]) == pytest.approx(float(kke[column]), rel=1e-12)
+    # eq. 7 as printed (1 - nu) does not reproduce omega_c: the table keeps both readings
+    assert (
+        float(table["critical_interference"]["printed_inputs_eq7_printed"])
+        < 0.7 * PRINTED["critical_interference"]
+    )
+
+    assert (out / "figures" / "bem_load_interference.png").stat().st_size > 0
+    assert (out / "figures" / "bem_von_mises.png").stat().st_size > 0
+    assert (out / "figures" / "kke_load_interference.png").stat().st_size > 0
+    report = (out / "report.html").read_text()
+    assert "kke" in report and "bem" in report and "paper002" in report
+    assert report.count("data:image/png;base64") >= 4
+
+    # The combined figure (paper 002 Fig. 7): the KKE curve of the other analysis, both BEM
+    # replicates and the measured points, on the KKE analysis' omega_c.
+    _, analyses = read_study(out)
+    analysis = next(a for a in analyses if a.name == "bem")
+    figure = analysis.kind.figures["load_interference"](analysis.finished, context(analysis, analyses))
+    ax = figure.axes[0]
+    labels = [line.get_label() for line in ax.get_lines()]
+    assert "KKE (kogut_etsion), loading" in labels and "KKE (kogut_etsion), unloading" in labels
+    assert sum(label.startswith("BEM") for label in labels) == 4  # two replicates x two branches
+    assert "measured" in labels
+    assert ax.get_xlabel() == "interference ω/ω_c"
+    kke_loading = ax.get_lines()[labels.index("KKE (kogut_etsion), loading")]
+    assert np.max(kke_loading.get_xdata()) == pytest.approx(float(kke["peak_interference_over_omega_c"]))
+
+
+def test_asperity_scalars_equal_a_direct_call_on_the_surface_moments():
+    spec = GaussianRandom(
+        generate="gaussian_random",
+        shape=(64, 64),
+        size=20e-6,
+        rms_height=30e-9,
+        correlation_length=1.5e-6,
+        seed=5,
+    )
+    inputs = CaseInputs({"rough": spec}, {}, MATERIALS)
+    kind = get_kind("asperity")
+    parameters = kind.parameters.model_validate(
+        {
+            "surface": "rough",
+            "material": "SU-8",
+            "counter": "diamond flat tip",
+            "max_force": "100 uN",
+            "nominal_area": "400 um^2",
+            "steps": 6,
+        }
+    )
+    output = kind.run(parameters, inputs)
+    moments = spectral_moments(inputs.topography("rough"))
+    direct = asperity_parameters(
+        m0=moments.m0, m2=moments.m2, m4=moments.m4, sample=SU8, counter_body=DIAMOND
+    ).to_dict()
+    assert {k: output.scalars[k] for k in direct} == direct
+    curve = output.dataset
+    loading = np.asarray(curve["branch"]) == "loading"
+    assert float(curve["force"][loading][-1]) == pytest.approx(100e-6, rel=1e-9)
+    assert output.scalars["peak_interference"] == float(curve["approach"][loading][-1])
+
+
+def test_load_unload_interferences_equal_a_direct_compress_island():
+    inputs = CaseInputs(
+        {"island": Paper002Island(generate="paper002_island", shape=(24, 24), seed=4)}, {}, MATERIALS
+    )
+    kind = get_kind("load_unload")
+    parameters = kind.parameters.model_validate(
+        {
+            "surface": "island",
+            "material": "SU-8",
+            "substrate": "silicon wafer",
+            "film_thickness": "6.3 um",
+            "peak_force": "1000 uN",
+            "reference_force": "25 uN",
+        }
+    )
+    output = kind.run(parameters, inputs)
+    # compress_island's own default targets (0, 25 uN, 100 ... 1000 uN and back) are load_steps = 10's
+    direct = compress_island(paper002_island(24, seed=4), SU8, substrate=SILICON, film_thickness=6.3e-6)
+    peak = int(np.sum(direct.branch == "loading")) - 1
+    assert output.scalars["peak_interference"] == pytest.approx(direct.interference[peak], rel=1e-12, abs=0)
+    assert output.scalars["residual_interference"] == pytest.approx(
+        direct.residual_interference, rel=1e-12, abs=0
+    )
+    np.testing.assert_allclose(output.dataset["approach"], direct.interference, rtol=1e-12, atol=0)
+    # maps at 0, 200, ..., 1000 uN on loading and 800, ..., 0 uN on unloading (paper 002 Figs. 8-9)
+    forces = np.round(output.dataset["map_force"].values * 1e6).astype(int)
+    assert list(forces) == [0, 200, 400, 600, 800, 1000, 800, 600, 400, 200, 0]
+    assert float(output.dataset["von_mises"].isel(map=5).max()) == pytest.approx(
+        output.scalars["max_von_mises_at_peak"], rel=1e-6
+    )
+
+
+STUDY_HEAD = """
+[study]
+name = "bad asperity"
+[topographies.rough]
+generate = "gaussian_random"
+shape = 16
+size = "5 um"
+rms_height = "10 nm"
+correlation_length = "1 um"
+[[analysis]]
+name = "kke"
+model = "asperity"
+material = "SU-8"
+"""
+
+
+@pytest.mark.parametrize(
+    ("lines", "field", "words"),
+    [
+        (
+            'surface = "rough"\nm0 = "0.002 um^2"\nm2 = 0.002\nm4 = "0.017 1/um^2"',
+            "analysis[0] (kke)",
+            "found surface, m0, m2, m4",
+        ),
+        ("", "analysis[0] (kke)", "found none"),
+        ('m0 = "-0.002 um^2"\nm2 = 0.002\nm4 = "0.017 1/um^2"', "analysis[0] (kke).m0", "must be positive"),
+    ],
+    ids=["surface-and-moments", "neither", "negative-m0"],
+)
+def test_validation_names_the_field(tmp_path, cli, lines, field, words):
+    path = tmp_path / "bad.toml"
+    path.write_text(STUDY_HEAD + lines + "\n")
+    with pytest.raises(StudyError) as caught:
+        load_study(path)
+    [(where, problem, fix)] = caught.value.problems
+    assert where == field
+    assert words in problem and fix
+    status, _, err = cli("validate", path)
+    assert status == 2 and field in err and words in err
+
+
+def test_load_unload_refuses_map_loads_that_are_not_targets(tmp_path):
+    path = tmp_path / "bad.toml"
+    path.write_text(
+        STUDY_HEAD.replace('model = "asperity"\nmaterial = "SU-8"\n', 'model = "load_unload"\n')
+        + 'surface = "rough"\nmaterial = "SU-8"\npeak_force = "1000 uN"\nvon_mises_loads = ["250 uN"]\n'
+    )
+    with pytest.raises(StudyError, match=r"von_mises_loads \[250\.0\] uN are not among the load targets"):
+        load_study(path)
+
+
+def test_a_curve_needs_max_force_and_nominal_area_together():
+    kind = get_kind("asperity")
+    with pytest.raises(ValueError, match="both max_force and nominal_area"):
+        kind.parameters.model_validate(
+            {"m0": "0.002 um^2", "m2": 0.002, "m4": "0.017 1/um^2", "material": "SU-8", "max_force": "1 mN"}
+        )
