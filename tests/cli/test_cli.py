@@ -135,6 +135,13 @@ def test_demo_runs_the_embedded_study_and_writes_its_report(capsys, tmp_path):
     assert len(contact) == 5 and fractions == sorted(fractions)  # the area grows with the load
     afm = next(row for row in rows if row["analysis"] == "afm_scan")
     assert float(afm["size_x [m]"]) == pytest.approx(600e-9)  # the scan's size, from its file
+    friction = [row for row in rows if row["analysis"] == "paper000_friction"]
+    assert [row["sample"] for row in friction] == ["Ra 1.45 nm", "Ra 1.49 nm", "Ra 1.7 nm"]
+    assert all(0 < float(row["mu"]) < 5 for row in friction)
+    with (tmp_path / "tables" / "paper002_kke_paper002.csv").open() as handle:
+        paper002 = {row["quantity"]: row for row in csv.DictReader(handle)}
+    for quantity in ("summit_radius", "summit_height_std", "critical_interference", "plasticity_index"):
+        assert abs(float(paper002[quantity]["relative_deviation"])) < 5e-3  # paper 002's printed values
     for name in ("contact_contact", "contact_von_mises", "contact_area_load", "afm_scan_psd"):
         assert (tmp_path / "figures" / f"{name}.png").read_bytes().startswith(PNG_MAGIC)
     report = (tmp_path / "report.html").read_text()
