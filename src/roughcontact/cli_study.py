@@ -67,9 +67,22 @@ def run_and_report(study, output: Path, *, progress: bool, **options) -> int:
     return finish(Path(output).expanduser().resolve(), summary)
 
 
+def _quiet_dask(verbose: int) -> None:
+    """Keep Dask's INFO lines (cluster start and close) off the console unless -vv."""
+    import logging
+
+    import distributed  # noqa: F401  (sets its loggers' levels when imported: override them after)
+
+    if verbose < 2:
+        for name in ("distributed", "distributed.scheduler", "distributed.nanny", "distributed.worker"):
+            logging.getLogger(name).setLevel(logging.WARNING)
+
+
 def _run(args: argparse.Namespace) -> int:
     from .study import load_study
 
+    if args.workers is not None or args.scheduler is not None:
+        _quiet_dask(args.verbose)
     study = load_study(args.study)
     print("\n".join(_describe(study)))
     return run_and_report(

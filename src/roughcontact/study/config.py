@@ -120,8 +120,12 @@ class Case:
 
     @property
     def case_id(self) -> str:
-        """File name stem of the case: ``0007-3fa2c91be0``."""
-        return f"{self.index:04d}-{self.key[:10]}"
+        """File name stem of the case: the first 16 hex digits of its key.
+
+        Only the key, not the position in the sweep: extending an axis leaves the other cases'
+        names, and so their stored results, as they were.
+        """
+        return self.key[:16]
 
     @property
     def seeds(self) -> dict[str, int]:

@@ -7,14 +7,19 @@ need not see the user's files), generated ones as their specifications and are b
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Any
+import threading
+from collections import OrderedDict
+from dataclasses import dataclass
 
 from ..materials import Material
 from ..topography import Topography
 from .schema import Combined, FileTopography, Paper002Island, SelfAffine, Strict
 
 _GENERATOR_ONLY = {"generate", "ra"}
+
+_CACHE_SIZE = 8
+_cache: OrderedDict[str, Topography] = OrderedDict()
+_cache_lock = threading.Lock()
 
 
 def build_topography(spec: Strict, resolve) -> Topography:
@@ -60,22 +65,34 @@ class CaseInputs:
     specs: dict[str, Strict]
     files: dict[str, Topography]
     materials: dict[str, Material]
-    _built: dict[str, Topography] = field(default_factory=dict, repr=False)
+
+    def identity(self, name: str) -> str:
+        """Return a text that is equal for two cases exactly when they build the same topography ``name``."""
+        spec = self.specs[name]
+        parts = [self.identity(part) for part in spec.combine] if isinstance(spec, Combined) else []
+        return spec.model_dump_json() + "".join(parts)
 
     def topography(self, name: str) -> Topography:
-        """Return the topography called ``name`` (built once per case)."""
-        if name not in self._built:
-            if name in self.files:
-                self._built[name] = self.files[name]
-            else:
-                self._built[name] = build_topography(self.specs[name], self.topography)
-        return self._built[name]
+        """Return the topography called ``name``.
+
+        Generated topographies are kept for the next cases in this process (the last
+        :data:`_CACHE_SIZE`, by specification and seed): a load sweep builds its surface once.
+        Topographies are immutable, so sharing them between cases is safe.
+        """
+        if name in self.files:
+            return self.files[name]
+        key = self.identity(name)
+        with _cache_lock:
+            if key in _cache:
+                _cache.move_to_end(key)
+                return _cache[key]
+        surface = build_topography(self.specs[name], self.topography)
+        with _cache_lock:
+            _cache[key] = surface
+            while len(_cache) > _CACHE_SIZE:
+                _cache.popitem(last=False)
+        return surface
 
     def material(self, name: str | None) -> Material | None:
         """Return the material called ``name`` (None for None: a rigid body)."""
         return None if name is None else self.materials[name]
-
-    def __getstate__(self) -> dict[str, Any]:
-        state = dict(self.__dict__)
-        state["_built"] = {}
-        return state

@@ -45,6 +45,16 @@ def context(analysis: StoredAnalysis, analyses: list[StoredAnalysis]) -> FigureC
     return FigureContext(analysis.name, analysis.compare, others)
 
 
+def _current(record: CaseRecord | None, case_id: str) -> CaseRecord | None:
+    """Return the record if it is this case's (key starts with the id) and complete, else None (pending)."""
+    if record is None or not str(record.data.get("key", "")).startswith(case_id):
+        return None
+    path = record.fields_path
+    if record.done and path is not None and not path.exists():
+        return None  # its fields are gone (a purged worker storage): the runner would redo it
+    return record
+
+
 def read_study(folder: str | Path) -> tuple[dict[str, Any], list[StoredAnalysis]]:
     """Read ``OUT/study.json`` and every stored record of the study in ``folder``."""
     from .kinds import get_kind
@@ -64,7 +74,9 @@ def read_study(folder: str | Path) -> tuple[dict[str, Any], list[StoredAnalysis]
         compare = entry.get("compare")
         if compare is not None and kind.compare is not None:
             compare = kind.compare.model_validate(compare)
-        records = tuple(read_record(folder, entry["name"], case) for case in entry["cases"])
+            kept = {k: folder / v for k, v in compare if isinstance(v, Path) and not v.is_absolute()}
+            compare = compare.model_copy(update=kept)  # measured data kept in OUT/inputs/
+        records = tuple(_current(read_record(folder, entry["name"], case), case) for case in entry["cases"])
         analyses.append(
             StoredAnalysis(
                 entry["name"],
@@ -102,7 +114,10 @@ def result_rows(analyses: list[StoredAnalysis]) -> list[dict[str, Any]]:
                 if axis not in ("sample", "replicate"):
                     row[_header(axis, axis_units.get(axis) or units.get(axis))] = value
             for name, value in record.scalars.items():
-                row[_header(name, units.get(name))] = value
+                header = _header(name, units.get(name))
+                if header in row:  # a swept key that is also a result (mean_pressure): keep both
+                    header = _header(f"{name} (result)", units.get(name))
+                row[header] = value
             row["seconds"] = record.data.get("seconds")
             row["error"] = record.data.get("error") or ""
             rows.append(row)

@@ -57,14 +57,20 @@ def write_dataset(path: Path, dataset) -> None:
     solves. Data NetCDF3 cannot hold (64-bit integers beyond 32 bits, say) goes to NetCDF4 through
     h5netcdf. ``xarray.open_dataset`` reads either.
     """
+    import dask
+
     path.parent.mkdir(parents=True, exist_ok=True)
     handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".part")
     os.close(handle)
     try:
-        try:
-            dataset.to_netcdf(temporary, engine="scipy")
-        except (ValueError, TypeError, OverflowError):
-            dataset.to_netcdf(temporary, engine="h5netcdf")
+        # xarray takes a Dask lock for writing, from the scheduler when a distributed client is
+        # active: a round trip per file, and an error once the client is closed. The data are numpy
+        # arrays written by one thread, so the local, synchronous scheduler's lock is the right one.
+        with dask.config.set(scheduler="synchronous"):
+            try:
+                dataset.to_netcdf(temporary, engine="scipy")
+            except (ValueError, TypeError, OverflowError):
+                dataset.to_netcdf(temporary, engine="h5netcdf")
         os.replace(temporary, path)
     except BaseException:
         Path(temporary).unlink(missing_ok=True)

@@ -97,8 +97,14 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
         tolerance=parameters.tolerance,
     )
     scalars = result.scalars() | {"contact_modulus": result.contact_modulus}
-    dataset = result.to_xarray().drop_vars(["displacement"])
-    dataset.attrs = {}
+    axes = ("x", "y")[: surface.dim]
+    dataset = xr.Dataset(
+        {
+            "pressure": (axes, result.pressure, {"units": "Pa"}),
+            "gap": (axes, result.gap, {"units": "m"}),
+        },
+        coords={a: (a, c, {"units": "m"}) for a, c in zip(axes, surface.coordinates(), strict=True)},
+    )
     if parameters.stress_depths and surface.dim == 2:
         stress = subsurface_stress(
             result.pressure,
