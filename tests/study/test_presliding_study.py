@@ -1,0 +1,190 @@
+"""The ``presliding`` study kind and paper 001's example study (examples/paper001.toml), at a reduced size.
+
+The example is shrunk to a 128 px field (8.6 um pixels), a 40 px window, two cycles of 12 steps per
+stroke and three cases (HDPE at 25 and 75 mN, POM at 25 mN) so it runs in a few seconds.
+"""
+
+import math
+import re
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from roughcontact.materials import Material
+from roughcontact.models import paper001
+from roughcontact.study import load_study
+from roughcontact.study.config import StudyError
+from roughcontact.study.inputs import build_topography
+from roughcontact.study.kinds.presliding import KIND
+from roughcontact.study.run import make_task
+from roughcontact.study.store import read_table
+
+MEASURED = "paper001_measured_loop.csv"
+SMALL = {
+    "shape = 256": "shape = 128",
+    "window = 64 ": "window = 40 ",
+    "cycles = 4 ": "cycles = 2 ",
+    "steps_per_stroke = 24": "steps_per_stroke = 12",
+    'sample = ["HDPE", "HDPE", "HDPE", "POM", "POM", "POM"]': 'sample = ["HDPE", "HDPE", "POM"]',
+    'surface = ["hdpe_ball", "hdpe_ball", "hdpe_ball", "pom_ball", "pom_ball", "pom_ball"]': (
+        'surface = ["hdpe_ball", "hdpe_ball", "pom_ball"]'
+    ),
+    'material = ["hdpe", "hdpe", "hdpe", "pom", "pom", "pom"]': 'material = ["hdpe", "hdpe", "pom"]',
+    'normal_force = ["25 mN", "50 mN", "75 mN", "25 mN", "50 mN", "75 mN"]': (
+        'normal_force = ["25 mN", "75 mN", "25 mN"]'
+    ),
+    'stroke = ["2.805 um", "2.943 um", "3.697 um", "2.700 um", "3.370 um", "4.264 um"]': (
+        'stroke = ["2.805 um", "3.697 um", "2.700 um"]'
+    ),
+    "friction_coefficient = [0.153, 0.146, 0.129, 0.108, 0.104, 0.099]": (
+        "friction_coefficient = [0.153, 0.129, 0.108]"
+    ),
+}
+POINTS = ("A", "B", "C")
+
+
+def small_study(shrunk, folder):
+    """Copy examples/paper001.toml (and its measured loop) into ``folder`` at the reduced size."""
+    return shrunk("paper001.toml", folder, SMALL, copy=(MEASURED,))
+
+
+def test_example_runs_end_to_end(cli, shrunk, tmp_path):
+    study = small_study(shrunk, tmp_path)
+    out = tmp_path / "out"
+    status, stdout, stderr = cli("run", study, "-o", out, "--no-progress")
+    assert status == 0, stderr
+    assert "3 cases run, 0 reused, 0 failed" in stdout
+
+    rows = read_table(out / "results.csv")
+    assert [(r["status"], r["sample"]) for r in rows] == [("done", "HDPE"), ("done", "HDPE"), ("done", "POM")]
+    for row, force, stroke, mu in zip(
+        rows, (25e-3, 75e-3, 25e-3), (2.805e-6, 3.697e-6, 2.7e-6), (0.153, 0.129, 0.108), strict=True
+    ):
+        assert float(row["normal_force [N]"]) == pytest.approx(force)
+        # the last loop spans the stroke and slides at mu F0 (both directions), as the path prescribes
+        assert float(row["stroke_from_loop [m]"]) == pytest.approx(stroke, rel=1e-9)
+        assert float(row["mu_from_loop"]) == pytest.approx(mu, rel=1e-3)
+        k = [float(row[f"K_L_{p} [N/m]"]) for p in POINTS]
+        assert all(math.isfinite(v) and v > 0 for v in k)
+        assert k[0] > k[1] > k[2]  # stiffness falls from A to C as the slip zone grows (paper sec. 5)
+        mindlin = [float(row[f"K_L_{p}_mindlin_johnson [N/m]"]) for p in POINTS]
+        printed = [float(row[f"K_L_{p}_mindlin_printed [N/m]"]) for p in POINTS]
+        assert printed == pytest.approx([4 * m for m in mindlin], rel=1e-12)  # the printed G_s is 4 G*
+        assert mindlin[1] / mindlin[0] == pytest.approx((0.5 / 0.75) ** (1 / 3), rel=1e-12)  # eq. 12
+        assert int(row["steps"]) == 2 * 2 * 12
+        assert float(row["window_size [m]"]) == pytest.approx(40 * 1.1e-3 / 128)
+
+    table = read_table(out / "tables" / "presliding_lateral_stiffness.csv")
+    assert [r["case"] for r in table] == [r["case"] for r in rows]
+    for entry, row in zip(table, rows, strict=True):
+        for p in POINTS:
+            assert float(entry[f"K_L_{p} [N/m]"]) == float(row[f"K_L_{p} [N/m]"])
+            ratio = float(row[f"K_L_{p} [N/m]"]) / float(row[f"K_L_{p}_mindlin_johnson [N/m]"])
+            assert float(entry[f"K_L_{p} / mindlin_johnson"]) == pytest.approx(ratio, rel=1e-12)
+
+    measured = read_table(out / "tables" / "presliding_measured_loop.csv")
+    assert measured[0]["source"] == f"measured: {MEASURED}"
+    # the synthetic loop was built with Table 1's HDPE 25 mN inputs (its header)
+    assert float(measured[0]["stroke [m]"]) == pytest.approx(2.805e-6, rel=2e-3)
+    assert float(measured[0]["mu"]) == pytest.approx(0.153, rel=2e-3)
+    assert [m["source"] for m in measured[1:]] == [f"simulated: case {rows[0]['case']}"]
+
+    for name in ("loops", "stick_slip", "lateral_stiffness"):
+        assert (out / "figures" / f"presliding_{name}.png").stat().st_size > 10_000
+    report = (out / "report.html").read_text()
+    assert report.count("data:image/png;base64") == 3  # the three figures, embedded
+    assert "<h3>lateral stiffness</h3>" in report and "<h3>measured loop</h3>" in report
+
+    data = xr.load_dataset(next((out / "cases" / "presliding").glob("*.nc")))
+    assert list(data["point"].values.astype(str)) == list(POINTS)
+    assert data["normalised_shear"].shape == (3, 40, 40)
+    assert data["displacement"].size == 2 * 2 * 12 + 1 == data["force"].size
+    shear = data["normalised_shear"].values
+    assert np.nanmax(shear) <= 1 + 1e-5 and np.isfinite(shear).any()
+    # NaN outside the contact: the maps cover the contact of the normal solve (to the pixels the
+    # normal-tangential coupling may add or take away)
+    contact = (data["pressure"].values > 0).sum()
+    assert np.abs(np.isfinite(shear).sum(axis=(1, 2)) - contact).max() <= 0.05 * contact
+
+
+def test_scalars_equal_a_direct_paper001_call(shrunk, tmp_path):
+    study = load_study(small_study(shrunk, tmp_path))
+    case = study.cases[0]
+    spec = case.topographies["hdpe_ball"]
+    task = make_task(study, case)
+    scalars = KIND.run(task.parameters, task.inputs).scalars
+
+    ball = build_topography(spec, None)
+    assert ball.shape == (128, 128) and spec.seed == case.seeds["hdpe_ball"]
+    direct = paper001.presliding_case(
+        paper001.central_window(ball, 40),
+        Material(0.98e9, 0.5, "HDPE"),
+        Material(130e9, 0.28, "silicon wafer"),
+        25e-3,
+        stroke=2.805e-6,
+        friction_coefficient=0.153,
+        radius=5e-3,
+        cycles=2,
+        steps_per_stroke=12,
+        coupling=True,
+        tolerance=1e-8,
+    ).scalars()
+    pairs = {
+        "normal_force": "F0 [N]",
+        "stroke": "stroke [m]",
+        "friction_coefficient": "mu",
+        "contact_area": "contact_area [m^2]",
+        "patches": "patches",
+        "mu_from_loop": "mu_from_loop",
+        "energy_last_loop": "energy_last_loop [J]",
+        "window_size": "note_window [m]",
+        "pixel": "note_pixel [m]",
+        "steps": "note_steps",
+    }
+    for p in POINTS:
+        pairs[f"K_L_{p}"] = f"K_L_{p} [N/m]"
+        for reading in ("johnson", "printed"):
+            pairs[f"K_L_{p}_mindlin_{reading}"] = f"K_L_{p}_mindlin_{reading} [N/m]"
+    for ours, theirs in pairs.items():
+        assert scalars[ours] == pytest.approx(direct[theirs], rel=1e-10, abs=0.0), ours
+
+
+@pytest.mark.parametrize(
+    ("replacements", "field", "message"),
+    [
+        (
+            {"friction_coefficient = [0.153, 0.146, 0.129,": "friction_coefficient = [0.153, 0.0, 0.129,"},
+            "friction_coefficient",
+            "greater than 0",
+        ),
+        (
+            {"friction_coefficient = [0.153, 0.146, 0.129,": "friction_coefficient = [-0.15, 0.146, 0.129,"},
+            "friction_coefficient",
+            "greater than 0",
+        ),
+        ({'stroke = ["2.805 um", "2.943 um"': 'stroke = [nan, "2.943 um"'}, "stroke", "not finite"),
+        ({'stroke = ["2.805 um", "2.943 um"': 'stroke = ["inf um", "2.943 um"'}, "stroke", "cannot read"),
+        (
+            {'stroke = ["2.805 um", "2.943 um", "3.697 um", "2.700 um", "3.370 um", "4.264 um"]\n': ""},
+            "stroke",
+            "required but missing",
+        ),
+        (
+            {'displacement_unit = "um"': 'displacement_unit = "mN"'},
+            "compare.displacement_unit",
+            "'mN' is not a unit of length",
+        ),
+        ({'force_unit = "mN"': 'force_unit = "furlong"'}, "compare.force_unit", "unknown unit"),
+    ],
+)
+def test_bad_values_are_refused_naming_the_field(cli, shrunk, tmp_path, replacements, field, message):
+    path = shrunk("paper001.toml", tmp_path, replacements, copy=(MEASURED,))
+    with pytest.raises(StudyError) as caught:
+        load_study(path)
+    problems = [(where, problem) for where, problem, _ in caught.value.problems]
+    named = [problem for where, problem in problems if re.search(rf"\b{re.escape(field)}$", where)]
+    assert named, problems
+    assert any(message in problem for problem in named), named
+    status, _, stderr = cli("validate", path)
+    assert status != 0 and field.rsplit(".", 1)[-1] in stderr
