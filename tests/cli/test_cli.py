@@ -142,6 +142,9 @@ def test_demo_runs_the_embedded_study_and_writes_its_report(capsys, tmp_path):
         paper002 = {row["quantity"]: row for row in csv.DictReader(handle)}
     for quantity in ("summit_radius", "summit_height_std", "critical_interference", "plasticity_index"):
         assert abs(float(paper002[quantity]["relative_deviation"])) < 5e-3  # paper 002's printed values
+    (loop,) = [row for row in rows if row["analysis"] == "paper001_presliding"]
+    assert float(loop["mu_from_loop"]) == pytest.approx(0.1, rel=1e-3)  # the sliding plateau is mu F0
+    assert 0 < float(loop["K_L_C [N/m]"]) < float(loop["K_L_B [N/m]"]) < float(loop["K_L_A [N/m]"])
     for name in ("contact_contact", "contact_von_mises", "contact_area_load", "afm_scan_psd"):
         assert (tmp_path / "figures" / f"{name}.png").read_bytes().startswith(PNG_MAGIC)
     report = (tmp_path / "report.html").read_text()
