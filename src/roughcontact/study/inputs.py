@@ -17,7 +17,8 @@ from .schema import Combined, FileTopography, Paper002Island, SelfAffine, Strict
 
 _GENERATOR_ONLY = {"generate", "ra"}
 
-_CACHE_SIZE = 8
+_CACHE_BYTES = 256 * 2**20
+"""Most bytes of generated heights kept for later cases in one process (e.g. 500 surfaces of 256^2)."""
 _cache: OrderedDict[str, Topography] = OrderedDict()
 _cache_lock = threading.Lock()
 
@@ -75,9 +76,9 @@ class CaseInputs:
     def topography(self, name: str) -> Topography:
         """Return the topography called ``name``.
 
-        Generated topographies are kept for the next cases in this process (the last
-        :data:`_CACHE_SIZE`, by specification and seed): a load sweep builds its surface once.
-        Topographies are immutable, so sharing them between cases is safe.
+        Generated topographies are kept for the next cases in this process, by specification and
+        seed, the least recently used dropped beyond :data:`_CACHE_BYTES`: a load sweep builds
+        each surface once. Topographies are immutable, so sharing them between cases is safe.
         """
         if name in self.files:
             return self.files[name]
@@ -89,7 +90,7 @@ class CaseInputs:
         surface = build_topography(self.specs[name], self.topography)
         with _cache_lock:
             _cache[key] = surface
-            while len(_cache) > _CACHE_SIZE:
+            while sum(t.heights.nbytes for t in _cache.values()) > _CACHE_BYTES and len(_cache) > 1:
                 _cache.popitem(last=False)
         return surface
 
