@@ -11,18 +11,8 @@ import json
 from pathlib import Path
 
 from .cli import _add_material_options, _json_safe, _material, _read, _read_options, _size_argument
+from .friction.winkler_lj import WinklerLJResult
 from .units import format_si, quantity
-
-_UNITS = {
-    "load": "N",
-    "friction": "N",
-    "adhesive_friction": "N",
-    "mechanical_friction": "N",
-    "separation": "m",
-    "approach": "m",
-    "mechanical_force": "N",
-    "adhesive_force": "N",
-}
 
 
 def _model_options(args: argparse.Namespace) -> dict:
@@ -50,7 +40,7 @@ def _model_options(args: argparse.Namespace) -> dict:
 def _print_scalars(title: str, scalars: dict) -> None:
     print(title)
     for key, value in scalars.items():
-        unit = _UNITS.get(key, "")
+        unit = WinklerLJResult.UNITS.get(key, "")
         shown = format_si(value, unit) if unit else f"{value:.6g}"
         print(f"  {key:<24} {shown}")
 

@@ -187,8 +187,20 @@ class WinklerLJResult:
     parameters: dict = field(repr=False)
     topography: Topography = field(repr=False)
 
+    UNITS = {
+        "load": "N",
+        "friction": "N",
+        "adhesive_friction": "N",
+        "mechanical_friction": "N",
+        "separation": "m",
+        "approach": "m",
+        "mechanical_force": "N",
+        "adhesive_force": "N",
+    }
+    """SI units of the dimensional entries of :meth:`scalars`."""
+
     def scalars(self) -> dict[str, float]:
-        """Return the scalar results as a flat dictionary (SI)."""
+        """Return the scalar results as a flat dictionary (SI; units in :attr:`UNITS`)."""
         return {
             "load": self.load,
             "mu": self.mu,

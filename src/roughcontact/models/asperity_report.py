@@ -15,7 +15,7 @@ from ..errors import InputError
 from ..units import format_si
 from .paper002 import ComparisonRow
 
-_UNITS = {
+UNITS = {
     "m0": "m^2",
     "m2": "",
     "m4": "1/m^2",
@@ -30,6 +30,7 @@ _UNITS = {
     "critical_load": "N",
     "plasticity_index": "",
 }
+"""SI units of :meth:`~roughcontact.asperity.parameters.AsperityParameters.to_dict`'s entries."""
 
 
 def _shown(value: float | None, unit: str) -> str:
@@ -41,7 +42,7 @@ def _shown(value: float | None, unit: str) -> str:
 def format_parameters(parameters: AsperityParameters) -> str:
     """Return the asperity parameters as an aligned text table with SI-prefixed units."""
     return "\n".join(
-        f"  {key:<24} {_shown(value, _UNITS[key])}" for key, value in parameters.to_dict().items()
+        f"  {key:<24} {_shown(value, UNITS[key])}" for key, value in parameters.to_dict().items()
     )
 
 

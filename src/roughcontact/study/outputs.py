@@ -133,63 +133,62 @@ def write_results_table(folder: str | Path) -> Path:
     return path
 
 
-def write_tables(folder: str | Path) -> tuple[list[Path], list[str]]:
-    """Write every analysis' derived tables to ``OUT/tables/ANALYSIS_TABLE.csv``.
+def _produce(folder: Path, what: str) -> tuple[list[tuple[str, str, Any]], list[str]]:
+    """Call every analysis' table (``what="table"``) or chosen figure functions on its finished cases.
 
-    Returns the files written and the problems met: a table that fails (measured data that do
-    not match the cases, say) is reported and the others are still written.
+    Returns (analysis, name, product) for each product made, and the problems met: a function
+    that fails (measured data that do not match the cases, say) is reported and the others still
+    run. A function returns None where it has nothing to show (too few cases, say).
     """
-    folder = Path(folder).expanduser().resolve()
     _, analyses = read_study(folder)
-    written, problems = [], []
+    made, problems = [], []
     for analysis in analyses:
         records = analysis.finished
         if not records:
             continue
-        for name, function in analysis.kind.tables.items():
+        kind = analysis.kind
+        functions = kind.tables if what == "table" else {n: kind.figures[n] for n in analysis.figures}
+        for name, function in functions.items():
             try:
-                rows = function(records, context(analysis, analyses))
-            except Exception as error:  # one table's failure must not lose the others
+                product = function(records, context(analysis, analyses))
+            except Exception as error:  # one failure must not lose the others
                 problems.append(f"{analysis.name}/{name}: {type(error).__name__}: {error}")
-                log.warning("table %s of %s failed: %s", name, analysis.name, error)
+                log.warning("%s %s of %s failed: %s", what, name, analysis.name, error)
                 continue
-            if rows:
-                path = folder / "tables" / f"{analysis.name}_{name}.csv"
-                write_table(path, rows)
-                written.append(path)
+            if product is not None and (what != "table" or product):
+                made.append((analysis.name, name, product))
+    return made, problems
+
+
+def write_tables(folder: str | Path) -> tuple[list[Path], list[str]]:
+    """Write every analysis' derived tables to ``OUT/tables/ANALYSIS_TABLE.csv``.
+
+    Returns the files written and the problems met (see :func:`_produce`).
+    """
+    folder = Path(folder).expanduser().resolve()
+    tables, problems = _produce(folder, "table")
+    written = []
+    for analysis, name, rows in tables:
+        path = folder / "tables" / f"{analysis}_{name}.csv"
+        write_table(path, rows)
+        written.append(path)
     return written, problems
 
 
 def draw_figures(folder: str | Path, *, dpi: int = 150) -> tuple[list[Path], list[str]]:
-    """Draw every analysis' figures into ``OUT/figures``; return the files and the problems met.
-
-    A figure that cannot be drawn (too few finished cases, say) is skipped by its function; one
-    that fails is reported in the problems and the others are still drawn.
-    """
+    """Draw every analysis' figures into ``OUT/figures``; return the files and the problems met."""
     import matplotlib
 
     matplotlib.use("Agg")
 
     folder = Path(folder).expanduser().resolve()
-    _, analyses = read_study(folder)
-    written, problems = [], []
-    for analysis in analyses:
-        records = analysis.finished
-        if not records:
-            continue
-        for name in analysis.figures:
-            try:
-                figure = analysis.kind.figures[name](records, context(analysis, analyses))
-            except Exception as error:  # one figure's failure must not lose the others
-                problems.append(f"{analysis.name}/{name}: {type(error).__name__}: {error}")
-                log.warning("figure %s of %s failed: %s", name, analysis.name, error)
-                continue
-            if figure is None:
-                continue
-            path = folder / "figures" / f"{analysis.name}_{name}.png"
-            path.parent.mkdir(parents=True, exist_ok=True)
-            partial = path.with_name(f".{path.name}.part")
-            figure.savefig(partial, dpi=dpi, bbox_inches="tight", format="png")
-            partial.replace(path)
-            written.append(path)
+    figures, problems = _produce(folder, "figure")
+    written = []
+    for analysis, name, figure in figures:
+        path = folder / "figures" / f"{analysis}_{name}.png"
+        path.parent.mkdir(parents=True, exist_ok=True)
+        partial = path.with_name(f".{path.name}.part")
+        figure.savefig(partial, dpi=dpi, bbox_inches="tight", format="png")
+        partial.replace(path)
+        written.append(path)
     return written, problems

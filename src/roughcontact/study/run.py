@@ -78,15 +78,9 @@ def _version() -> str:
     return __version__
 
 
-def execute(task: Task) -> tuple[dict[str, Any], Any]:
-    """Run one case and return its record and its dataset (None if it has none or it went to storage).
-
-    Errors of the case itself are caught and recorded (``status = "failed"`` with the message and
-    the last lines of the traceback); only interruptions (KeyboardInterrupt, SystemExit) propagate.
-    """
-    from .kinds import get_kind
-
-    record: dict[str, Any] = {
+def failed_record(task: Task, error: str | None) -> dict[str, Any]:
+    """Return the record of a case that has not (yet) succeeded: its inputs, no scalars, the error."""
+    return {
         "analysis": task.analysis,
         "case": task.case_id,
         "key": task.key,
@@ -99,12 +93,23 @@ def execute(task: Task) -> tuple[dict[str, Any], Any]:
         "seeds": task.seeds,
         "scalars": {},
         "fields": None,
-        "error": None,
+        "error": error,
         "version": _version(),
-        "host": socket.gethostname(),
-        "pid": os.getpid(),
-        "started": datetime.now(UTC).isoformat(timespec="seconds"),
+        "seconds": None,
     }
+
+
+def execute(task: Task) -> tuple[dict[str, Any], Any]:
+    """Run one case and return its record and its dataset (None if it has none or it went to storage).
+
+    Errors of the case itself are caught and recorded (``status = "failed"`` with the message and
+    the last lines of the traceback); only interruptions (KeyboardInterrupt, SystemExit) propagate.
+    """
+    from .kinds import get_kind
+
+    record = failed_record(task, None)
+    record |= {"host": socket.gethostname(), "pid": os.getpid()}
+    record["started"] = datetime.now(UTC).isoformat(timespec="seconds")
     start = time.perf_counter()
     dataset = None
     try:
@@ -258,24 +263,7 @@ def _on_dask(client, tasks: list[Task]) -> Iterator[tuple[dict, Any]]:
             try:
                 yield future.result()
             except Exception as error:  # the task could not run at all (e.g. its workers kept dying)
-                task = futures[future]
-                record = {
-                    "analysis": task.analysis,
-                    "case": task.case_id,
-                    "key": task.key,
-                    "model": task.kind,
-                    "status": "failed",
-                    "axes": task.axes,
-                    "axes_si": task.axes_si,
-                    "parameters": task.parameters.model_dump(mode="json"),
-                    "seeds": task.seeds,
-                    "scalars": {},
-                    "fields": None,
-                    "error": f"{type(error).__name__}: {error}",
-                    "version": _version(),
-                    "seconds": None,
-                }
-                yield record, None
+                yield failed_record(futures[future], f"{type(error).__name__}: {error}"), None
     finally:
         client.cancel(list(futures))
 

@@ -49,9 +49,10 @@ from pydantic import AfterValidator, Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...asperity.load_unload import LOADING_LAWS
+from ...models import asperity_report
 from ..kind import CaseOutput, CaseParameters, Kind
 from ..schema import Area, Force, InverseArea, MaterialName, Pressure, Strict, TopographyName
-from .common import evenly_chosen
+from .common import curve_dataset, evenly_chosen
 
 
 def _positive(unit: str):
@@ -188,8 +189,6 @@ def _moments(parameters: AsperityParameters, inputs) -> tuple[dict[str, float], 
 
 def run(parameters: AsperityParameters, inputs) -> CaseOutput:
     """Asperity parameters (eqs. 4-9) and, with ``max_force``, the KKE load-unload curve."""
-    import xarray as xr
-
     from ...asperity import gaussian_summits, measured_summits, statistical_load_unload
     from ...asperity.parameters import asperity_parameters
     from ...topography.statistics import mccool_parameters
@@ -247,14 +246,7 @@ def run(parameters: AsperityParameters, inputs) -> CaseOutput:
         "number_of_contacts": ("", "summits in contact"),
         "plastic_fraction": ("", "fraction of the touching summits loaded beyond omega_c"),
     }
-    variables = {"branch": ("point", np.asarray(curve["branch"]).astype(str))}
-    for name, (unit, description) in units.items():
-        variables[name] = (
-            "point",
-            np.asarray(curve[name], dtype=float),
-            {"units": unit, "long_name": description},
-        )
-    dataset = xr.Dataset(variables, attrs={"law": parameters.law, "critical_interference": omega_c})
+    dataset = curve_dataset(curve, units, {"law": parameters.law, "critical_interference": omega_c})
     return CaseOutput(scalars, dataset)
 
 
@@ -377,35 +369,13 @@ def _paper002_table(records, context):
     return rows
 
 
-UNITS = {
-    "m0": "m^2",
-    "m2": "",
-    "m4": "1/m^2",
-    "bandwidth": "",
-    "summit_density": "1/m^2",
-    "summit_radius": "m",
-    "summit_height_std": "m",
-    "summit_mean_offset": "m",
-    "contact_modulus": "Pa",
-    "contact_pressure_factor": "",
-    "critical_interference": "m",
-    "critical_load": "N",
-    "plasticity_index": "",
+UNITS = asperity_report.UNITS | {
     "peak_force": "N",
     "peak_interference": "m",
     "residual_interference": "m",
-    "peak_interference_over_omega_c": "",
-    "residual_interference_over_omega_c": "",
     "peak_contact_area": "m^2",
-    "peak_number_of_contacts": "",
-    "plastic_fraction_at_peak": "",
-    "max_force": "N",
-    "nominal_area": "m^2",
-    "reference_force": "N",
-    "hardness": "Pa",
-    "yield_strength": "Pa",
 }
-"""Scalar (and sweepable parameter) name -> SI unit."""
+"""Scalar name -> SI unit (the parameters' units come from their schema)."""
 
 KIND = Kind(
     name="asperity",

@@ -25,6 +25,30 @@ def grouped(records: Sequence[CaseRecord], key: str = "sample") -> dict[str, lis
     return groups
 
 
+def curve_dataset(curve: dict, variables: dict[str, tuple[str, str]], attrs: dict):
+    """Return a load-unload curve as an ``xarray.Dataset`` on the dimension ``point``.
+
+    Parameters
+    ----------
+    curve : dict
+        ``"branch"`` (loading/unloading per point) and the arrays named in ``variables``.
+    variables : dict
+        Name -> (SI unit, description) of the arrays to keep.
+    attrs : dict
+        Attributes of the dataset.
+    """
+    import xarray as xr
+
+    data = {"branch": ("point", np.asarray(curve["branch"]).astype(str))}
+    for name, (unit, description) in variables.items():
+        data[name] = (
+            "point",
+            np.asarray(curve[name], dtype=float),
+            {"units": unit, "long_name": description},
+        )
+    return xr.Dataset(data, attrs=attrs)
+
+
 def scalar_series(records: Sequence[CaseRecord], *names: str) -> tuple[np.ndarray, ...]:
     """Arrays of the scalars ``names`` over ``records``, ordered by the first of them."""
     values = np.array([[float(r.scalars[name]) for name in names] for r in records], dtype=float)

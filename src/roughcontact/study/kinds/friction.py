@@ -73,6 +73,7 @@ from pydantic import Field, field_validator, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...errors import InputError
+from ...friction.winkler_lj import WinklerLJResult
 from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind
 from ..schema import Force, Length, MaterialName, Pressure, Strict, SurfaceEnergy, Time, TopographyName
 from .common import grouped
@@ -587,15 +588,8 @@ KIND = Kind(
     summary="Winkler-layer Lennard-Jones friction at one load: mu, adhesive and mechanical parts (paper 000)",
     parameters=FrictionParameters,
     run=run,
-    units={
-        "load": "N",
-        "friction": "N",
-        "adhesive_friction": "N",
-        "mechanical_friction": "N",
-        "separation": "m",
-        "approach": "m",
-        "mechanical_force": "N",
-        "adhesive_force": "N",
+    units=WinklerLJResult.UNITS
+    | {
         "crossover_load": "N",
         "load_capacity": "N",
         "contact_modulus": "Pa",

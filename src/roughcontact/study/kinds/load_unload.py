@@ -46,7 +46,7 @@ from pydantic_core import PydanticCustomError
 from ..kind import CaseOutput, CaseParameters, Kind
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
 from .asperity import MeasuredCurve, common_omega_c, curve_of, draw_load_interference, measured_of
-from .common import evenly_chosen
+from .common import curve_dataset, evenly_chosen
 
 MAPS_PER_BRANCH = 6
 """Default number of von Mises maps on loading (evenly spread over the targets; unloading: the same loads)."""
@@ -229,22 +229,13 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
         "plastic_fraction": ("", "fraction of the real contact area at the hardness"),
         "max_pressure": ("Pa", "largest contact pressure"),
     }
-    variables = {"branch": ("point", np.asarray(curve["branch"]).astype(str))}
-    for name, (unit, description) in units.items():
-        variables[name] = (
-            "point",
-            np.asarray(curve[name], dtype=float),
-            {"units": unit, "long_name": description},
-        )
+    attributes = {"stress_depth": parameters.stress_depth, "reference_force": parameters.reference_force}
+    dataset = curve_dataset(curve, units, attributes)
     coarse = [_coarsened(maps[i], surface.coordinates(), parameters.map_points) for i in chosen]
     x, y = coarse[0][1]
-    variables["von_mises"] = (
-        ("map", "x", "y"),
+    dataset["von_mises"] = xr.DataArray(
         np.stack([blocks for blocks, _ in coarse]).astype(np.float32),
-        {"units": "Pa", "long_name": f"von Mises stress at z = {parameters.stress_depth:g} m (block maxima)"},
-    )
-    dataset = xr.Dataset(
-        variables,
+        dims=("map", "x", "y"),
         coords={
             "x": ("x", x, {"units": "m"}),
             "y": ("y", y, {"units": "m"}),
@@ -252,7 +243,10 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
             "map_force": ("map", np.array([compression.steps[i].force for i in chosen]), {"units": "N"}),
             "map_branch": ("map", compression.branch[chosen].astype(str)),
         },
-        attrs={"stress_depth": parameters.stress_depth, "reference_force": parameters.reference_force},
+        attrs={
+            "units": "Pa",
+            "long_name": f"von Mises stress at z = {parameters.stress_depth:g} m (block maxima)",
+        },
     )
     return CaseOutput(scalars, dataset)
 

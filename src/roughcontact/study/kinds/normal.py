@@ -143,40 +143,38 @@ def _contact_maps(records, context):
     return figure
 
 
-def _area_load(records, context):
+def _curve_of_cases(records, x: str, y: str, scales: tuple[float, float], labels: tuple[str, str, str]):
+    """One scalar against another over the cases, a line per sample (None for fewer than 2 cases)."""
     from ...plotting.study import new_figure
 
     if len(records) < 2:
         return None
     figure, axes = new_figure(1, 1)
     ax = axes[0][0]
-    for sample, group in grouped(records).items():
-        pressure, fraction = scalar_series(group, "mean_pressure", "contact_fraction")
-        ax.plot(pressure / 1e6, 100 * fraction, "o-", label=sample or None)
-    ax.set_xlabel("nominal mean pressure (MPa)")
-    ax.set_ylabel("real contact area (% of nominal)")
-    ax.set_title("real contact area against load")
-    if any(grouped(records)):
+    groups = grouped(records)
+    for sample, group in groups.items():
+        abscissa, ordinate = scalar_series(group, x, y)
+        ax.plot(abscissa * scales[0], ordinate * scales[1], "o-", label=sample or None)
+    ax.set_xlabel(labels[0])
+    ax.set_ylabel(labels[1])
+    ax.set_title(labels[2])
+    if any(groups):
         ax.legend()
     return figure
+
+
+def _area_load(records, context):
+    labels = (
+        "nominal mean pressure (MPa)",
+        "real contact area (% of nominal)",
+        "real contact area against load",
+    )
+    return _curve_of_cases(records, "mean_pressure", "contact_fraction", (1e-6, 100.0), labels)
 
 
 def _load_approach(records, context):
-    from ...plotting.study import new_figure
-
-    if len(records) < 2:
-        return None
-    figure, axes = new_figure(1, 1)
-    ax = axes[0][0]
-    for sample, group in grouped(records).items():
-        approach, force = scalar_series(group, "approach", "force")
-        ax.plot(approach * 1e9, force * 1e6, "o-", label=sample or None)
-    ax.set_xlabel("approach (nm)")
-    ax.set_ylabel("force (µN)")
-    ax.set_title("load against approach")
-    if any(grouped(records)):
-        ax.legend()
-    return figure
+    labels = ("approach (nm)", "force (µN)", "load against approach")
+    return _curve_of_cases(records, "approach", "force", (1e9, 1e6), labels)
 
 
 def _von_mises(records, context):
