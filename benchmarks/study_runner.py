@@ -234,7 +234,7 @@ def dask_run(study_path: Path, folder: Path, tolerance: float, repeats: int) -> 
         threads_per_worker=1,
         processes=True,
         host="127.0.0.1",
-        dashboard_address=None,
+        dashboard_address=":0",
         silence_logs=logging.CRITICAL,
     ) as cluster:
         started = time.perf_counter() - start

@@ -243,7 +243,7 @@ def dask_client(workers: int | None = None, scheduler: str | None = None):
             threads_per_worker=1,
             processes=True,
             host="127.0.0.1",
-            dashboard_address=None,
+            dashboard_address=":0",  # any free port: never clash with a running cluster
             silence_logs=40,
         ) as cluster,
         Client(cluster) as client,
