@@ -96,6 +96,30 @@ def _run(args: argparse.Namespace) -> int:
     )
 
 
+def _attribute_notes(schema) -> dict[str, str]:
+    """First line of each entry of the numpy-style ``Attributes`` section of a schema's docstring."""
+    import inspect
+
+    notes: dict[str, str] = {}
+    lines = inspect.cleandoc(schema.__doc__ or "").splitlines()
+    inside, names = False, []
+    for line in lines:
+        if line.strip() == "Attributes":
+            inside = True
+            continue
+        if not inside or set(line.strip()) <= {"-"}:
+            continue
+        if line and not line.startswith(" "):
+            if " : " not in line and not line.rstrip().isidentifier():
+                break  # the next section
+            names = [n.strip() for n in line.split(" : ")[0].split(",")]
+        elif line.strip() and names:
+            for name in names:
+                notes.setdefault(name, line.strip())
+            names = []
+    return notes
+
+
 def describe_kind(kind) -> list[str]:
     """Lines describing a study model: its keys (type, default), figures, tables and comparison keys."""
     from pydantic_core import PydanticUndefined
@@ -103,6 +127,7 @@ def describe_kind(kind) -> list[str]:
     from .study.schema import unit_of
 
     lines = [f"{kind.name}: {kind.summary}", "  keys:"]
+    notes = _attribute_notes(kind.parameters)
     for name, info in kind.parameters.model_fields.items():
         default = (
             "required"
@@ -111,7 +136,8 @@ def describe_kind(kind) -> list[str]:
         )
         unit = kind.units.get(name) or unit_of(kind.parameters, name)
         shown = f"{name} [{unit}]" if unit else name
-        lines.append(f"    {shown:<28} {default:<22} {info.description or ''}".rstrip())
+        note = info.description or notes.get(name, "")
+        lines.append(f"    {shown:<28} {default:<22} {note}".rstrip())
     lines.append(f"  figures: {', '.join(kind.figures) or '-'}")
     if kind.tables:
         lines.append(f"  tables: {', '.join(kind.tables)}")
