@@ -239,8 +239,28 @@ def _problems(error: ValidationError, prefix: str, schema: type[BaseModel] | Non
             shown = "" if repr(value) in problem else shown
         else:
             problem = item["msg"].removeprefix("Value error, ").rstrip(".") + "."
+            fix = fix or _generic_fix(item["type"], context)
         problems.append((where, problem + shown, fix))
     return problems
+
+
+def _generic_fix(kind: str, context: dict) -> str | None:
+    """Return a fix for pydantic's own checks (bounds, choices, types), which carry none."""
+    bounds = {"greater_than": "gt", "greater_than_equal": "ge", "less_than": "lt", "less_than_equal": "le"}
+    if kind in bounds:
+        words = {"gt": "above", "ge": "at least", "lt": "below", "le": "at most"}[bounds[kind]]
+        return f"give a value {words} {context.get(bounds[kind])}."
+    if kind == "literal_error":
+        return f"use one of {context.get('expected')}."
+    if kind in ("int_parsing", "int_type", "int_from_float"):
+        return "give a whole number, e.g. 3."
+    if kind in ("float_parsing", "float_type", "finite_number"):
+        return "give a finite number, e.g. 0.3."
+    if kind in ("bool_parsing", "bool_type"):
+        return "write true or false."
+    if kind in ("string_type", "list_type", "tuple_type", "dict_type"):
+        return "see roughcontact models NAME for the key's type."
+    return None
 
 
 def _collect(problems: list, prefix: str, schema: type[BaseModel], raw: Any):
