@@ -80,7 +80,7 @@ from roughcontact.analytic import mindlin  # noqa: E402
 from roughcontact.contact import solve_normal  # noqa: E402
 from roughcontact.contact.paths import stroke_path  # noqa: E402
 from roughcontact.contact.tangential import solve_tangential  # noqa: E402
-from roughcontact.materials import Material, contact_modulus  # noqa: E402
+from roughcontact.materials import Material, contact_modulus, johnson_shear_modulus  # noqa: E402
 from roughcontact.topography import generate  # noqa: E402
 
 # Case 1
@@ -437,7 +437,7 @@ def loop_case(n: int, args, available: dict) -> dict:
         "cycles": args.cycles,
         "tolerance": tol,
         "delta_0_um": 1e6
-        * mindlin.sliding_displacement(MU_LOOP, F0, a, mindlin.tangential_compliance_modulus(pair, pair)),
+        * mindlin.sliding_displacement(MU_LOOP, F0, a, johnson_shear_modulus(pair, pair)),
         "codes": {"ours [A]": ours_a, "ours [P]": ours_p},
     }
     if available.get("tamaas"):

@@ -16,7 +16,7 @@ from roughcontact.analytic import mindlin
 from roughcontact.contact import solve_normal
 from roughcontact.contact.paths import stroke_path, symmetric_path
 from roughcontact.contact.tangential import solve_tangential
-from roughcontact.materials import Material, contact_modulus
+from roughcontact.materials import Material, contact_modulus, johnson_shear_modulus
 from roughcontact.topography import generate
 
 RADIUS = 10e-3
@@ -31,7 +31,7 @@ def _case(n, nu=0.0, window=4.0):
     size = window * a
     topography = generate.sphere((n, n), (size, size), radius=RADIUS, kind="paraboloid")
     normal = solve_normal(topography, material, counter_body=material, force=FORCE, tolerance=1e-10)
-    g_star = mindlin.tangential_compliance_modulus(material, material)
+    g_star = johnson_shear_modulus(material, material)
     return material, normal, a, g_star
 
 

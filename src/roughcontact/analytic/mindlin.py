@@ -76,11 +76,9 @@ __all__ = [
     "masing_displacement",
     "masing_force",
     "paper001_mindlin",
-    "paper001_shear_modulus",
     "shear_traction",
     "sliding_displacement",
     "stick_radius",
-    "tangential_compliance_modulus",
     "tangential_displacement",
     "tangential_force",
 ]
@@ -90,57 +88,6 @@ NORMALISATIONS = ("johnson", "printed")
 
 
 # --- moduli ---------------------------------------------------------------------------------------
-
-
-def tangential_compliance_modulus(material: Material, counter: Material | None = None) -> float:
-    r"""Johnson's composite shear modulus G* of the Mindlin contact [Pa].
-
-    .. math:: \frac{1}{G^*} = \frac{2 - \nu_1}{G_1} + \frac{2 - \nu_2}{G_2}
-
-    This is the modulus that goes with the prefactors 3/16 (delta_0) and 8 (K_L) of this module.
-
-    Parameters
-    ----------
-    material : Material
-        First body (e.g. the ball).
-    counter : Material or None
-        Second body; ``None`` is a rigid counter-body (contributes 0).
-
-    Returns
-    -------
-    float
-        G* [Pa].
-
-    References
-    ----------
-    Johnson (1985), sec. 7.2, eq. 7.42. Same as :func:`roughcontact.materials.johnson_shear_modulus`.
-    """
-    return johnson_shear_modulus(material, counter)
-
-
-def paper001_shear_modulus(material: Material, counter: Material | None = None) -> float:
-    r"""Paper 001's effective shear modulus G_s (text below eq. 10) [Pa]; G_s = 4 G*.
-
-    .. math:: \frac{1}{G_s} = \sum_i \frac{(2 - \nu_i)(1 + \nu_i)}{2 E_i} = \sum_i \frac{2 - \nu_i}{4 G_i}
-
-    Parameters
-    ----------
-    material : Material
-        First body.
-    counter : Material or None
-        Second body; ``None`` is rigid.
-
-    Returns
-    -------
-    float
-        G_s [Pa].
-
-    References
-    ----------
-    Seed paper 001, below eq. 10. Same as
-    :func:`roughcontact.materials.effective_shear_modulus_paper001`.
-    """
-    return effective_shear_modulus_paper001(material, counter)
 
 
 def hertz_contact_radius(normal_force: float, radius: float, contact_modulus: float) -> float:
@@ -289,7 +236,7 @@ def sliding_displacement(
     mu, normal_force, contact_radius : float
         As in :func:`stick_radius`.
     shear_modulus : float
-        Johnson's G* [Pa] (:func:`tangential_compliance_modulus`).
+        Johnson's G* [Pa] (:func:`roughcontact.materials.johnson_shear_modulus`).
 
     Returns
     -------
@@ -729,7 +676,7 @@ def paper001_mindlin(
     _positive(mu, "mu", "0.153")
     a = hertz_contact_radius(normal_force, radius, contact_modulus(material, counter))
     if normalisation == "johnson":
-        g = tangential_compliance_modulus(material, counter)
+        g = johnson_shear_modulus(material, counter)
     else:
-        g = paper001_shear_modulus(material, counter)
+        g = effective_shear_modulus_paper001(material, counter)
     return Paper001Mindlin(float(mu), float(normal_force), a, g, normalisation)
