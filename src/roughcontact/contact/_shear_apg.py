@@ -113,7 +113,7 @@ import numpy as np
 
 from ..errors import ConvergenceError, InputError
 from . import _shear_kernels as kernels
-from ._shear_cg import _RIM, ShearResult
+from ._shear_cg import _RIM, ShearResult, check_below_sliding, optimality
 
 _JIT = dict(cache=True, nogil=True)
 
@@ -379,14 +379,7 @@ def solve_increment(
     capacity_sum = float(c.sum())
     target = (0.0, 0.0)
     if load_control:
-        capacity = capacity_sum * pixel_area
-        if np.hypot(*force) >= capacity * (1 - 1e-12):
-            raise InputError(
-                "force",
-                f"|F_t| = {np.hypot(*force):.6g} N reaches the sliding force mu F_0 = {capacity:.6g} N: "
-                "the contact slides as a whole (no partial-slip solution).",
-                "keep the tangential force below mu F_0, or prescribe a displacement path.",
-            )
+        check_below_sliding(force, c, pixel_area)
         target = (float(force[0]) / pixel_area, float(force[1]) / pixel_area)
     multiplier = [0.0, 0.0]
 
@@ -431,24 +424,7 @@ def solve_increment(
             delta = kernels.interior_mean(qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), _RIM)
         np.copyto(wx, sx)
         np.copyto(wy, sy)
-        _, violation, weight, ss, n_contact, _, _, _, _ = kernels.classify(
-            qx.ravel(),
-            qy.ravel(),
-            c_flat,
-            wx.ravel(),
-            wy.ravel(),
-            delta[0],
-            delta[1],
-            _RIM,
-            state,
-            flat["zx"],
-            flat["zy"],
-            flat["nx"],
-            flat["ny"],
-            flat["bend"],
-        )
-        scale = np.sqrt(ss / n_contact) + np.hypot(*delta) if n_contact else 0.0
-        residual = violation / weight / scale if scale > 0.0 and weight > 0.0 else 0.0
+        residual = optimality(qx, qy, c_flat, wx, wy, delta, state, flat).residual
         if residual <= tolerance:
             stick = (state == kernels.STICK).reshape(shape)
             return ShearResult(qx, qy, wx, wy, delta, stick, iteration, float(residual))

@@ -111,6 +111,44 @@ def _give_back(qx, qy, bound, stick, target, pixel_area):
         _project(qx, qy, bound)
 
 
+def check_below_sliding(force, bound: np.ndarray, pixel_area: float) -> None:
+    """Refuse a tangential force at or above mu F_0 = sum(mu p) A_px: the contact slides as a whole."""
+    capacity = float(bound.sum()) * pixel_area
+    if np.hypot(*force) >= capacity * (1 - 1e-12):
+        raise InputError(
+            "force",
+            f"|F_t| = {np.hypot(*force):.6g} N reaches the sliding force mu F_0 = {capacity:.6g} N: "
+            "the contact slides as a whole (no partial-slip solution).",
+            "keep the tangential force below mu F_0, or prescribe a displacement path.",
+        )
+
+
+@dataclass
+class Optimality:
+    """The optimality check of an iterate (:func:`optimality`): the residual and what the CG reuses."""
+
+    residual: float
+    changed: bool
+    n_stick: int
+    stick_sum: tuple[float, float]
+    z_norm: float
+
+
+def optimality(qx, qy, c_flat, sx, sy, delta, state, flat) -> Optimality:
+    """Classify stick and slip, fill ``flat``'s directions and return the scale-free residual.
+
+    ``sx, sy`` is C q + e; the residual is that of the module docstring (the same for both
+    increment solvers, so a tolerance means the same).
+    """
+    changed, violation, weight, ss, n_contact, n_stick, zsx, zsy, z_norm = kernels.classify(
+        qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), delta[0], delta[1], _RIM, state,
+        flat["zx"], flat["zy"], flat["nx"], flat["ny"], flat["bend"],
+    )  # fmt: skip
+    scale = np.sqrt(ss / n_contact) + np.hypot(*delta) if n_contact else 0.0
+    residual = violation / weight / scale if scale > 0.0 and weight > 0.0 else 0.0
+    return Optimality(float(residual), bool(changed), int(n_stick), (zsx, zsy), z_norm)
+
+
 def _stick_sum(z, state):
     """Sum of z over the stick set."""
     return float(z[state == kernels.STICK].sum())
@@ -163,14 +201,7 @@ def solve_increment(
     ex, ey = offset
     load_control = force is not None
     if load_control:
-        capacity = c.sum() * pixel_area
-        if np.hypot(*force) >= capacity * (1 - 1e-12):
-            raise InputError(
-                "force",
-                f"|F_t| = {np.hypot(*force):.6g} N reaches the sliding force mu F_0 = {capacity:.6g} N: "
-                "the contact slides as a whole (no partial-slip solution).",
-                "keep the tangential force below mu F_0, or prescribe a displacement path.",
-            )
+        check_below_sliding(force, c, pixel_area)
     if initial is None:
         qx, qy = np.zeros(shape), np.zeros(shape)
     else:
@@ -191,24 +222,8 @@ def solve_increment(
         sy += ey
         if load_control:
             delta = kernels.interior_mean(qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), _RIM)
-        changed, violation, weight, ss, n_contact, n_stick, zsx, zsy, z_norm = kernels.classify(
-            qx.ravel(),
-            qy.ravel(),
-            c_flat,
-            sx.ravel(),
-            sy.ravel(),
-            delta[0],
-            delta[1],
-            _RIM,
-            state,
-            flat["zx"],
-            flat["zy"],
-            flat["nx"],
-            flat["ny"],
-            flat["bend"],
-        )
-        scale = np.sqrt(ss / n_contact) + np.hypot(*delta) if n_contact else 0.0
-        residual = violation / weight / scale if scale > 0.0 and weight > 0.0 else 0.0
+        check = optimality(qx, qy, c_flat, sx, sy, delta, state, flat)
+        residual, n_stick, (zsx, zsy), z_norm = check.residual, check.n_stick, check.stick_sum, check.z_norm
         if residual <= tolerance:
             stick = (state == kernels.STICK).reshape(shape)
             return ShearResult(qx, qy, sx, sy, delta, stick, iteration, float(residual))
@@ -228,7 +243,7 @@ def solve_increment(
                 z_norm = removed
             else:
                 z_norm -= mean_x * _stick_sum(flat["zx"], state) + mean_y * _stick_sum(flat["zy"], state)
-        beta = 0.0 if changed or previous_norm == 0.0 else z_norm / previous_norm
+        beta = 0.0 if check.changed or previous_norm == 0.0 else z_norm / previous_norm
         previous_norm = z_norm
         kernels.update_direction(tx.ravel(), ty.ravel(), dx, dy, flat["nx"], flat["ny"], state, beta)
         along_z = float(np.dot(flat["zx"], tx.ravel()) + np.dot(flat["zy"], ty.ravel()))
