@@ -148,6 +148,21 @@ def unit_factor(unit: str) -> tuple[Decimal, Dimension]:
     return factor, (dims[0], dims[1], dims[2])
 
 
+def split_quantity(text: str, *, field: str = "value") -> tuple[str, str]:
+    """Split ``"20 nm"`` into its number and unit as written: ``("20", "nm")``; ``"3"`` gives ``("3", "")``.
+
+    Raises
+    ------
+    UnitError
+        ``text`` does not start with a number.
+    """
+    match = _QUANTITY_RE.match(text)
+    if match is None:
+        raise UnitError(field, f"cannot read {text!r} as a number with a unit.", "write e.g. '1 uN'.")
+    number, unit = match.groups()
+    return number, unit
+
+
 def _dimension_name(dimension: Dimension) -> str:
     names = [name for name, dim in DIMENSIONS.items() if dim == dimension]
     return " or ".join(names) if names else f"m^{dimension[0]} kg^{dimension[1]} s^{dimension[2]}"

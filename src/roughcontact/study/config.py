@@ -52,7 +52,6 @@ import hashlib
 import itertools
 import json
 import math
-import re
 import tomllib
 import typing
 from dataclasses import dataclass
@@ -65,15 +64,12 @@ from pydantic import BaseModel, ValidationError
 from ..errors import InputError
 from ..materials import MATERIALS, Material
 from ..topography import Topography
-from ..units import unit_factor
+from ..units import split_quantity, unit_factor
 from .kind import CaseParameters, Kind
 from .schema import Combined, FileTopography, MaterialSpec, Reference, Strict, topography_schema
 
 ANALYSIS_KEYS = ("name", "model", "sweep", "zip", "figures", "compare")
 """Keys of an ``[[analysis]]`` table that are not parameters of its model."""
-
-_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
-
 
 class StudyError(InputError):
     """A study file with problems; ``problems`` lists each as (field, problem, fix)."""
@@ -282,10 +278,8 @@ def _split_quantity(value: Any, where: str) -> tuple[float, str]:
         raise InputError(where, f"expected a number or a quantity, got {value!r}.", "e.g. '1 uN' or 3.")
     if isinstance(value, int | float):
         return float(value), ""
-    match = _QUANTITY.match(str(value))
-    if match is None:
-        raise InputError(where, f"cannot read {value!r} as a number with a unit.", "e.g. '1 uN'.")
-    return float(match.group(1)), match.group(2)
+    number, unit = split_quantity(str(value), field=where)
+    return float(number), unit
 
 
 def _range_values(spec: dict, where: str) -> list:
