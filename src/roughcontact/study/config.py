@@ -53,7 +53,6 @@ import itertools
 import json
 import math
 import tomllib
-import typing
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -62,14 +61,23 @@ import numpy as np
 from pydantic import BaseModel, ValidationError
 
 from ..errors import InputError
-from ..materials import MATERIALS, Material
+from ..materials import MATERIALS, Material, get_material
 from ..topography import Topography
 from ..units import split_quantity, unit_factor
 from .kind import CaseParameters, Kind
-from .schema import Combined, FileTopography, MaterialSpec, Reference, Strict, topography_schema
+from .schema import (
+    Combined,
+    FileTopography,
+    MaterialSpec,
+    Reference,
+    Strict,
+    field_metadata,
+    topography_schema,
+)
 
 ANALYSIS_KEYS = ("name", "model", "sweep", "zip", "figures", "compare")
 """Keys of an ``[[analysis]]`` table that are not parameters of its model."""
+
 
 class StudyError(InputError):
     """A study file with problems; ``problems`` lists each as (field, problem, fix)."""
@@ -385,15 +393,11 @@ def expand(sweep: dict, zipped: dict, where: str) -> list[dict[str, Any]]:
 
 def references(schema: type[BaseModel], kind: str) -> list[str]:
     """Names of the fields of ``schema`` that refer to a topography or a material (``kind``)."""
-    found = []
-    for name, info in schema.model_fields.items():
-        annotations = [info.annotation, *typing.get_args(info.annotation)]
-        metadata = list(info.metadata)
-        for annotation in annotations:
-            metadata += list(getattr(annotation, "__metadata__", ()))
-        if any(isinstance(m, Reference) and m.kind == kind for m in metadata):
-            found.append(name)
-    return found
+    return [
+        name
+        for name in schema.model_fields
+        if any(isinstance(m, Reference) and m.kind == kind for m in field_metadata(schema, name))
+    ]
 
 
 def _derived_seed(study_seed: int, topography: str, sample: str, replicate: int) -> int:
@@ -503,9 +507,10 @@ class _Builder:
         """Return a study material (with this case's overrides) or a library material by name."""
         if name in raw_tables:
             return self._material(name, raw_tables[name], f"materials.{name}")
-        key = " ".join(str(name).replace("_", " ").lower().split())
-        if key in MATERIALS:
-            return MATERIALS[key]
+        try:
+            return get_material(name)
+        except InputError:
+            pass
         known = sorted(raw_tables) + [m.name for m in MATERIALS.values()]
         close = difflib.get_close_matches(str(name), known, n=1)
         fix = f"did you mean {close[0]!r}? " if close else ""

@@ -10,6 +10,7 @@ it rather than a silently ignored line.
 from __future__ import annotations
 
 import dataclasses
+import typing
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
@@ -94,25 +95,26 @@ Pressure = Annotated[float, _si("pressure")]
 Force = Annotated[float, _si("force")]
 Time = Annotated[float, _si("time")]
 SurfaceEnergy = Annotated[float, _si("surface_energy")]
-PositiveInt = Annotated[int, Field(gt=0)]
-Fraction = Annotated[float, Field(ge=0.0, le=1.0)]
 LengthPerAxis = Annotated[float | tuple[float, float], _si_per_axis("length")]
 GridShape = Annotated[tuple[int, ...], BeforeValidator(_grid_shape)]
 
 
-def unit_of(schema: type[BaseModel], name: str) -> str | None:
-    """Return the SI unit of the quantity field ``name`` of ``schema`` (``"m"``, ``"Pa"``, ...), else None."""
-    import typing
-
+def field_metadata(schema: type[BaseModel], name: str) -> list[Any]:
+    """Return the ``Annotated`` metadata of field ``name``, also inside ``X | None`` and ``list[X]``."""
     info = schema.model_fields.get(name)
     if info is None:
-        return None
+        return []
     metadata = list(info.metadata)
     for annotation in (info.annotation, *typing.get_args(info.annotation)):
         metadata += list(getattr(annotation, "__metadata__", ()))
         for inner in typing.get_args(annotation):  # list[Length]
             metadata += list(getattr(inner, "__metadata__", ()))
-    for item in metadata:
+    return metadata
+
+
+def unit_of(schema: type[BaseModel], name: str) -> str | None:
+    """Return the SI unit of the quantity field ``name`` of ``schema`` (``"m"``, ``"Pa"``, ...), else None."""
+    for item in field_metadata(schema, name):
         dimension = getattr(getattr(item, "func", None), "dimension", None)
         if dimension is not None:
             return SI_UNITS[dimension]
