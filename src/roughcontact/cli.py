@@ -10,12 +10,12 @@ from __future__ import annotations
 import argparse
 import json
 import logging
-import math
 import sys
 from collections.abc import Sequence
 from pathlib import Path
 
 from . import __version__
+from ._json import json_ready
 from .errors import ConvergenceError, InputError
 from .topography import Topography
 from .units import format_si
@@ -137,16 +137,6 @@ def format_description(description: dict) -> str:
     return "\n".join(lines)
 
 
-def _json_safe(value):
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    if isinstance(value, dict):
-        return {k: _json_safe(v) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [_json_safe(v) for v in value]
-    return value
-
-
 def _inspect(args: argparse.Namespace) -> int:
     from .topography.io import list_channels
 
@@ -167,7 +157,7 @@ def _inspect(args: argparse.Namespace) -> int:
         for c in channels
     ]
     if args.json:
-        print(json.dumps(_json_safe(description), indent=2))
+        print(json.dumps(json_ready(description), indent=2))
         return 0
     print(f"file           {args.file}  ({description['format']})")
     print("channels")
@@ -264,7 +254,7 @@ def _contact(args: argparse.Namespace) -> int:
             plot_contact_overview(result).savefig(args.output / "contact.png", dpi=args.dpi)
     if args.json:
         scalars["contact_modulus"] = result.contact_modulus
-        print(json.dumps(_json_safe(scalars), indent=2))
+        print(json.dumps(json_ready(scalars), indent=2))
         return 0
     units = {"force": "N", "mean_pressure": "Pa", "approach": "m", "contact_area": "m^2", "mean_gap": "m"}
     units["max_pressure"] = "Pa"

@@ -10,7 +10,8 @@ import argparse
 import json
 from pathlib import Path
 
-from .cli import _add_material_options, _json_safe, _material, _read, _read_options
+from ._json import json_ready
+from .cli import _add_material_options, _material, _read, _read_options
 from .errors import InputError
 from .units import format_si, quantity
 
@@ -136,7 +137,7 @@ def _asperity(args: argparse.Namespace) -> int:
     if args.output is not None:
         document["files"] = _write(args, curves, compression, measured, parameters, document)
     if args.json:
-        print(json.dumps(_json_safe(document), indent=2))
+        print(json.dumps(json_ready(document), indent=2))
         return 0
     print(
         f"asperity parameters ({sample.name} against {counter.name if counter else 'a rigid flat'}, "
@@ -214,7 +215,7 @@ def _write(args, curves, compression, measured, parameters, document) -> list[st
         fig, _ = plot_von_mises_maps(compression, wanted)
         fig.savefig(out / "von_mises.png", dpi=args.dpi)
         written.append(str(out / "von_mises.png"))
-    (out / "asperity.json").write_text(json.dumps(_json_safe(document), indent=2))
+    (out / "asperity.json").write_text(json.dumps(json_ready(document), indent=2))
     return [*written, str(out / "asperity.json")]
 
 

@@ -10,7 +10,8 @@ import argparse
 import json
 from pathlib import Path
 
-from .cli import _add_material_options, _json_safe, _material, _read, _read_options, _size_argument
+from ._json import json_ready
+from .cli import _add_material_options, _material, _read, _read_options, _size_argument
 from .friction.winkler_lj import WinklerLJResult
 from .units import format_si, quantity
 
@@ -81,7 +82,7 @@ def _friction(args: argparse.Namespace) -> int:
             figure, _ = plot_friction_vs_load(sweep, crossover=crossover)
             figure.savefig(args.output / "friction_vs_load.png", dpi=args.dpi)
     if args.json:
-        print(json.dumps(_json_safe(document), indent=2))
+        print(json.dumps(json_ready(document), indent=2))
         return 0
     changed = model.readings.changed()
     _print_scalars(
@@ -155,7 +156,7 @@ def _friction_compare(args: argparse.Namespace) -> int:
             "pearson_p": comparison.pearson_p,
             "alpha": comparison.alpha,
         }
-        print(json.dumps(_json_safe(document), indent=2))
+        print(json.dumps(json_ready(document), indent=2))
         return 0
     source = "measured scans" if args.sample else "synthetic scans (paper 000 case, seeded)"
     print(f"simulated ({source}) vs measured ({args.measured}), t-test threshold p > {args.alpha}")

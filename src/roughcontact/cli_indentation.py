@@ -11,7 +11,7 @@ import argparse
 import json
 from pathlib import Path
 
-from .cli import _json_safe
+from ._json import json_ready
 from .errors import InputError
 from .units import format_si
 
@@ -70,7 +70,7 @@ def _nanoindent(args: argparse.Namespace) -> int:
         document = {"file": str(args.file), **scalars}
         if args.plot is not None:
             document["plot"] = str(args.plot)
-        print(json.dumps(_json_safe(document), indent=2))
+        print(json.dumps(json_ready(document), indent=2))
         return 0
     per = "s" if result.time_basis == "time" else "sample"
     units = {"creep_rate": f"m/{per}", "unloading_rate": f"N/{per}"}

@@ -15,7 +15,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .cli import _add_material_options, _json_safe, _material, _read, _read_options
+from ._json import json_ready
+from .cli import _add_material_options, _material, _read, _read_options
 from .errors import InputError
 from .units import format_si, quantity
 
@@ -113,10 +114,10 @@ def _report(cases: list, out: Path, measured, json_output: bool) -> int:
         slug = case.label.replace(" ", "_").replace(",", "")
         _write_loop(out / f"loop_{slug}.csv", case.result)
         rows.append(case.scalars())
-    (out / "presliding.json").write_text(json.dumps(_json_safe(rows), indent=2))
+    (out / "presliding.json").write_text(json.dumps(json_ready(rows), indent=2))
     figures = _figures(out, cases, measured)
     if json_output:
-        print(json.dumps(_json_safe(rows)))
+        print(json.dumps(json_ready(rows)))
         return 0
     header = ("case", "mu", "stroke", "K_L A", "K_L B", "K_L C", "Mindlin A (Johnson)")
     print(f"{header[0]:<18} {header[1]:>6} {header[2]:>10} " + " ".join(f"{h:>12}" for h in header[3:]))
@@ -200,7 +201,7 @@ def _loop_analysis(args: argparse.Namespace) -> int:
     analysis = analyse_loop(loop.displacement, loop.force, normal_force)
     scalars = analysis.scalars()
     if args.json:
-        print(json.dumps(_json_safe(scalars)))
+        print(json.dumps(json_ready(scalars)))
     else:
         print(f"stroke d_s      {format_si(analysis.stroke, 'm')}")
         print(f"friction mu     {analysis.mu:.4f}")

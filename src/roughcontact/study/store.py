@@ -22,13 +22,13 @@ from __future__ import annotations
 import csv
 import io
 import json
-import math
 import os
 import tempfile
 from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
+from .._json import json_ready
 from .kind import CaseRecord
 
 CASES = "cases"
@@ -75,21 +75,6 @@ def write_dataset(path: Path, dataset) -> None:
     except BaseException:
         Path(temporary).unlink(missing_ok=True)
         raise
-
-
-def json_ready(value: Any) -> Any:
-    """Return ``value`` with numpy scalars as Python numbers, tuples as lists, non-finite floats as None."""
-    if isinstance(value, dict):
-        return {str(k): json_ready(v) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [json_ready(v) for v in value]
-    if hasattr(value, "item") and getattr(value, "ndim", 1) == 0:
-        value = value.item()
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    if isinstance(value, Path):
-        return str(value)
-    return value
 
 
 def dumps(value: Any) -> str:
