@@ -275,8 +275,9 @@ def _demo(args: argparse.Namespace) -> int:
     from .cli_study import demo_study, run_and_report
     from .study import load_study
 
-    study = load_study(demo_study())
-    print(f"demo study {study.name!r}: {len(study.cases)} cases ({demo_study()})")
+    path = demo_study()
+    study = load_study(path)
+    print(f"demo study {study.name!r}: {len(study.cases)} cases ({path})")
     return run_and_report(study, args.output, progress=sys.stderr.isatty(), resume=True)
 
 

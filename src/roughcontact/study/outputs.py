@@ -15,7 +15,7 @@ from typing import Any
 
 from ..errors import InputError
 from .kind import CaseRecord, FigureContext, Kind
-from .store import read_record, write_table
+from .store import read_record, replacing, write_table
 
 log = logging.getLogger(__name__)
 
@@ -186,9 +186,7 @@ def draw_figures(folder: str | Path, *, dpi: int = 150) -> tuple[list[Path], lis
     written = []
     for analysis, name, figure in figures:
         path = folder / "figures" / f"{analysis}_{name}.png"
-        path.parent.mkdir(parents=True, exist_ok=True)
-        partial = path.with_name(f".{path.name}.part")
-        figure.savefig(partial, dpi=dpi, bbox_inches="tight", format="png")
-        partial.replace(path)
+        with replacing(path) as temporary:
+            figure.savefig(temporary, dpi=dpi, bbox_inches="tight", format="png")
         written.append(path)
     return written, problems

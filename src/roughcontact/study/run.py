@@ -22,6 +22,7 @@ cases' fields there (a path they share, e.g. a cluster file system) and send bac
 from __future__ import annotations
 
 import contextlib
+import hashlib
 import os
 import platform
 import socket
@@ -438,7 +439,7 @@ def write_summary_files(study: Study, folder: Path, summary: RunSummary, started
         "packages": {"numpy": numpy.__version__, "scipy": scipy.__version__, "xarray": xarray.__version__},
         "command": sys.argv,
         "study_file": str(study.path),
-        "study_sha256": __import__("hashlib").sha256(study.text.encode()).hexdigest(),
+        "study_sha256": hashlib.sha256(study.text.encode()).hexdigest(),
         "input_files": study.files,
         "study_seed": study.seed,
         "seeds": {f"{c.analysis}/{c.case_id}": c.seeds for c in study.cases if c.seeds},

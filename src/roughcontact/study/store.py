@@ -19,12 +19,13 @@ exists, and that is written after its ``.nc``.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import io
 import json
 import os
 import tempfile
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -34,19 +35,30 @@ from .kind import CaseRecord
 CASES = "cases"
 
 
-def write_atomically(path: Path, data: bytes | str) -> None:
-    """Write ``data`` to ``path`` through a temporary file and a rename (never half a file)."""
+@contextlib.contextmanager
+def replacing(path: Path) -> Iterator[Path]:
+    """Yield a temporary path beside ``path``; rename it into place on success, remove it on failure.
+
+    So a killed or failed write leaves either the whole file or none (a ``.*.part`` leftover of a
+    killed process is removed by :func:`clean_partial_files`).
+    """
     path.parent.mkdir(parents=True, exist_ok=True)
     handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".part")
+    os.close(handle)
     try:
-        with os.fdopen(handle, "wb") as stream:
-            stream.write(data.encode() if isinstance(data, str) else data)
-            stream.flush()
-            os.fsync(stream.fileno())
+        yield Path(temporary)
         os.replace(temporary, path)
     except BaseException:
         Path(temporary).unlink(missing_ok=True)
         raise
+
+
+def write_atomically(path: Path, data: bytes | str) -> None:
+    """Write ``data`` to ``path`` through a temporary file and a rename (never half a file)."""
+    with replacing(path) as temporary, temporary.open("wb") as stream:
+        stream.write(data.encode() if isinstance(data, str) else data)
+        stream.flush()
+        os.fsync(stream.fileno())
 
 
 def write_dataset(path: Path, dataset) -> None:
@@ -59,22 +71,14 @@ def write_dataset(path: Path, dataset) -> None:
     """
     import dask
 
-    path.parent.mkdir(parents=True, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".part")
-    os.close(handle)
-    try:
-        # xarray takes a Dask lock for writing, from the scheduler when a distributed client is
-        # active: a round trip per file, and an error once the client is closed. The data are numpy
-        # arrays written by one thread, so the local, synchronous scheduler's lock is the right one.
-        with dask.config.set(scheduler="synchronous"):
-            try:
-                dataset.to_netcdf(temporary, engine="scipy")
-            except (ValueError, TypeError, OverflowError):
-                dataset.to_netcdf(temporary, engine="h5netcdf")
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
+    # xarray takes a Dask lock for writing, from the scheduler when a distributed client is
+    # active: a round trip per file, and an error once the client is closed. The data are numpy
+    # arrays written by one thread, so the local, synchronous scheduler's lock is the right one.
+    with replacing(path) as temporary, dask.config.set(scheduler="synchronous"):
+        try:
+            dataset.to_netcdf(temporary, engine="scipy")
+        except (ValueError, TypeError, OverflowError):
+            dataset.to_netcdf(temporary, engine="h5netcdf")
 
 
 def dumps(value: Any) -> str:
