@@ -75,7 +75,8 @@ def _inputs(args: argparse.Namespace) -> dict:
 
 
 def _asperity(args: argparse.Namespace) -> int:
-    from .asperity import gaussian_summits, measured_summits, statistical_load_unload
+    from .asperity import statistical_load_unload
+    from .asperity.greenwood_williamson import summits_of
     from .asperity.parameters import asperity_parameters
     from .models import asperity_report, paper002
     from .topography.statistics import mccool_parameters
@@ -98,15 +99,11 @@ def _asperity(args: argparse.Namespace) -> int:
             raise InputError(
                 "--area", "a load-unload curve needs the nominal area.", "e.g. --area '25 um x 25 um'."
             )
-        mccool = mccool_parameters(**moments)
-        if args.distribution == "measured":
-            if inputs["topography"] is None:
-                raise InputError(
-                    "--distribution", "'measured' needs a topography FILE.", "pass FILE or 'gaussian'."
-                )
-            summits = measured_summits(inputs["topography"], mccool=mccool)
-        else:
-            summits = gaussian_summits(mccool)
+        if args.distribution == "measured" and inputs["topography"] is None:
+            raise InputError(
+                "--distribution", "'measured' needs a topography FILE.", "pass FILE or 'gaussian'."
+            )
+        summits = summits_of(mccool_parameters(**moments), args.distribution, inputs["topography"])
         statistical = statistical_load_unload(
             summits,
             contact_modulus=parameters.contact_modulus,
@@ -122,7 +119,7 @@ def _asperity(args: argparse.Namespace) -> int:
         curves[f"statistical ({args.law})"] = statistical.curve()
         document["statistical"] = {
             "law": args.law,
-            "peak_interference": float(statistical.approach[args.steps - 1]),
+            "peak_interference": float(statistical.approach[statistical.peak]),
             "residual_interference": statistical.residual_interference,
         }
     compression = _island(args, inputs, sample) if args.bem else None

@@ -87,3 +87,20 @@ def test_statistical_model_refuses_loads_beyond_the_fits():
         statistical_load_unload(summits, **run, max_force=1e-3, law="jackson_green")
     with pytest.raises(InputError, match="reference_force"):
         statistical_load_unload(summits, **run, max_force=1e-3, reference_force=2e-3)
+
+
+def test_summits_of_names_the_distribution_it_cannot_build():
+    from roughcontact.asperity.greenwood_williamson import summits_of
+
+    mccool = mccool_parameters(**paper002.MOMENTS)
+    assert summits_of(mccool, "gaussian").kind == "gaussian"
+    with pytest.raises(InputError, match="'measured' needs a topography"):
+        summits_of(mccool, "measured")
+    with pytest.raises(InputError, match="unknown distribution 'normal'"):
+        summits_of(mccool, "normal")
+
+
+def test_the_peak_is_the_last_loading_point():
+    curve = paper002.statistical_curve()
+    assert curve.peak == int(np.sum(curve.branch == "loading")) - 1
+    assert curve.force[curve.peak] == pytest.approx(paper002.PEAK_FORCE, rel=1e-6)

@@ -182,6 +182,40 @@ def measured_summits(topography: Topography, *, mccool: McCoolParameters | None 
     )
 
 
+def summits_of(mccool: McCoolParameters, distribution: str, topography: Topography | None = None):
+    """Return the summit population of the spectral moments: Gaussian heights, or a scan's measured ones.
+
+    Parameters
+    ----------
+    mccool : McCoolParameters
+        Density, radius and height deviation of the summits (paper 002 eqs. 4-5).
+    distribution : {"gaussian", "measured"}
+        :func:`gaussian_summits`, or :func:`measured_summits` of ``topography``.
+    topography : Topography, optional
+        Needed for ``"measured"``.
+
+    Returns
+    -------
+    SummitDistribution
+
+    Raises
+    ------
+    InputError
+        ``"measured"`` without a topography, or an unknown distribution.
+    """
+    if distribution == "gaussian":
+        return gaussian_summits(mccool)
+    if distribution != "measured":
+        raise InputError(
+            "distribution", f"unknown distribution {distribution!r}.", "use 'gaussian' or 'measured'."
+        )
+    if topography is None:
+        raise InputError(
+            "distribution", "'measured' needs a topography.", "give a topography, or 'gaussian'."
+        )
+    return measured_summits(topography, mccool=mccool)
+
+
 def gw_integral(order: float, h) -> np.ndarray:
     r"""Greenwood-Williamson integral of the standard Gaussian, F_n(h) [-].
 

@@ -90,6 +90,11 @@ class StatisticalLoadUnload:
     critical_load: float
     law: str
 
+    @property
+    def peak(self) -> int:
+        """Index of the peak load: the last point of the loading branch."""
+        return int(np.flatnonzero(self.branch == "loading")[-1])
+
     def curve(self) -> dict[str, np.ndarray]:
         """Return the curve as a dict (the keys of ``LoadUnloadResult.curve()`` plus more), SI."""
         return {

@@ -189,7 +189,8 @@ def _moments(parameters: AsperityParameters, inputs) -> tuple[dict[str, float], 
 
 def run(parameters: AsperityParameters, inputs) -> CaseOutput:
     """Asperity parameters (eqs. 4-9) and, with ``max_force``, the KKE load-unload curve."""
-    from ...asperity import gaussian_summits, measured_summits, statistical_load_unload
+    from ...asperity import statistical_load_unload
+    from ...asperity.greenwood_williamson import summits_of
     from ...asperity.parameters import asperity_parameters
     from ...topography.statistics import mccool_parameters
 
@@ -205,13 +206,8 @@ def run(parameters: AsperityParameters, inputs) -> CaseOutput:
     scalars = found.to_dict()
     if parameters.max_force is None:
         return CaseOutput(scalars)
-    mccool = mccool_parameters(**moments)
-    if parameters.distribution == "measured":
-        summits = measured_summits(surface, mccool=mccool)
-    else:
-        summits = gaussian_summits(mccool)
     statistical = statistical_load_unload(
-        summits,
+        summits_of(mccool_parameters(**moments), parameters.distribution, surface),
         contact_modulus=found.contact_modulus,
         hardness=sample.hardness if parameters.hardness is None else parameters.hardness,
         poissons_ratio=sample.poissons_ratio,
@@ -225,7 +221,7 @@ def run(parameters: AsperityParameters, inputs) -> CaseOutput:
         steps=parameters.steps,
     )
     curve = statistical.curve()
-    peak = parameters.steps - 1  # the last point of the loading branch
+    peak = statistical.peak
     omega_c = found.critical_interference
     scalars |= {
         "peak_force": float(curve["force"][peak]),
