@@ -247,3 +247,17 @@ def test_fill_undefined_profile_and_all_nan():
     with pytest.raises(InputError) as info:
         fill_undefined(np.full((4, 4), np.nan), field="channel")
     assert info.value.field == "channel"
+
+
+def test_scale_to_ra_sets_ra_exactly_and_refuses_a_flat_surface():
+    from roughcontact.topography.generate import self_affine
+    from roughcontact.topography.process import scale_to_ra
+    from roughcontact.topography.statistics import ra, rq
+
+    rough = self_affine((64, 64), 1e-6, hurst=0.8, rms_height=2e-9, seed=4)
+    scaled = scale_to_ra(rough, 1.45e-9)
+    assert ra(scaled) == pytest.approx(1.45e-9, rel=1e-12)
+    assert rq(scaled) / ra(scaled) == pytest.approx(rq(rough) / ra(rough), rel=1e-12)
+    flat = rough.with_heights(np.zeros(rough.shape), step="flat")
+    with pytest.raises(InputError, match="Ra"):
+        scale_to_ra(flat, 1e-9)

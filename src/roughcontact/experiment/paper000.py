@@ -21,7 +21,7 @@ from ..friction.readings import Readings
 from ..materials import get_material
 from ..topography import Topography
 from ..topography.generate import self_affine, sphere_with_roughness
-from ..topography.statistics import ra
+from ..topography.process import scale_to_ra
 from .compare import simulate_mu
 
 PAPER000_SAMPLES: Mapping[str, float] = {"Ra 1.45 nm": 1.45e-9, "Ra 1.49 nm": 1.49e-9, "Ra 1.7 nm": 1.7e-9}
@@ -97,9 +97,7 @@ def paper000_scans(roughness: float, *, count: int = 7, shape: int = 256, seed: 
     scans = []
     for i in range(count):
         scan = self_affine((shape, shape), shape * PIXEL, hurst=0.8, rms_height=roughness, seed=seed + i)
-        scans.append(
-            scan.with_heights(scan.heights * (roughness / ra(scan)), step=f"scaled to Ra {roughness:g} m")
-        )
+        scans.append(scale_to_ra(scan, roughness))
     return scans
 
 

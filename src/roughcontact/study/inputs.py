@@ -41,11 +41,9 @@ def build_topography(spec: Strict, resolve) -> Topography:
     shape, size = options.pop("shape"), options.pop("size")
     surface = getattr(generate, spec.generate)(shape, size, **options)
     if isinstance(spec, SelfAffine) and spec.ra is not None:
-        from ..topography.statistics import ra
+        from ..topography.process import scale_to_ra
 
-        surface = surface.with_heights(
-            surface.heights * (spec.ra / ra(surface)), step=f"scaled to Ra {spec.ra:g} m"
-        )
+        surface = scale_to_ra(surface, spec.ra)
     return surface
 
 

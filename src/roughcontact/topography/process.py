@@ -91,6 +91,22 @@ def fill_undefined(heights: np.ndarray, *, field: str = "heights") -> np.ndarray
 _DETREND_MODES = ("mean", "plane", "curvature")
 
 
+def scale_to_ra(topography: Topography, ra: float) -> Topography:
+    """Return the topography with its heights scaled so that its Ra is exactly ``ra`` [m].
+
+    Paper 000 gives its samples by Ra; the generators set the rms height, so a generated surface is
+    scaled afterwards (the shape of its height distribution, and so Rq / Ra, is kept).
+    """
+    from .statistics import ra as arithmetic_mean_deviation
+
+    current = arithmetic_mean_deviation(topography)
+    if not (math.isfinite(ra) and ra > 0 and current > 0):
+        raise InputError(
+            "ra", f"cannot scale Ra {current:g} m to {ra!r}.", "give a positive Ra of a rough surface."
+        )
+    return topography.with_heights(topography.heights * (ra / current), step=f"scaled to Ra {ra:g} m")
+
+
 def _normalised_coordinates(topography: Topography, *, scale: float | None = None) -> list[np.ndarray]:
     """Centred grid coordinates divided by ``scale`` (default: each axis' own size), for conditioning."""
     grids = topography.meshgrid()
