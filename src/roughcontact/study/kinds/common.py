@@ -25,6 +25,13 @@ def grouped(records: Sequence[CaseRecord], key: str = "sample") -> dict[str, lis
     return groups
 
 
+def grid(topography) -> tuple[tuple[str, ...], dict]:
+    """Return the dimension names (``("x",)`` or ``("x", "y")``) and the xarray coordinates [m] of a grid."""
+    axes = ("x", "y")[: topography.dim]
+    coordinates = {a: (a, c, {"units": "m"}) for a, c in zip(axes, topography.coordinates(), strict=True)}
+    return axes, coordinates
+
+
 def curve_dataset(curve: dict, variables: dict[str, tuple[str, str]], attrs: dict):
     """Return a load-unload curve as an ``xarray.Dataset`` on the dimension ``point``.
 

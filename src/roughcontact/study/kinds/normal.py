@@ -21,7 +21,7 @@ from pydantic_core import PydanticCustomError
 
 from ..kind import CaseOutput, CaseParameters, Kind
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
-from .common import evenly_chosen, grouped, scalar_series
+from .common import evenly_chosen, grid, grouped, scalar_series
 
 
 class NormalParameters(CaseParameters):
@@ -97,13 +97,13 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
         tolerance=parameters.tolerance,
     )
     scalars = result.scalars() | {"contact_modulus": result.contact_modulus}
-    axes = ("x", "y")[: surface.dim]
+    axes, coordinates = grid(surface)
     dataset = xr.Dataset(
         {
             "pressure": (axes, result.pressure, {"units": "Pa"}),
             "gap": (axes, result.gap, {"units": "m"}),
         },
-        coords={a: (a, c, {"units": "m"}) for a, c in zip(axes, surface.coordinates(), strict=True)},
+        coords=coordinates,
     )
     if parameters.stress_depths and surface.dim == 2:
         stress = subsurface_stress(

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..kind import CaseOutput, CaseParameters, Kind
 from ..schema import TopographyName
-from .common import evenly_chosen
+from .common import evenly_chosen, grid
 
 
 class StatisticsParameters(CaseParameters):
@@ -38,8 +38,7 @@ def run(parameters: StatisticsParameters, inputs) -> CaseOutput:
         "size_y": surface.size[1] if surface.dim == 2 else 0.0,
     } | summary(surface)
     q, psd = psd_radial(surface) if surface.dim == 2 else psd_1d(surface)
-    axes = ("x", "y")[: surface.dim]
-    coordinates = {a: (a, c, {"units": "m"}) for a, c in zip(axes, surface.coordinates(), strict=True)}
+    axes, coordinates = grid(surface)
     dataset = xr.Dataset(
         {
             "heights": (axes, surface.heights, {"units": "m"}),
