@@ -17,7 +17,8 @@ from .units import format_si, quantity
 
 
 def _model_options(args: argparse.Namespace) -> dict:
-    from .friction import PronySeries, Readings
+    from .friction import Readings
+    from .friction.viscoelastic import standard_linear_solid
 
     options = {
         "layer_thickness": quantity(args.layer_thickness, "length", field="--layer-thickness"),
@@ -33,7 +34,7 @@ def _model_options(args: argparse.Namespace) -> dict:
         relaxed = quantity(args.relaxed_modulus, "pressure", field="--relaxed-modulus")
         tau = quantity(args.relaxation_time, "time", field="--relaxation-time")
         material = _material(args, "material", required=True)
-        options["relaxation"] = PronySeries(relaxed, (material.youngs_modulus - relaxed,), (tau,))
+        options["relaxation"] = standard_linear_solid(material.youngs_modulus, relaxed, tau)
         options["hold_time"] = quantity(args.hold_time, "time", field="--hold-time")
     return options
 

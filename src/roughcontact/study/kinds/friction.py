@@ -262,7 +262,8 @@ def build_model(parameters: FrictionParameters, inputs):
         A relaxed modulus above the surface material's Young's modulus, or any refusal of
         :func:`~roughcontact.friction.winkler_lj_model`.
     """
-    from ...friction import PronySeries, winkler_lj_model
+    from ...friction import winkler_lj_model
+    from ...friction.viscoelastic import standard_linear_solid
 
     material = inputs.material(parameters.material)
     options: dict[str, Any] = {}
@@ -275,8 +276,8 @@ def build_model(parameters: FrictionParameters, inputs):
                 f"of {material.name!r}.",
                 "a relaxed (long-time) modulus is at most the instantaneous one.",
             )
-        options["relaxation"] = PronySeries(
-            relaxed, (material.youngs_modulus - relaxed,), (parameters.relaxation_time,)
+        options["relaxation"] = standard_linear_solid(
+            material.youngs_modulus, relaxed, parameters.relaxation_time
         )
         options["hold_time"] = parameters.hold_time
     counter_surface = parameters.counter_surface
