@@ -33,6 +33,7 @@ from __future__ import annotations
 import os
 import threading
 
+import numba as nb
 import numpy as np
 from scipy import fft as _scipy_fft
 
@@ -223,6 +224,44 @@ class RealFFT2:
             forward.execute()
             return spectrum.copy()
 
+    def quadratic_form_weights(self, kernel: np.ndarray) -> np.ndarray:
+        """Return the weights w that make :meth:`quadratic_form` equal f . irfft2(kernel * rfft2(f)).
+
+        By Parseval's theorem, for a real field f (zero-padded to ``shape``, N points) and a real
+        multiplier K with K(q) = K(-q), sum_x f K f = (1/N) sum over the full spectrum of
+        K |f^|^2; on the rfft2 half-spectrum the columns 0 < j < shape[1]/2 stand for two
+        modes each (j and -j), the column 0 and, for an even width, the Nyquist column for one.
+        So w = m_j K / N with that multiplicity m_j.
+        """
+        kernel = np.asarray(kernel)
+        if kernel.shape != self.spectrum_shape or np.iscomplexobj(kernel):
+            raise InputError("kernel", f"must be a real array of shape {self.spectrum_shape}.")
+        multiplicity = np.full(self.spectrum_shape[1], 2.0)
+        multiplicity[0] = 1.0
+        if self.shape[1] % 2 == 0:
+            multiplicity[-1] = 1.0
+        return np.ascontiguousarray(kernel * multiplicity / (self.shape[0] * self.shape[1]))
+
+    def quadratic_form(self, field: np.ndarray, weights: np.ndarray) -> float:
+        """Return sum w |rfft2(field)|^2: with :meth:`quadratic_form_weights` the quadratic form f . K f.
+
+        One forward transform instead of the pair (and the elementwise product) of
+        ``field . convolve(field, kernel)``; equal to it to round-off.
+        """
+        field = np.asarray(field)
+        if field.shape != self.input_shape:
+            raise InputError("field", f"shape {field.shape}, expected {self.input_shape}.")
+        if self.backend == "scipy":
+            return _weighted_power(_scipy_fft.rfft2(field, s=self.shape, workers=self.workers), weights)
+        m0, m1 = self.input_shape
+        with self._lock:
+            if self._plans is None:
+                self._plans = self._plan()
+            real_in, spectrum, _, forward, _ = self._plans
+            real_in[:m0, :m1] = field
+            forward.execute()
+            return _weighted_power(spectrum, weights)
+
     def inverse(self, spectrum: np.ndarray) -> np.ndarray:
         """Return irfft2 of a half-spectrum on ``shape``, cropped to ``input_shape`` (a new array)."""
         m0, m1 = self.input_shape
@@ -238,3 +277,13 @@ class RealFFT2:
             result = np.empty(self.input_shape)
             np.multiply(real_out[:m0, :m1], 1.0 / (self.shape[0] * self.shape[1]), out=result)
         return result
+
+
+@nb.njit(cache=True, nogil=True)
+def _weighted_power(spectrum, weights):
+    """Return sum w |s|^2 over a complex array s and a real array w of the same shape (one pass)."""
+    total = 0.0
+    s, w = spectrum.ravel(), weights.ravel()
+    for i in range(s.size):
+        total += w[i] * (s[i].real * s[i].real + s[i].imag * s[i].imag)
+    return total

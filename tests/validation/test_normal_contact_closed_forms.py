@@ -170,9 +170,11 @@ def test_unit_invariance_nm_and_m():
 def test_preconditioning_changes_iterations_not_the_answer(boundary):
     from roughcontact.topography.generate import self_affine
 
-    surface = self_affine((128, 128), (1e-4, 1e-4), hurst=0.8, rms_slope=0.1, seed=7)
+    # The gain grows with the grid: 2x at 128^2, 3-4x at 256^2 (measured 154 -> 41 periodic,
+    # 134 -> 42 free), 4-5x at 512^2.
+    surface = self_affine((256, 256), (1e-4, 1e-4), hurst=0.8, rms_slope=0.1, seed=7)
     common = dict(mean_pressure=5e6, tolerance=1e-10, boundary=boundary)
     plain = solve_normal(surface, E_STAR, precondition=False, **common)
     fast = solve_normal(surface, E_STAR, **common)
     np.testing.assert_allclose(fast.pressure, plain.pressure, rtol=0, atol=1e-6 * plain.pressure.max())
-    assert fast.iterations < plain.iterations / 2
+    assert fast.iterations < plain.iterations / 3

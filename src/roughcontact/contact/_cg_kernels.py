@@ -43,19 +43,22 @@ def displacement_statistics(p, u, h0, cap):
 
 
 @nb.njit(**_JIT)
-def gap_and_residual(p, u, h0, delta, cap, g, g_free, free, admit_overlap):
-    """Write the gap g = u + h0 - delta, the step set and g on it; return the residual terms.
+def gap_and_residual(p, u, h0, delta, cap, t, g, g_free, free, admit_overlap):
+    """Write the gap g = u + h0 - delta, the step set and g on it; return the residual terms and sums.
 
     The step set ``free`` is the elastic contact 0 < p < cap plus the capped points that want to
     unload (p >= cap and g > 0) and, with ``admit_overlap``, the overlapping points out of contact
-    (p = 0 and g < 0); ``g_free`` is g there and 0 elsewhere.
+    (p = 0 and g < 0); ``g_free`` is g there and 0 elsewhere. ``t`` (the previous conjugate
+    direction) is only read.
 
     Returns
     -------
     (sum of p over the elastic contact, sum of p |g| over it, largest overlap -g below the cap,
-    largest open gap g at the cap, number of points in the step set, sum of g_free^2)
+    largest open gap g at the cap, number of points in the step set, and over the step set the
+    sums of g^2, of g and of t)
     """
-    s_p, s_pg, overlap, opened, count, s_gg = 0.0, 0.0, 0.0, 0.0, 0, 0.0
+    s_p, s_pg, overlap, opened, count = 0.0, 0.0, 0.0, 0.0, 0
+    s_gg, s_g, s_t = 0.0, 0.0, 0.0
     for i in range(p.size):
         gi = u[i] + h0[i] - delta
         g[i] = gi
@@ -74,45 +77,39 @@ def gap_and_residual(p, u, h0, delta, cap, g, g_free, free, admit_overlap):
             g_free[i] = gi
             count += 1
             s_gg += gi * gi
+            s_g += gi
+            s_t += t[i]
         else:
             free[i] = 0
             g_free[i] = 0.0
-    return s_p, s_pg, overlap, opened, count, s_gg
+    return s_p, s_pg, overlap, opened, count, s_gg, s_g, s_t
 
 
 @nb.njit(**_JIT)
 def restrict_direction(z, g, free):
-    """Zero z outside the step set; return (sum z, sum g z, sum g) over it."""
-    s_z, s_gz, s_g = 0.0, 0.0, 0.0
+    """Zero z outside the step set; return (sum z, sum g z) over it."""
+    s_z, s_gz = 0.0, 0.0
     for i in range(z.size):
         if free[i]:
             s_z += z[i]
             s_gz += g[i] * z[i]
-            s_g += g[i]
         else:
             z[i] = 0.0
-    return s_z, s_gz, s_g
+    return s_z, s_gz
 
 
 @nb.njit(**_JIT)
-def update_direction(t, z, shift, beta, free):
-    """Set t = (z - shift) + beta t on the step set and 0 elsewhere."""
+def update_direction(t, z, shift, beta, free, g):
+    """Set t = (z - shift) + beta t on the step set and 0 elsewhere; return sum g t."""
+    s_gt = 0.0
     for i in range(t.size):
-        t[i] = (z[i] - shift) + beta * t[i] if free[i] else 0.0
-
-
-@nb.njit(**_JIT)
-def step_products(r, t, g, free):
-    """Return (sum r t, sum of r over the step set, sum t, sum g t)."""
-    s_rt, s_r, s_t, s_gt = 0.0, 0.0, 0.0, 0.0
-    for i in range(r.size):
-        ti = t[i]
-        s_rt += r[i] * ti
-        s_t += ti
-        s_gt += g[i] * ti
         if free[i]:
-            s_r += r[i]
-    return s_rt, s_r, s_t, s_gt
+            ti = (z[i] - shift) + beta * t[i]
+            s_gt += g[i] * ti
+        else:
+            ti = 0.0
+        t[i] = ti
+    return s_gt
 
 
 @nb.njit(**_JIT)

@@ -22,8 +22,11 @@ projected on the feasible set, with the box constraint of Almqvist et al. (2007)
    preconditioner M = K^{-1} of the unrestricted operator applied in Fourier space and restricted
    to the free set (Vollebregt 2014; one more FFT pair, several times fewer iterations on rough
    surfaces); beta = (g.z) / (g.z)_old, reset to 0 after a step in which points entered the
-   contact; points at the cap with g > 0 (which want to unload) join the free set; r = K t
-   (one FFT pair), with its free-set mean removed under load control; step tau = (g.t) / (r.t).
+   contact; points at the cap with g > 0 (which want to unload) join the free set. Under load
+   control a constant is subtracted from t on the free set so that it sums to zero there (the
+   step then keeps the force; Polonsky-Keer instead remove the free-set mean of r = K t, which
+   equals this when t sums to zero). Step tau = (g.t) / (t.K t), with t.K t computed in Fourier
+   space by Parseval's theorem from one forward FFT of t (K t itself is never formed).
    Preconditioned, the points out of contact that overlap (p = 0 with g < 0) join the set too.
 4. p -= tau t on the set; clip to [0, p_max]. Plain: points out of contact that overlap enter by
    -tau g (Polonsky-Keer's I_ol step); clip again. Preconditioned they already took part in the
@@ -45,8 +48,9 @@ with E the elastic contact points (0 < p < p_max) and s_h the rms of h0 about it
 rms of u about its mean (a height scale of the problem). The first term is the pressure-weighted
 mean gap over the elastic contact (zero at the solution), the others the worst violations of
 the gap conditions: overlap anywhere below the cap (so a point with a vanishing pressure cannot
-hide an overlap), and an open gap under a capped pressure. Each iteration costs two
-FFT pairs (three preconditioned) and five fused elementwise passes
+hide an overlap), and an open gap under a capped pressure. Each iteration costs one and a
+half FFT pairs (two and a half preconditioned: K p, M g and the forward transform of t) and
+five fused elementwise passes
 (:mod:`roughcontact.contact._cg_kernels`); the returned pressure and gap are from the same
 iterate (never a mixed state).
 
@@ -175,8 +179,8 @@ def solve(
         elastic_count, elastic_sum, u_sum, uu_sum = kernels.displacement_statistics(p, u, h0, upper)
         if load_control:
             delta = elastic_sum / elastic_count if elastic_count else float(np.min(u + h0))
-        p_sum, pg_sum, overlap, opened, free_count, gg_sum = kernels.gap_and_residual(
-            p, u, h0, delta, upper, g, g_free, free, admit
+        p_sum, pg_sum, overlap, opened, free_count, gg_sum, g_sum, t_sum = kernels.gap_and_residual(
+            p, u, h0, delta, upper, t, g, g_free, free, admit
         )
         u_std = np.sqrt(max(uu_sum / u.size - (u_sum / u.size) ** 2, 0.0))
         residual = _residual(pg_sum / p_sum if p_sum > 0 else 0.0, overlap, opened, height_scale + u_std)
@@ -186,19 +190,20 @@ def solve(
         if iteration == max_iterations:
             break
         if preconditioner is None:
-            z, shift, g_norm = g_free, 0.0, gg_sum
-        else:  # M g restricted to the step set (Vollebregt 2014), with zero sum there under load control
+            z, z_sum, gz_sum = g_free, g_sum, gg_sum
+        else:  # M g restricted to the step set (Vollebregt 2014)
             z = _flat(preconditioner(g_free.reshape(shape)))
-            z_sum, gz_sum, g_sum = kernels.restrict_direction(z, g, free)
-            shift = z_sum / free_count if load_control and free_count else 0.0
-            g_norm = gz_sum - shift * g_sum
-        kernels.update_direction(t, z, shift, g_norm / g_norm_old if conjugate else 0.0, free)
+            z_sum, gz_sum = kernels.restrict_direction(z, g, free)
+        # Load control: the direction sums to zero over the step set, so the step keeps the force.
+        shift = z_sum / free_count if load_control and free_count else 0.0
+        g_norm = gz_sum - shift * g_sum
+        beta = g_norm / g_norm_old if conjugate else 0.0
+        if load_control and free_count:
+            shift += beta * t_sum / free_count
+        gt_sum = kernels.update_direction(t, z, shift, beta, free, g)
         g_norm_old = g_norm
-        r = _flat(compliance(t.reshape(shape)))
-        rt, r_sum, t_sum, gt_sum = kernels.step_products(r, t, g, free)
-        if load_control and free_count:  # r with its step-set mean removed
-            rt -= r_sum / free_count * t_sum
-        tau = gt_sum / rt if rt > 0 else 0.0
+        tkt = compliance.quadratic_form(t.reshape(shape))  # t . K t, one forward FFT (Parseval)
+        tau = gt_sum / tkt if tkt > 0 else 0.0
         # Plain Polonsky-Keer: entering points get p = -step g, tau or, when it is undefined (empty step
         # set), the pixel self-stiffness 1/K_ii [Pa/m], the pressure that closes a lone overlap.
         step = tau if tau > 0 else stiffness
