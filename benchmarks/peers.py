@@ -84,13 +84,14 @@ Heights are centred (mean removed) before being handed to a peer; ``approach`` d
 from __future__ import annotations
 
 import contextlib
+import functools
 import importlib
 import os
 import re
 import sys
 import tempfile
 import time
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 
 import numpy as np
 
@@ -109,6 +110,26 @@ def available_peers() -> list[str]:
             continue
         names.append(name)
     return names
+
+
+def solvers(case: str, names: Sequence[str] | None = None) -> dict[str, Callable[..., dict]]:
+    """Return {label: solve} of the available peers for ``case`` ("periodic" or "free_hertz").
+
+    ``names`` keeps only those peers (default: all that import). aspher's periodic case comes
+    twice: with its full-grid Fourier preconditioner ("aspher") and coarse-to-fine
+    ("aspher nested", :func:`aspher_periodic` with ``nested=True``), its fastest mode.
+    """
+    found = {}
+    for name in available_peers():
+        if names is not None and name not in names:
+            continue
+        solve = globals().get(f"{name}_{case}")
+        if solve is None:
+            continue
+        found[name] = solve
+        if name == "aspher" and case == "periodic":
+            found["aspher nested"] = functools.partial(aspher_periodic, nested=True)
+    return found
 
 
 # --------------------------------------------------------------------------------------------------------

@@ -30,6 +30,7 @@ Frigo, M. and Johnson, S. G. (2005). The design and implementation of FFTW3. Pro
 
 from __future__ import annotations
 
+import contextlib
 import os
 import threading
 
@@ -72,6 +73,8 @@ PLANNING_TIME_LIMIT = 10.0
 """Upper bound [s] of the planning time of one FFTW_MEASURE plan."""
 THREADS_FROM = 1 << 15
 """Transform size (points) from which FFTW runs on ``workers`` threads; smaller ones on one thread."""
+PRECISIONS = {"double": (np.float64, np.complex128), "single": (np.float32, np.complex64)}
+"""Real and complex dtypes of each transform precision."""
 
 
 def resolve_workers(workers: int | None) -> int:
@@ -124,12 +127,18 @@ class RealFFT2:
         ``shape`` and the result is cropped back (default: ``shape``).
     backend : {"auto", "fftw", "scipy"}, optional
         See :func:`fft_backend` (default: ``ROUGHCONTACT_FFT``, else ``"auto"``).
+    precision : {"double", "single"}
+        Floating-point precision of the transforms. ``"single"`` (float32, relative round-off
+        about 1e-7) moves half the bytes and runs about twice as fast on large grids; for
+        approximate operators such as a preconditioner, never for a result. Inputs and outputs
+        are float64 either way; kernels should be given in the transform's precision
+        (:attr:`real_dtype`) to avoid a conversion per call.
 
     Notes
     -----
     The FFTW plans are made on first use (``FFTW_MEASURE`` plans overwrite their buffers and
     take up to seconds on large grids). Calls are serialised by a lock since the buffers are
-    shared; every result is a fresh array, never a view of a buffer.
+    shared; every result is a fresh array, or the caller's ``out``, never a view of a buffer.
     """
 
     def __init__(
@@ -139,7 +148,14 @@ class RealFFT2:
         *,
         input_shape: tuple[int, int] | None = None,
         backend: str | None = None,
+        precision: str = "double",
     ):
+        if precision not in PRECISIONS:
+            raise InputError(
+                "precision", f"unknown precision {precision!r}.", f"use one of {tuple(PRECISIONS)}."
+            )
+        self.precision = precision
+        self.real_dtype, self._complex_dtype = PRECISIONS[precision]
         self.shape = (int(shape[0]), int(shape[1]))
         self.input_shape = self.shape if input_shape is None else (int(input_shape[0]), int(input_shape[1]))
         if not all(0 < m <= s for m, s in zip(self.input_shape, self.shape, strict=True)):
@@ -149,15 +165,16 @@ class RealFFT2:
         self.backend = fft_backend(backend)
         self.planner = "FFTW_MEASURE" if self.shape[0] * self.shape[1] >= MEASURE_FROM else "FFTW_ESTIMATE"
         self._plans = None
-        self._lock = threading.Lock()
+        self._scipy_input = None
+        self._lock = threading.RLock()  # re-entrant: a staged() holder may call convolve()
 
     def _plan(self):
-        real_in = _pyfftw.zeros_aligned(self.shape, dtype="float64")
-        spectrum = _pyfftw.empty_aligned(self.spectrum_shape, dtype="complex128")
+        real_in = _pyfftw.zeros_aligned(self.shape, dtype=self.real_dtype)
+        spectrum = _pyfftw.empty_aligned(self.spectrum_shape, dtype=self._complex_dtype)
         # a padded input keeps its zero margin: the forward plan preserves its input and the
         # backward plan writes into a separate buffer.
         padded = self.input_shape != self.shape
-        real_out = _pyfftw.empty_aligned(self.shape, dtype="float64") if padded else real_in
+        real_out = _pyfftw.empty_aligned(self.shape, dtype=self.real_dtype) if padded else real_in
         threads = self.workers if self.shape[0] * self.shape[1] >= THREADS_FROM else 1
         options = {"axes": (0, 1), "threads": threads, "planning_timelimit": PLANNING_TIME_LIMIT}
         forward = _pyfftw.FFTW(real_in, spectrum, flags=(self.planner,), **options)
@@ -166,7 +183,7 @@ class RealFFT2:
         real_in[...] = 0.0  # planning may have written into the buffers
         return real_in, spectrum, real_out, forward, backward
 
-    def convolve(self, field: np.ndarray, kernel: np.ndarray) -> np.ndarray:
+    def convolve(self, field: np.ndarray, kernel: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
         """Return irfft2(kernel * rfft2(field)) on the transform grid, cropped to ``input_shape``.
 
         Parameters
@@ -175,34 +192,107 @@ class RealFFT2:
             Real field (any unit).
         kernel : ndarray, shape ``(shape[0], shape[1] // 2 + 1)``
             Fourier multiplier on the rfft2 half-spectrum (real or complex).
+        out : ndarray, optional
+            Float64 array of shape ``input_shape`` to write the result into (a work array reused
+            by an iteration: a fresh large array costs page faults on first touch).
 
         Returns
         -------
         ndarray, shape ``input_shape``
-            A new float64 array (the scipy backend keeps the input's precision, as scipy.fft does).
+            ``out``, or a new float64 array.
         """
+        field = self._checked(field)
+        with self._lock:
+            self._stage()[...] = field
+            result = np.empty(self.input_shape) if out is None else out
+            np.multiply(self._apply(kernel), 1.0 / self.size, out=result)
+        return result
+
+    @property
+    def size(self) -> int:
+        """Number of points N of the transform grid (irfft2 normalises by 1/N)."""
+        return self.shape[0] * self.shape[1]
+
+    @contextlib.contextmanager
+    def staged(self):
+        """Hold the transform for the calling thread and yield its staged input.
+
+        The input is a writable view of shape ``input_shape`` into the transform's own input
+        buffer (``real_dtype``): an iterative solver writes its field there in the same pass
+        that computes it, then calls :meth:`apply_staged` or :meth:`power_staged`, and reads
+        the result where it lies, saving a copy in and a copy out per transform. The view is
+        valid inside the ``with`` block only; the output of :meth:`apply_staged` may share its
+        memory (periodic grids transform in place), so read it before writing the next input.
+        """
+        with self._lock:
+            yield self._stage()
+
+    def prepared(self, kernel: np.ndarray) -> np.ndarray:
+        """Return ``kernel / N`` in ``real_dtype``: the multiplier that :meth:`apply_staged` needs."""
+        return np.ascontiguousarray(np.asarray(kernel) / self.size, dtype=self.real_dtype)
+
+    def apply_staged(self, prepared_kernel: np.ndarray) -> np.ndarray:
+        """Transform the staged input, multiply by a :meth:`prepared` kernel, transform back.
+
+        Inside :meth:`staged` only. Returns a view of shape ``input_shape`` (``real_dtype``) that
+        is valid until the staged input is written or the transform is used again.
+        """
+        return self._apply(prepared_kernel)
+
+    def power_staged(self, weights: np.ndarray) -> float:
+        """Return sum w |rfft2(staged input)|^2; inside :meth:`staged` only.
+
+        With w from :meth:`quadratic_form_weights` this is the quadratic form f . K f of the staged
+        field f: one forward transform instead of the pair (and the elementwise product) of
+        ``f . convolve(f, K)``, equal to it to the round-off of :attr:`precision`.
+        """
+        return _weighted_power(self._forward_stage(), weights)
+
+    def _checked(self, field: np.ndarray) -> np.ndarray:
         field = np.asarray(field)
         if field.shape != self.input_shape:
             raise InputError("field", f"shape {field.shape}, expected {self.input_shape}.")
-        if self.backend == "scipy":
-            spectrum = _scipy_fft.rfft2(field, s=self.shape, workers=self.workers)
-            spectrum *= kernel
-            result = _scipy_fft.irfft2(spectrum, s=self.shape, workers=self.workers, overwrite_x=True)
-            if self.input_shape != self.shape:
-                return result[: self.input_shape[0], : self.input_shape[1]]
-            return result
+        return field
+
+    def _buffers(self):
+        """Return (real input, spectrum, real output, forward plan, backward plan); plan on first use."""
+        if self._plans is None:
+            self._plans = self._plan()
+        return self._plans
+
+    def _stage(self) -> np.ndarray:
+        """Return the input field's place: the FFTW input buffer's window, or an array of its own (scipy)."""
         m0, m1 = self.input_shape
-        with self._lock:
-            if self._plans is None:
-                self._plans = self._plan()
-            real_in, spectrum, real_out, forward, backward = self._plans
-            real_in[:m0, :m1] = field
-            forward.execute()
-            np.multiply(spectrum, kernel, out=spectrum)
-            backward.execute()  # unnormalised: scaled by 1/N on the way out
-            result = np.empty(self.input_shape)
-            np.multiply(real_out[:m0, :m1], 1.0 / (self.shape[0] * self.shape[1]), out=result)
-        return result
+        if self.backend == "scipy":
+            if self._scipy_input is None:
+                self._scipy_input = np.zeros(self.input_shape, dtype=self.real_dtype)
+            return self._scipy_input
+        return self._buffers()[0][:m0, :m1]
+
+    def _forward_stage(self) -> np.ndarray:
+        """rfft2 of the staged input: the FFTW spectrum buffer (or a new array with scipy)."""
+        if self.backend == "scipy":
+            return _scipy_fft.rfft2(self._scipy_input, s=self.shape, workers=self.workers)
+        _, spectrum, _, forward, _ = self._buffers()
+        forward.execute()
+        return spectrum
+
+    def _backward(self, spectrum: np.ndarray) -> np.ndarray:
+        """Unnormalised irfft2 (N times numpy's) of ``spectrum``, cropped to ``input_shape`` (a view)."""
+        m0, m1 = self.input_shape
+        if self.backend == "scipy":
+            result = _scipy_fft.irfft2(spectrum, s=self.shape, workers=self.workers, norm="forward")
+            return result[:m0, :m1]
+        _, buffer, real_out, _, backward = self._buffers()
+        if spectrum is not buffer:
+            buffer[...] = spectrum
+        backward.execute()
+        return real_out[:m0, :m1]
+
+    def _apply(self, kernel: np.ndarray) -> np.ndarray:
+        spectrum = self._forward_stage()
+        np.multiply(spectrum, kernel, out=spectrum)
+        return self._backward(spectrum)
 
     def forward(self, field: np.ndarray) -> np.ndarray:
         """Return rfft2 of ``field`` zero-padded to ``shape`` (a new complex array).
@@ -210,22 +300,14 @@ class RealFFT2:
         With :meth:`inverse` it applies a matrix of multipliers to several fields (e.g. the two
         shear components) at one forward transform per field and one inverse per output.
         """
-        field = np.asarray(field)
-        if field.shape != self.input_shape:
-            raise InputError("field", f"shape {field.shape}, expected {self.input_shape}.")
-        if self.backend == "scipy":
-            return _scipy_fft.rfft2(field, s=self.shape, workers=self.workers)
-        m0, m1 = self.input_shape
+        field = self._checked(field)
         with self._lock:
-            if self._plans is None:
-                self._plans = self._plan()
-            real_in, spectrum, _, forward, _ = self._plans
-            real_in[:m0, :m1] = field
-            forward.execute()
-            return spectrum.copy()
+            self._stage()[...] = field
+            spectrum = self._forward_stage()
+            return spectrum.copy() if self.backend == "fftw" else spectrum
 
     def quadratic_form_weights(self, kernel: np.ndarray) -> np.ndarray:
-        """Return the weights w that make :meth:`quadratic_form` equal f . irfft2(kernel * rfft2(f)).
+        """Return the weights w that make :meth:`power_staged` equal f . irfft2(kernel * rfft2(f)).
 
         By Parseval's theorem, for a real field f (zero-padded to ``shape``, N points) and a real
         multiplier K with K(q) = K(-q), sum_x f K f = (1/N) sum over the full spectrum of
@@ -240,42 +322,14 @@ class RealFFT2:
         multiplicity[0] = 1.0
         if self.shape[1] % 2 == 0:
             multiplicity[-1] = 1.0
-        return np.ascontiguousarray(kernel * multiplicity / (self.shape[0] * self.shape[1]))
-
-    def quadratic_form(self, field: np.ndarray, weights: np.ndarray) -> float:
-        """Return sum w |rfft2(field)|^2: with :meth:`quadratic_form_weights` the quadratic form f . K f.
-
-        One forward transform instead of the pair (and the elementwise product) of
-        ``field . convolve(field, kernel)``; equal to it to round-off.
-        """
-        field = np.asarray(field)
-        if field.shape != self.input_shape:
-            raise InputError("field", f"shape {field.shape}, expected {self.input_shape}.")
-        if self.backend == "scipy":
-            return _weighted_power(_scipy_fft.rfft2(field, s=self.shape, workers=self.workers), weights)
-        m0, m1 = self.input_shape
-        with self._lock:
-            if self._plans is None:
-                self._plans = self._plan()
-            real_in, spectrum, _, forward, _ = self._plans
-            real_in[:m0, :m1] = field
-            forward.execute()
-            return _weighted_power(spectrum, weights)
+        weights = kernel * multiplicity / (self.shape[0] * self.shape[1])
+        return np.ascontiguousarray(weights, dtype=self.real_dtype)
 
     def inverse(self, spectrum: np.ndarray) -> np.ndarray:
-        """Return irfft2 of a half-spectrum on ``shape``, cropped to ``input_shape`` (a new array)."""
-        m0, m1 = self.input_shape
-        if self.backend == "scipy":
-            result = _scipy_fft.irfft2(spectrum, s=self.shape, workers=self.workers)
-            return np.ascontiguousarray(result[:m0, :m1]) if self.input_shape != self.shape else result
+        """Return irfft2 of a half-spectrum on ``shape``, cropped to ``input_shape`` (a new float64 array)."""
         with self._lock:
-            if self._plans is None:
-                self._plans = self._plan()
-            _, buffer, real_out, _, backward = self._plans
-            buffer[...] = spectrum
-            backward.execute()
             result = np.empty(self.input_shape)
-            np.multiply(real_out[:m0, :m1], 1.0 / (self.shape[0] * self.shape[1]), out=result)
+            np.multiply(self._backward(spectrum), 1.0 / self.size, out=result)
         return result
 
 

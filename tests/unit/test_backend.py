@@ -141,3 +141,45 @@ def test_measured_multithreaded_plans_agree(monkeypatch, boundary):
     field = np.random.default_rng(8).random((30, 45))
     for _ in range(2):
         assert _relative(operators["fftw"](field), operators["scipy"](field)) < 1e-12
+
+
+@pytest.mark.parametrize("backend", ["fftw", "scipy"])
+@pytest.mark.parametrize("boundary", ["periodic", "free"])
+@pytest.mark.parametrize("shape", SHAPES)
+def test_staged_operators_match_the_plain_calls(shape, boundary, backend):
+    """K p in double precision exactly as ``__call__``; M f and f.K f in single precision within 1e-6."""
+    if backend == "fftw" and _backend._pyfftw is None:
+        pytest.skip("pyFFTW does not import")
+    operator = SurfaceCompliance(shape, (1e-4, 2.5e-4), 1e9, boundary=boundary, fft_backend=backend)
+    rng = np.random.default_rng(8)
+    p, f = rng.random(shape), rng.standard_normal(shape)
+    with operator.staged() as ops:
+        assert ops.pressure.dtype == np.float64 and ops.approximate.dtype == np.float32
+        ops.pressure[...] = p
+        displacement = ops.displacement().copy()  # a view: operator(p) reuses the buffer
+        ops.approximate[...] = f
+        preconditioned = ops.precondition().copy()
+        ops.approximate[...] = f
+        assert ops.quadratic_form() == pytest.approx(np.vdot(f, operator(f)), rel=1e-6, abs=0)
+    assert _relative(displacement, operator(p)) < 1e-13
+    assert _relative(preconditioned, operator.inverse(f)) < 1e-6
+
+
+@pytest.mark.parametrize("backend", ["fftw", "scipy"])
+@pytest.mark.parametrize(
+    "shape, input_shape", [((32, 32), None), ((24, 37), None), ((7, 1), None), ((24, 38), (12, 19))]
+)
+def test_parseval_quadratic_form_in_double_precision(shape, input_shape, backend):
+    """sum w |rfft2 f|^2 = f . irfft2(K rfft2 f) to round-off, for even and odd widths and padded fields."""
+    if backend == "fftw" and _backend._pyfftw is None:
+        pytest.skip("pyFFTW does not import")
+    pair = RealFFT2(shape, input_shape=input_shape, backend=backend)
+    rng = np.random.default_rng(9)
+    kernel = rng.random(pair.spectrum_shape)
+    kernel[:, 0] = kernel[::-1, 0][np.r_[-1, : shape[0] - 1]]  # K(q) = K(-q) on the self-conjugate column
+    field = rng.standard_normal(pair.input_shape)
+    weights = pair.quadratic_form_weights(kernel)
+    with pair.staged() as staged:
+        staged[...] = field
+        power = pair.power_staged(weights)
+    assert power == pytest.approx(np.vdot(field, pair.convolve(field, kernel)), rel=1e-12, abs=0)

@@ -206,7 +206,7 @@ def solve_normal(
     common = dict(
         pixel_area=measure,
         cap=hardness,
-        preconditioner=compliance.inverse if precondition else None,
+        precondition=precondition,
         tolerance=tolerance,
         max_iterations=max_iterations,
         solver="solve_normal",

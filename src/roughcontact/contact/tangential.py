@@ -429,7 +429,6 @@ def _coupled_pressure(
         initial_pressure=pressure,
         tolerance=tolerance,
         max_iterations=max_iterations,
-        preconditioner=normal_operator.inverse,
         solver="solve_tangential (coupled normal step)",
     )
     return raw.pressure
