@@ -239,6 +239,23 @@ class RealFFT2:
         """
         return self._apply(prepared_kernel)
 
+    def forward_staged(self) -> np.ndarray:
+        """Return rfft2 of the staged input; inside :meth:`staged` only.
+
+        The spectrum is the transform's own buffer (a new array with scipy): valid until the
+        next transform, and it may be modified in place before :meth:`backward_staged`.
+        """
+        return self._forward_stage()
+
+    def backward_staged(self, spectrum: np.ndarray) -> np.ndarray:
+        """Return irfft2 of ``spectrum`` unnormalised (N times numpy's), cropped; inside :meth:`staged` only.
+
+        A view of the transform's output buffer (periodic grids: the staged input's memory),
+        valid until the next transform; ``spectrum`` may be the buffer :meth:`forward_staged`
+        returned, else it is copied there (and destroyed by FFTW).
+        """
+        return self._backward(spectrum)
+
     def power_staged(self, weights: np.ndarray) -> float:
         """Return sum w |rfft2(staged input)|^2; inside :meth:`staged` only.
 

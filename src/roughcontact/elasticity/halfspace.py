@@ -128,6 +128,11 @@ class SurfaceCompliance:
         FFT library (:func:`roughcontact._backend.fft_backend`; default: the environment
         variable ``ROUGHCONTACT_FFT``, else FFTW when pyFFTW imports). Same result to round-off.
 
+    Attributes
+    ----------
+    transform_shape : (int, int)
+        Grid of the FFTs: ``shape``, or twice it for a free boundary (zero padding).
+
     Notes
     -----
     With a layer the kernel is the half-space kernel of E* times
@@ -174,15 +179,15 @@ class SurfaceCompliance:
         self.layer = layer
         self.workers = resolve_workers(workers)
         if boundary == "periodic":
-            self._fft_shape = self.shape
+            self.transform_shape = self.shape
             kernel = kernels.periodic_halfspace_kernel(self.shape, self.size, self.contact_modulus)
             fft_size = self.size
         else:
-            self._fft_shape = (2 * self.shape[0], 2 * self.shape[1])
+            self.transform_shape = (2 * self.shape[0], 2 * self.shape[1])
             kernel = kernels.free_halfspace_kernel(self.shape, self.size, self.contact_modulus)
             fft_size = (2 * self.size[0], 2 * self.size[1])
         if layer is not None:
-            q = kernels.wavevector_magnitude(self._fft_shape, fft_size)
+            q = kernels.wavevector_magnitude(self.transform_shape, fft_size)
             ratio = (layer.factor(q) * layer_compliance + counter_compliance) * self.contact_modulus
             kernel = kernel * ratio
             if isinstance(layer.base, str) and counter_body is None:
@@ -192,7 +197,7 @@ class SurfaceCompliance:
                 )
         self.kernel = kernel
         self._derived = {}  # made on first use: inverse kernel, single-precision transform and kernels
-        self._fft = RealFFT2(self._fft_shape, self.workers, input_shape=self.shape, backend=fft_backend)
+        self._fft = RealFFT2(self.transform_shape, self.workers, input_shape=self.shape, backend=fft_backend)
 
     def __call__(self, pressure: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
         """Return the surface displacement [m] (into the body) of ``pressure`` [Pa].
@@ -234,7 +239,7 @@ class SurfaceCompliance:
         """
         if "single" not in self._derived:
             single = RealFFT2(
-                self._fft_shape,
+                self.transform_shape,
                 self.workers,
                 input_shape=self.shape,
                 backend=self._fft.backend,

@@ -60,6 +60,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numba as nb
 import numpy as np
 from scipy import fft
 
@@ -81,6 +82,7 @@ class PairCompliance:
     @classmethod
     def of(cls, body: Material, counter_body: Material | None = None) -> PairCompliance:
         """Return the sums for ``body`` (receives q and p) against ``counter_body`` (None: rigid)."""
+
         def terms(material):  # (1/G, nu/G, (1 - nu)/G, (1 - 2 nu)/(2G)); a rigid body adds nothing
             if material is None:
                 return np.zeros(4)
@@ -238,7 +240,8 @@ class TractionCompliance:
                 free_kernels(self.shape, self.size, self.pair),
             )
         self._k = built
-        self._inverse = None
+        self._prepared = {}  # multipliers divided by the transform size, made on first use
+        self._spectrum = None  # work spectrum of _symmetric_multiplier
         self.coupled = self.pair.D != 0.0
         self._fft = RealFFT2(fft_shape, resolve_workers(workers), input_shape=self.shape)
 
@@ -249,11 +252,9 @@ class TractionCompliance:
 
     def shear(self, qx: np.ndarray, qy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Relative tangential displacements (s_x, s_y) [m] of the shear tractions alone."""
-        fx, fy = self._fft.forward(qx), self._fft.forward(qy)
-        k = self._k
-        sx = self._fft.inverse(k["xx"] * fx + k["xy"] * fy)
-        sy = self._fft.inverse(k["xy"] * fx + k["yy"] * fy)
-        return sx, sy
+        if "shear" not in self._prepared:
+            self._prepared["shear"] = {name: self._fft.prepared(self._k[name]) for name in ("xx", "xy", "yy")}
+        return self._symmetric_multiplier(self._prepared["shear"], qx, qy)
 
     def inverse_shear(self, sx: np.ndarray, sy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Apply the mode-wise inverse of the 2 x 2 shear kernel: tractions [Pa] of displacements [m].
@@ -262,7 +263,7 @@ class TractionCompliance:
         of the longest wavelength; for a free surface the inverse of the zero-padded operator
         (an approximate inverse, used as a preconditioner).
         """
-        if self._inverse is None:
+        if "inverse" not in self._prepared:
             k = self._k
             det = k["xx"] * k["yy"] - k["xy"] ** 2
             regular = det > 0
@@ -271,13 +272,31 @@ class TractionCompliance:
             stiffest_long = float(np.min(inverse["xx"][regular]))
             for name, value in inverse.items():
                 value[~regular] = stiffest_long if name != "xy" else 0.0
-            self._inverse = inverse
-        inverse = self._inverse
-        fx, fy = self._fft.forward(sx), self._fft.forward(sy)
-        return (
-            self._fft.inverse(inverse["xx"] * fx + inverse["xy"] * fy),
-            self._fft.inverse(inverse["xy"] * fx + inverse["yy"] * fy),
-        )
+            self._prepared["inverse"] = {name: self._fft.prepared(value) for name, value in inverse.items()}
+        return self._symmetric_multiplier(self._prepared["inverse"], sx, sy)
+
+    def _symmetric_multiplier(
+        self, matrix: dict, ax: np.ndarray, ay: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """Return (M_xx a_x + M_xy a_y, M_xy a_x + M_yy a_y) for a real symmetric 2 x 2 multiplier M.
+
+        ``matrix`` holds M / N (:meth:`RealFFT2.prepared <roughcontact._backend.RealFFT2.prepared>`).
+        Two forward and two inverse transforms on the operator's own buffers, the 2 x 2 product
+        in one pass over the spectra (no temporaries).
+        """
+        fft = self._fft
+        if self._spectrum is None:
+            self._spectrum = np.empty(fft.spectrum_shape, dtype=complex)
+        with fft.staged() as staged:
+            staged[...] = ax
+            fx = self._spectrum
+            fx[...] = fft.forward_staged()
+            staged[...] = ay
+            fy = fft.forward_staged()
+            _mix_symmetric(matrix["xx"], matrix["xy"], matrix["yy"], fx, fy)  # fy <- x result, fx <- y result
+            sx = np.array(fft.backward_staged(fy))
+            sy = np.array(fft.backward_staged(fx))
+        return sx, sy
 
     def slip_from_pressure(self, pressure: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Relative tangential displacements [m] caused by the pressure (zero when D = 0)."""
@@ -292,3 +311,14 @@ class TractionCompliance:
             return np.zeros(self.shape)
         fx, fy = self._fft.forward(qx), self._fft.forward(qy)
         return self._fft.inverse(-1j * (self._k["xz"] * fx + self._k["yz"] * fy))
+
+
+@nb.njit(cache=True, nogil=True)
+def _mix_symmetric(xx, xy, yy, fx, fy):
+    """In place, mode by mode: fy <- xx fx + xy fy and fx <- xy fx + yy fy (real xx, xy, yy)."""
+    a, b = fx.ravel(), fy.ravel()
+    mxx, mxy, myy = xx.ravel(), xy.ravel(), yy.ravel()
+    for i in range(a.size):
+        x, y = a[i], b[i]
+        b[i] = mxx[i] * x + mxy[i] * y
+        a[i] = mxy[i] * x + myy[i] * y
