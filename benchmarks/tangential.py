@@ -55,6 +55,7 @@ loaded machine), tamaas's wheel is serial; ours uses its default FFT threads. Pe
 printed. ``--quick``: Case 1 at 32^2 and 64^2, Case 2 at 64^2. Ends with one JSON line.
 
     python benchmarks/tangential.py [--sizes 64 128 256] [--quick] [--large] [--steps-per-stroke 25]
+        [--loop-sizes 256 512] [--no-cattaneo] [--no-loop] [--no-peers]
 """
 
 from __future__ import annotations
@@ -549,8 +550,9 @@ def main() -> None:
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--no-peers", action="store_true")
     parser.add_argument("--no-loop", action="store_true")
+    parser.add_argument("--no-cattaneo", action="store_true", help="skip Case 1")
     args = parser.parse_args()
-    sizes = [32, 64] if args.quick else args.sizes
+    sizes = [] if args.no_cattaneo else [32, 64] if args.quick else args.sizes
     loop_sizes = args.loop_sizes or ([64] if args.quick else [256] + ([512] if args.large else []))
     available = {}
     if not args.no_peers:

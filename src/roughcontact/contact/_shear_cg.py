@@ -28,8 +28,8 @@ half-line p >= 0 to discs:
    q) on the slip set, so slipping points may turn; under force control the sum of z is removed
    over the stick set. t = z + beta t_old with beta = |z|^2/|z_old|^2, reset to 0 whenever the
    stick set changed (Polonsky-Keer's reset when points enter or leave).
-4. tau = (z.t) / (t.Ct + sum_slip lambda_i |t_i|^2) (two more FFT pairs), where the second
-   term, with the slip multiplier lambda_i = -w_i.q_i / (|q_i| c_i), is the curvature the rim
+4. tau = (z.t) / (t.Ct + sum_slip lambda_i |t_i|^2) (t.Ct by Parseval's theorem from two
+   forward FFTs; C t itself is never formed), where the second term, with the slip multiplier lambda_i = -w_i.q_i / (|q_i| c_i), is the curvature the rim
    adds when a slipping point turns (the Hessian of the Lagrangian on the rim; without it a
    slipping contact under a large slip increment overshoots and never settles); q -= tau t;
    project every point radially onto its disc; under force control give the lost force back to
@@ -161,6 +161,7 @@ def _slip_sum(z, state):
 
 def solve_increment(
     shear: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]],
+    energy: Callable[[np.ndarray, np.ndarray], float],
     bound: np.ndarray,
     offset: tuple[np.ndarray, np.ndarray],
     *,
@@ -178,7 +179,10 @@ def solve_increment(
     Parameters
     ----------
     shear : callable
-        (q_x, q_y) [Pa] -> (s_x, s_y) [m], the tangential compliance of the pair.
+        (q_x, q_y) [Pa] -> (s_x, s_y) [m], the tangential compliance C of the pair.
+    energy : callable
+        (t_x, t_y) -> t . C t (e.g. ``TractionCompliance.shear_energy``, by Parseval's theorem
+        at half the cost of ``shear``): the step length needs nothing else of C t.
     bound : ndarray
         c = mu p [Pa] (0 outside the contact).
     offset : (ndarray, ndarray)
@@ -247,8 +251,7 @@ def solve_increment(
         previous_norm = z_norm
         kernels.update_direction(tx.ravel(), ty.ravel(), dx, dy, flat["nx"], flat["ny"], state, beta)
         along_z = float(np.dot(flat["zx"], tx.ravel()) + np.dot(flat["zy"], ty.ravel()))
-        rx, ry = shear(tx, ty)
-        curvature = kernels.curvature(tx.ravel(), ty.ravel(), rx.ravel(), ry.ravel(), flat["bend"])
+        curvature = energy(tx, ty) + kernels.rim_curvature(tx.ravel(), ty.ravel(), flat["bend"])
         if curvature <= 0:
             previous_norm = 0.0
             continue

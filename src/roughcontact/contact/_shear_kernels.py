@@ -118,11 +118,11 @@ def update_direction(tx, ty, zx, zy, nx, ny, state, beta):
 
 
 @nb.njit(**_JIT)
-def curvature(tx, ty, rx, ry, bend):
-    """Return t.Ct + sum lambda |t|^2 (C t given as r)."""
+def rim_curvature(tx, ty, bend):
+    """Return sum lambda |t|^2, the curvature the disc rims add to t.Ct along t (``bend`` = lambda)."""
     total = 0.0
     for i in range(tx.size):
-        total += tx[i] * rx[i] + ty[i] * ry[i] + bend[i] * (tx[i] * tx[i] + ty[i] * ty[i])
+        total += bend[i] * (tx[i] * tx[i] + ty[i] * ty[i])
     return total
 
 

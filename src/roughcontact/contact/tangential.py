@@ -372,6 +372,7 @@ def _coupled_step(
                 budget = max_iterations if fallback is None else min(max_iterations, PLAIN_ITERATIONS)
                 increment = _shear_cg.solve_increment(
                     operator.shear,
+                    operator.shear_energy,
                     mu * pressure,
                     offset,
                     max_iterations=budget,
@@ -384,6 +385,7 @@ def _coupled_step(
                 iterations += budget
                 increment = _shear_cg.solve_increment(
                     operator.shear,
+                    operator.shear_energy,
                     mu * pressure,
                     offset,
                     max_iterations=max_iterations,

@@ -256,6 +256,31 @@ class TractionCompliance:
             self._prepared["shear"] = {name: self._fft.prepared(self._k[name]) for name in ("xx", "xy", "yy")}
         return self._symmetric_multiplier(self._prepared["shear"], qx, qy)
 
+    def shear_energy(self, tx: np.ndarray, ty: np.ndarray) -> float:
+        """Return t . C t [Pa m] of a traction field t = (t_x, t_y) [Pa] (C = :meth:`shear`).
+
+        Computed in Fourier space by Parseval's theorem (the multiplier is real and symmetric):
+        two forward transforms, against the four transforms and a product of
+        ``np.vdot(t, shear(t))``; equal to it to round-off.
+        """
+        if "energy" not in self._prepared:
+            weights = {name: self._fft.quadratic_form_weights(self._k[name]) for name in ("xx", "xy", "yy")}
+            self._prepared["energy"] = weights
+        weights = self._prepared["energy"]
+        fft = self._fft
+        with fft.staged() as staged:
+            fx = self._forward_into_work(staged, tx)
+            staged[...] = ty
+            return _symmetric_power(weights["xx"], weights["xy"], weights["yy"], fx, fft.forward_staged())
+
+    def _forward_into_work(self, staged: np.ndarray, field: np.ndarray) -> np.ndarray:
+        """rfft2 of ``field`` into the operator's work spectrum (inside ``self._fft.staged()``)."""
+        if self._spectrum is None:
+            self._spectrum = np.empty(self._fft.spectrum_shape, dtype=complex)
+        staged[...] = field
+        self._spectrum[...] = self._fft.forward_staged()
+        return self._spectrum
+
     def inverse_shear(self, sx: np.ndarray, sy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Apply the mode-wise inverse of the 2 x 2 shear kernel: tractions [Pa] of displacements [m].
 
@@ -285,12 +310,8 @@ class TractionCompliance:
         in one pass over the spectra (no temporaries).
         """
         fft = self._fft
-        if self._spectrum is None:
-            self._spectrum = np.empty(fft.spectrum_shape, dtype=complex)
         with fft.staged() as staged:
-            staged[...] = ax
-            fx = self._spectrum
-            fx[...] = fft.forward_staged()
+            fx = self._forward_into_work(staged, ax)
             staged[...] = ay
             fy = fft.forward_staged()
             _mix_symmetric(matrix["xx"], matrix["xy"], matrix["yy"], fx, fy)  # fy <- x result, fx <- y result
@@ -322,3 +343,17 @@ def _mix_symmetric(xx, xy, yy, fx, fy):
         x, y = a[i], b[i]
         b[i] = mxx[i] * x + mxy[i] * y
         a[i] = mxy[i] * x + myy[i] * y
+
+
+@nb.njit(cache=True, nogil=True)
+def _symmetric_power(wxx, wxy, wyy, fx, fy):
+    """Return sum wxx |fx|^2 + 2 wxy Re(conj(fx) fy) + wyy |fy|^2 over the modes."""
+    a, b = fx.ravel(), fy.ravel()
+    mxx, mxy, myy = wxx.ravel(), wxy.ravel(), wyy.ravel()
+    total = 0.0
+    for i in range(a.size):
+        x, y = a[i], b[i]
+        cross = x.real * y.real + x.imag * y.imag
+        total += mxx[i] * (x.real * x.real + x.imag * x.imag) + 2.0 * mxy[i] * cross
+        total += myy[i] * (y.real * y.real + y.imag * y.imag)
+    return total
