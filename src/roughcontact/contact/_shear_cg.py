@@ -29,11 +29,12 @@ half-line p >= 0 to discs:
    over the stick set. t = z + beta t_old with beta = |z|^2/|z_old|^2, reset to 0 whenever the
    stick set changed (Polonsky-Keer's reset when points enter or leave).
 4. tau = (z.t) / (t.Ct + sum_slip lambda_i |t_i|^2) (t.Ct by Parseval's theorem from two
-   forward FFTs; C t itself is never formed), where the second term, with the slip multiplier lambda_i = -w_i.q_i / (|q_i| c_i), is the curvature the rim
-   adds when a slipping point turns (the Hessian of the Lagrangian on the rim; without it a
-   slipping contact under a large slip increment overshoots and never settles); q -= tau t;
-   project every point radially onto its disc; under force control give the lost force back to
-   the stick set (uniformly, projected again) until the total is met.
+   forward FFTs; C t itself is never formed), where the second term, with the slip multiplier
+   lambda_i = -w_i.q_i / (|q_i| c_i), is the curvature the rim adds when a slipping point turns
+   (the Hessian of the Lagrangian on the rim; without it a slipping contact under a large slip
+   increment overshoots and never settles); q -= tau t; project every point radially onto its
+   disc; under force control give the lost force back to the stick set (uniformly, projected
+   again) until the total is met.
 
 Residual (scale-free, the same number in nm or m):
 
