@@ -55,15 +55,33 @@ class ConvergenceError(RuntimeError):
         Iterations performed.
     tolerance : float
         Tolerance that was asked for.
+    stalled_at : float, optional
+        The lowest residual of a solver that stopped because it stalled (its residual stopped
+        falling long before ``max_iterations``): the accuracy the problem reaches in floating
+        point, so a tolerance a few times above it can be met.
     """
 
-    def __init__(self, solver: str, residual: float, iterations: int, tolerance: float):
+    def __init__(
+        self,
+        solver: str,
+        residual: float,
+        iterations: int,
+        tolerance: float,
+        stalled_at: float | None = None,
+    ):
         self.solver = solver
         self.residual = residual
         self.iterations = iterations
         self.tolerance = tolerance
+        self.stalled_at = stalled_at
+        if stalled_at is None:
+            fix = "raise max_iterations, loosen tolerance knowingly, or refine the grid."
+        else:
+            fix = (
+                f"the residual stalled at {stalled_at:.3g} (the round-off floor of this problem, which "
+                f"rises with the grid size); ask for a tolerance of at least {2 * stalled_at:.1g}."
+            )
         super().__init__(
             f"{solver} did not converge: residual {residual:.3g} > tolerance {tolerance:.3g} "
-            f"after {iterations} iterations. Fix: raise max_iterations, loosen tolerance "
-            f"knowingly, or refine the grid."
+            f"after {iterations} iterations. Fix: {fix}"
         )

@@ -75,3 +75,21 @@ def test_non_convergence_raises_with_residual_and_iterations():
     with pytest.raises(ConvergenceError) as error:
         solve_normal(t, 1e10, mean_pressure=1e7, tolerance=1e-14, max_iterations=3)
     assert error.value.iterations == 3 and error.value.residual > 1e-14
+
+
+def test_a_tolerance_below_the_round_off_floor_stops_early_and_names_the_floor():
+    """Below the floor the preconditioned residual stops falling: the solve says so at once, not after
+    max_iterations, and a tolerance twice the floor it reports is met."""
+    from roughcontact.contact._constrained_cg import STALL_ITERATIONS
+    from roughcontact.errors import ConvergenceError
+    from roughcontact.topography.generate import self_affine
+
+    surface = self_affine((256, 256), (1e-4, 1e-4), hurst=0.8, rms_slope=0.1, seed=256)
+    load = {"mean_pressure": 5e6, "max_iterations": 10_000}
+    with pytest.raises(ConvergenceError, match="stalled at") as error:
+        solve_normal(surface, 1e9, tolerance=1e-16, **load)
+    floor = error.value.stalled_at
+    assert 1e-16 < floor < 1e-11  # measured 1.1e-13 on this surface
+    assert error.value.iterations < 100 + STALL_ITERATIONS  # converged to the floor in ~60
+    result = solve_normal(surface, 1e9, tolerance=2 * floor, **load)
+    assert result.residual <= 2 * floor

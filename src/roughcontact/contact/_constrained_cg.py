@@ -187,6 +187,7 @@ def solve(
     # pressure (see the module docstring); plain Polonsky-Keer lets them enter by -tau g.
     admit = precondition
     delta = approach
+    halved, halved_at, lowest = np.inf, 0, np.inf  # stall detection (preconditioned): see STALL_ITERATIONS
     with compliance.staged() as ops:  # the transforms' input buffers, written by the fused passes
         ops.pressure[...] = p
         for iteration in range(max_iterations + 1):
@@ -204,6 +205,11 @@ def solve(
                 return EngineResult(scale * p, scale * u, g, float(delta), iteration, residual)
             if iteration == max_iterations:
                 break
+            lowest = min(lowest, residual)
+            if residual < 0.5 * halved:
+                halved, halved_at = residual, iteration
+            elif precondition and iteration - halved_at >= STALL_ITERATIONS:
+                raise ConvergenceError(solver, residual, iteration, tolerance, stalled_at=lowest)
             if not precondition:
                 z, z_sum, gz_sum = g, g_sum, gg_sum  # read on the step set only
             else:  # M g restricted to the step set (Vollebregt 2014), M in single precision
@@ -226,6 +232,19 @@ def solve(
             conjugate = entered == 0
             scale = target / p_sum if load_control and p_sum > 0 else 1.0
     raise ConvergenceError(solver, residual, max_iterations, tolerance)
+
+
+STALL_ITERATIONS = 200
+"""Preconditioned iterations without the residual halving after which a solve is declared stalled.
+
+Converging solves halve it every 3-15 iterations at the longest (self-affine 256^2 to 2048^2,
+free Hertz). Below a floor the residual stops falling altogether: with preconditioning or
+without, in double or in single precision, on the benchmark's self-affine surfaces (tolerance
+asked 1e-14 to 1e-16) it stalls at about 1e-13, 1e-12, 7e-12, 7e-11 and 1.4e-10 at 256^2, 512^2,
+1024^2, 2048^2 and 4096^2, with the set fixed and the gap error spread over the whole contact.
+Plain Polonsky-Keer is not checked: it can go 900 iterations without halving and then converge
+(free Hertz at 256^2).
+"""
 
 
 def _residual(weighted_gap: float, overlap: float, open_gap: float, height_scale: float) -> float:
