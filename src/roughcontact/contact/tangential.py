@@ -40,10 +40,12 @@ from __future__ import annotations
 
 import numbers
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
 from .. import __version__
+from ..elasticity.halfspace import SurfaceCompliance
 from ..elasticity.tangential import TractionCompliance
 from ..errors import ConvergenceError, InputError
 from ..materials import Material, contact_modulus
@@ -237,25 +239,23 @@ def solve_tangential(
     iterations = np.zeros(n, dtype=int)
     passes = np.zeros(n, dtype=int)
     states: dict[int, TangentialState] = {}
+    stepper = _Stepper(
+        operator=operator,
+        normal_operator=normal_operator,
+        separation=separation,
+        normal_force=normal_force,
+        mu=mu,
+        tolerance=tolerance,
+        coupling_tolerance=coupling_tolerance,
+        max_iterations=max_iterations,
+        max_passes=max_coupling_iterations,
+        preconditioner=_preconditioning(precondition, operator) if apg is None else None,
+        apg=apg,
+    )
     for step, target in enumerate(path):
         control = {"force": tuple(target)} if load_control else {"displacement": tuple(target)}
-        pressure, slip_from_p, increment, iterations[step], passes[step] = _coupled_step(
-            operator,
-            normal_operator if coupled else None,
-            separation,
-            normal_force,
-            mu,
-            pressure,
-            slip_from_p,
-            (qx, qy),
-            (slip_x, slip_y),
-            control,
-            tolerance,
-            coupling_tolerance,
-            max_iterations,
-            max_coupling_iterations,
-            _preconditioning(precondition, operator) if apg is None else None,
-            apg,
+        pressure, slip_from_p, increment, iterations[step], passes[step] = stepper.step(
+            pressure, slip_from_p, (qx, qy), (slip_x, slip_y), control
         )
         qx, qy = increment.qx, increment.qy
         contact = pressure > 0
@@ -316,121 +316,103 @@ def _preconditioning(precondition, operator):
     raise InputError("precondition", f"got {precondition!r}.", "use 'auto', True or False.")
 
 
-def _coupled_step(
-    operator,
-    normal_operator,
-    separation,
-    normal_force,
-    mu,
-    pressure,
-    slip_from_p,
-    shear,
-    slip,
-    control,
-    tolerance,
-    coupling_tolerance,
-    max_iterations,
-    max_passes,
-    preconditioner,
-    apg=None,
-):
-    """One step: the tangential increment, alternated with normal solves when coupled.
+@dataclass(frozen=True)
+class _Stepper:
+    """Solves the steps of one path: what stays fixed along it, and one method per part of a step.
 
-    Returns the pressure, the slip it causes, the increment, the iterations and the passes.
-    ``normal_operator`` is None when uncoupled (one pass). ``apg`` (the options of
+    ``normal_operator`` is None when uncoupled (one pass per step). ``apg`` (the options of
     :func:`_shear_apg.solve_increment <roughcontact.contact._shear_apg.solve_increment>`)
-    selects the accelerated projected-gradient solver instead of the conjugate gradients
-    (``preconditioner`` is then unused).
+    selects the accelerated projected-gradient solver; otherwise ``preconditioner`` is the
+    conjugate gradients' (first, fallback) pair of :func:`_preconditioning`.
     """
-    qx, qy = shear
-    iterations = 0
-    for coupling_pass in range(1, max_passes + 1):
-        previous_p, previous_q = pressure, (qx, qy)
-        if normal_operator is not None and (np.any(qx) or np.any(qy)):
-            pressure = _coupled_pressure(
-                normal_operator,
-                operator,
-                separation,
-                qx,
-                qy,
-                pressure,
-                normal_force,
-                operator.pixel_area,
-                tolerance,
-                max_iterations,
+
+    operator: TractionCompliance
+    normal_operator: SurfaceCompliance | None
+    separation: np.ndarray
+    normal_force: float
+    mu: float
+    tolerance: float
+    coupling_tolerance: float
+    max_iterations: int
+    max_passes: int
+    preconditioner: tuple | None
+    apg: dict | None
+
+    def step(self, pressure, slip_from_p, shear, slip, control):
+        """One step: the tangential increment, alternated with normal solves when coupled.
+
+        Returns the pressure, the slip it causes, the increment, the iterations and the passes.
+        """
+        qx, qy = shear
+        iterations = 0
+        for coupling_pass in range(1, self.max_passes + 1):
+            previous_p, previous_q = pressure, (qx, qy)
+            if self.normal_operator is not None and (np.any(qx) or np.any(qy)):
+                pressure = self.coupled_pressure(qx, qy, pressure)
+                slip_from_p = self.operator.slip_from_pressure(pressure)
+            offset = (slip_from_p[0] - slip[0], slip_from_p[1] - slip[1])
+            increment, used = self.increment(pressure, offset, (qx, qy), control)
+            qx, qy = increment.qx, increment.qy
+            iterations += used
+            if self.normal_operator is None:
+                return pressure, slip_from_p, increment, iterations, coupling_pass
+            scale_p = max(float(np.max(pressure)), 1e-300)
+            change = max(
+                float(np.max(np.abs(pressure - previous_p))) / scale_p,
+                float(np.max(np.abs(qx - previous_q[0]) + np.abs(qy - previous_q[1]))) / (self.mu * scale_p),
             )
-            slip_from_p = operator.slip_from_pressure(pressure)
-        arguments = dict(pixel_area=operator.pixel_area, initial=(qx, qy), tolerance=tolerance, **control)
-        offset = (slip_from_p[0] - slip[0], slip_from_p[1] - slip[1])
-        if apg is not None:
-            increment = _shear_apg.solve_increment(
-                operator.shear, mu * pressure, offset, max_iterations=max_iterations, **arguments, **apg
-            )
-        else:
-            first, fallback = preconditioner
-            try:
-                budget = max_iterations if fallback is None else min(max_iterations, PLAIN_ITERATIONS)
-                increment = _shear_cg.solve_increment(
-                    operator.shear,
-                    operator.shear_energy,
-                    mu * pressure,
-                    offset,
-                    max_iterations=budget,
-                    preconditioner=first,
-                    **arguments,
-                )
-            except ConvergenceError:
-                if fallback is None:
-                    raise
-                iterations += budget
-                increment = _shear_cg.solve_increment(
-                    operator.shear,
-                    operator.shear_energy,
-                    mu * pressure,
-                    offset,
-                    max_iterations=max_iterations,
-                    preconditioner=fallback,
-                    **arguments,
-                )
-        qx, qy = increment.qx, increment.qy
-        iterations += increment.iterations
-        if normal_operator is None:
-            return pressure, slip_from_p, increment, iterations, coupling_pass
-        scale_p = max(float(np.max(pressure)), 1e-300)
-        change = max(
-            float(np.max(np.abs(pressure - previous_p))) / scale_p,
-            float(np.max(np.abs(qx - previous_q[0]) + np.abs(qy - previous_q[1]))) / (mu * scale_p),
+            if change <= self.coupling_tolerance:
+                return pressure, slip_from_p, increment, iterations, coupling_pass
+        raise ConvergenceError(
+            "solve_tangential (normal-tangential coupling)", change, self.max_passes, self.coupling_tolerance
         )
-        if change <= coupling_tolerance:
-            return pressure, slip_from_p, increment, iterations, coupling_pass
-    raise ConvergenceError(
-        "solve_tangential (normal-tangential coupling)", change, max_passes, coupling_tolerance
-    )
 
+    def increment(self, pressure, offset, initial, control):
+        """Return the increment at fixed pressure and its iterations (a failed plain run's included)."""
+        operator = self.operator
+        arguments = dict(pixel_area=operator.pixel_area, initial=initial, tolerance=self.tolerance, **control)
+        bound = self.mu * pressure
+        if self.apg is not None:
+            increment = _shear_apg.solve_increment(
+                operator.shear, bound, offset, max_iterations=self.max_iterations, **arguments, **self.apg
+            )
+            return increment, increment.iterations
 
-def _coupled_pressure(
-    normal_operator,
-    operator,
-    separation,
-    qx,
-    qy,
-    pressure,
-    normal_force,
-    pixel_area,
-    tolerance,
-    max_iterations,
-):
-    """Pressure at F_0 with the normal displacement of the shear tractions added to the separation."""
-    shifted = separation + operator.normal_from_shear(qx, qy)
-    shifted -= shifted.min()
-    raw = _constrained_cg.solve(
-        normal_operator,
-        shifted,
-        pixel_area=pixel_area,
-        force=normal_force,
-        initial_pressure=pressure,
-        tolerance=tolerance,
-        max_iterations=max_iterations,
-        solver="solve_tangential (coupled normal step)",
-    )
-    return raw.pressure
+        def conjugate_gradients(preconditioner, budget):
+            return _shear_cg.solve_increment(
+                operator.shear,
+                operator.shear_energy,
+                bound,
+                offset,
+                max_iterations=budget,
+                preconditioner=preconditioner,
+                **arguments,
+            )
+
+        first, fallback = self.preconditioner
+        if fallback is None:
+            increment = conjugate_gradients(first, self.max_iterations)
+            return increment, increment.iterations
+        budget = min(self.max_iterations, PLAIN_ITERATIONS)
+        try:
+            increment = conjugate_gradients(first, budget)
+            return increment, increment.iterations
+        except ConvergenceError:
+            increment = conjugate_gradients(fallback, self.max_iterations)
+            return increment, budget + increment.iterations
+
+    def coupled_pressure(self, qx, qy, pressure):
+        """Pressure at F_0 with the normal displacement of the shear tractions added to the separation."""
+        shifted = self.separation + self.operator.normal_from_shear(qx, qy)
+        shifted -= shifted.min()
+        raw = _constrained_cg.solve(
+            self.normal_operator,
+            shifted,
+            pixel_area=self.operator.pixel_area,
+            force=self.normal_force,
+            initial_pressure=pressure,
+            tolerance=self.tolerance,
+            max_iterations=self.max_iterations,
+            solver="solve_tangential (coupled normal step)",
+        )
+        return raw.pressure
