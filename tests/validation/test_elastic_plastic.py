@@ -85,3 +85,21 @@ def test_capped_force_control_warm_started_from_a_neighbour_matches_a_cold_solve
     assert warm.approach == pytest.approx(cold.approach, rel=1e-10, abs=0)
     assert np.max(np.abs(warm.pressure - cold.pressure)) <= 1e-8 * hardness
     assert warm.pressure.max() <= hardness
+
+
+def test_capped_force_control_reports_the_iterations_of_its_whole_root_search(monkeypatch):
+    """Under a cap the approach of a force is found by displacement-controlled solves; the result
+    counts all of their iterations (it used to report the last solve's alone, often 0)."""
+    from roughcontact.contact import _constrained_cg
+
+    engine, counted = _constrained_cg.solve, []
+
+    def counting(*args, **kwargs):
+        raw = engine(*args, **kwargs)
+        counted.append(raw.iterations)
+        return raw
+
+    monkeypatch.setattr(_constrained_cg, "solve", counting)
+    result = solve_normal(_ball(), MATERIAL, force=FORCE, hardness=0.7 * HERTZ.peak_pressure, tolerance=1e-10)
+    assert len(counted) > 2 and counted[-1] < max(counted)
+    assert result.iterations == sum(counted)

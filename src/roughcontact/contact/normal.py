@@ -15,6 +15,8 @@ elastic-perfectly-plastic surface model, see :mod:`roughcontact.contact.plastic`
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 from scipy import optimize
 
@@ -244,7 +246,8 @@ def _capped_at_force(compliance, separation, target_force, initial, guess, measu
 
     The root is bracketed around ``guess`` (the approach of the warm start, e.g. the previous step
     of a load path) when there is one, else in [0, 2^k ptp(h0)]; every solve is warm-started from
-    the last one and evaluated once (Brent's method revisits its bracket ends).
+    the last one and evaluated once (Brent's method revisits its bracket ends). The result is the
+    solve at the root, with the iterations of all the solves of the search.
     """
     capacity = hardness * separation.size * measure
     if target_force >= capacity:
@@ -276,7 +279,7 @@ def _capped_at_force(compliance, separation, target_force, initial, guess, measu
     relative = common["tolerance"]
     delta = optimize.brentq(excess, low, high, xtol=relative * high, rtol=max(relative, 4e-16))
     excess(delta)
-    return solved[delta]
+    return dataclasses.replace(solved[delta], iterations=sum(raw.iterations for raw in solved.values()))
 
 
 def _bracket_around(excess, guess: float, target_force: float) -> tuple[float, float]:

@@ -59,7 +59,8 @@ class NormalContactResult:
     boundary : str
         "periodic" or "free".
     iterations : int
-        Conjugate-gradient iterations.
+        Conjugate-gradient iterations (under load control with a hardness: of all the
+        displacement-controlled solves of the root search for the approach).
     residual : float
         Scale-free residual at the returned iterate (see ``roughcontact.contact._constrained_cg``).
     tolerance : float
