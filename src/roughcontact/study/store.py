@@ -19,38 +19,19 @@ exists, and that is written after its ``.nc``.
 
 from __future__ import annotations
 
-import contextlib
 import csv
 import io
 import json
 import os
-import tempfile
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
+from .._files import replacing
 from .._json import json_ready
 from .kind import CaseRecord
 
 CASES = "cases"
-
-
-@contextlib.contextmanager
-def replacing(path: Path) -> Iterator[Path]:
-    """Yield a temporary path beside ``path``; rename it into place on success, remove it on failure.
-
-    So a killed or failed write leaves either the whole file or none (a ``.*.part`` leftover of a
-    killed process is removed by :func:`clean_partial_files`).
-    """
-    path.parent.mkdir(parents=True, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".part")
-    os.close(handle)
-    try:
-        yield Path(temporary)
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
 
 
 def write_atomically(path: Path, data: bytes | str) -> None:

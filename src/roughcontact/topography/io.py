@@ -31,7 +31,6 @@ import io
 import json
 import os
 import shlex
-import uuid
 import zlib
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
@@ -42,6 +41,7 @@ from typing import Any
 
 import numpy as np
 
+from .._files import replacing
 from ..errors import InputError, UnitError, UnsupportedFormatError
 from ..units import length_unit_factor, quantity
 from .process import fill_undefined
@@ -742,21 +742,18 @@ def _decode_info(text: str) -> dict[str, Any]:
 
 
 def _write_atomically(dataset, path: Path, encoding: dict) -> None:
-    """Write ``dataset`` next to ``path`` under a temporary name, then rename it into place."""
-    folder = path.parent
-    if not folder.is_dir():
+    """Write ``dataset`` through a temporary file beside ``path`` (:func:`roughcontact._files.replacing`).
+
+    The folder must exist (it is not created); a failed write is an :class:`InputError` naming the path.
+    """
+    if not path.parent.is_dir():
         raise InputError(
-            "path", f"folder {folder} does not exist.", "create it first or choose another path."
+            "path", f"folder {path.parent} does not exist.", "create it first or choose another path."
         )
-    temporary = folder / f".{path.name}.{uuid.uuid4().hex}.tmp"
     try:
-        dataset.to_netcdf(temporary, engine="h5netcdf", encoding=encoding)
-        os.replace(temporary, path)
+        with replacing(path) as temporary:
+            dataset.to_netcdf(temporary, engine="h5netcdf", encoding=encoding)
     except OSError as error:
-        temporary.unlink(missing_ok=True)
         raise InputError(
             "path", f"cannot write {path}: {_first_line(error)}", "choose a writable folder with free space."
         ) from error
-    except BaseException:
-        temporary.unlink(missing_ok=True)
-        raise
