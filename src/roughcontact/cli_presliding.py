@@ -132,6 +132,43 @@ def _report(cases: list, out: Path, measured, json_output: bool) -> int:
     return 0
 
 
+def _report_programme(case, out: Path, measured, json_output: bool) -> int:
+    """Write and print a user programme's results: per-step CSV, JSON row, loop and stick/slip figures."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from .plotting.presliding import plot_hysteresis_loops, plot_stick_slip_maps
+
+    out.mkdir(parents=True, exist_ok=True)
+    _write_loop(out / "path_result.csv", case.result)
+    row = case.scalars()
+    (out / "presliding.json").write_text(json.dumps(json_ready(row), indent=2))
+    plot_hysteresis_loops([(*case.loop(), case.label)], measured).savefig(out / "loops.png", dpi=150)
+    maps = _maps(case.label, case.result, case.map_steps)
+    extent = _extent(case.result.normal.topography)
+    figure = plot_stick_slip_maps(maps, dict.fromkeys(maps, extent), zoom=_contact_box([case]))
+    figure.savefig(out / "stick_slip.png", dpi=150)
+    if json_output:
+        print(json.dumps(json_ready(row)))
+        return 0
+    result, stick = case.result, 100 * row["last_stick_fraction"]
+    print(
+        f"{case.label}: {result.steps} steps under {case.control} control, mu {case.friction_coefficient:g}; "
+        f"last step delta_x {format_si(result.displacement[-1, 0], 'm')}, "
+        f"F_x {format_si(result.force[-1, 0], 'N')}, stick {stick:.1f} % of the contact"
+    )
+    for k, energy in enumerate(row["energy_per_loop [J]"], 1):
+        print(f"loop {k}: dissipated energy {format_si(energy, 'J')}")
+    if case.analysis is not None:
+        stiffness = ", ".join(
+            f"{p} {format_si(v, 'N/m')}" for p, v in case.analysis.lateral_stiffness.items()
+        )
+        stroke = format_si(case.analysis.stroke, "m")
+        print(f"last loop: stroke {stroke}, mu {case.analysis.mu:.4f}, K_L {stiffness}")
+    print(f"wrote {out}/presliding.json, path_result.csv, loops.png, stick_slip.png")
+    return 0
+
+
 def _measured(args) -> list | None:
     if args.measured is None:
         return None
@@ -142,6 +179,7 @@ def _measured(args) -> list | None:
 
 
 def _presliding(args: argparse.Namespace) -> int:
+    from .contact.paths import read_path_csv
     from .models import paper001
 
     common = dict(
@@ -167,15 +205,32 @@ def _presliding(args: argparse.Namespace) -> int:
     else:
         if args.file is None:
             raise InputError("FILE", "no ball topography given.", "pass a FILE, or --paper001.")
-        for name in ("force", "mu", "stroke"):
+        if args.path is not None and args.stroke is not None:
+            raise InputError("--path", "give --stroke (paper 001's cycles) or --path, not both.", None)
+        for name in ("force", "mu") + (() if args.path is not None else ("stroke",)):
             if getattr(args, name) is None:
                 raise InputError(f"--{name}", "missing.", f"give --{name} (or use --paper001).")
+        programme = None if args.path is None else read_path_csv(args.path)
         scan = _read(args)
         material = _material(args, "material", required=True)
         counter = _material(args, "counter")
         load = quantity(args.force, "force", field="--force")
         if args.window is not None:
             scan = paper001.central_window(scan, args.window)
+        if programme is not None:
+            case = paper001.programme_case(
+                scan,
+                material,
+                counter,
+                load,
+                path=programme[0],
+                control=programme[1],
+                friction_coefficient=args.mu,
+                label=f"{Path(args.file).stem} {load * 1e3:g} mN",
+                coupling=not args.no_coupling,
+                tolerance=args.tolerance,
+            )
+            return _report_programme(case, args.output, _measured(args), args.json)
         cases.append(
             paper001.presliding_case(
                 scan,
@@ -227,8 +282,9 @@ def add_presliding_commands(commands) -> None:
         parents=[_read_options(file_required=False)],
         help="partial-slip friction loops of a rough ball on a flat, K_L vs Mindlin (paper 001)",
         description="Press the ball FILE (heights with its spherical shape) on a flat with --force, move the "
-        "flat 0 -> --stroke -> 0 for --cycles cycles, and analyse the last loop; or run paper 001's "
-        "HDPE/POM cases with --paper001 (generated balls, Table 1 loads, strokes and mu).",
+        "flat 0 -> --stroke -> 0 for --cycles cycles, and analyse the last loop; or drive it along your own "
+        "displacement or force programme (--path CSV); or run paper 001's HDPE/POM cases with --paper001 "
+        "(generated balls, Table 1 loads, strokes and mu).",
     )
     _add_material_options(presliding, "the ball", "the flat (default: rigid)", "HDPE, POM, 'silicon wafer'")
     presliding.add_argument("--paper001", action="store_true", help="paper 001's balls and Table 1")
@@ -239,9 +295,20 @@ def add_presliding_commands(commands) -> None:
     presliding.add_argument("--force", help="normal force F0, e.g. '25 mN'")
     presliding.add_argument("--mu", type=float, help="friction coefficient mu_f")
     presliding.add_argument("--stroke", help="stroke d_s, e.g. '2.8 um'")
+    presliding.add_argument(
+        "--path",
+        type=Path,
+        help="instead of --stroke: your tangential programme, a CSV with one row per step and units "
+        "in the header: 'x [um]' or 'x [um],y [um]' (displacement control), 'Q_x [mN],Q_y [mN]' "
+        "(force control)",
+    )
     presliding.add_argument("--radius", default="5 mm", help="ball radius for Mindlin's K_L (default 5 mm)")
-    presliding.add_argument("--cycles", type=int, default=4, help="cycles of the path (default 4, as Fig. 6)")
-    presliding.add_argument("--steps-per-stroke", type=int, default=20, help="steps per branch (default 20)")
+    presliding.add_argument(
+        "--cycles", type=int, default=4, help="with --stroke: cycles of the path (default 4, as Fig. 6)"
+    )
+    presliding.add_argument(
+        "--steps-per-stroke", type=int, default=20, help="with --stroke: steps per branch (default 20)"
+    )
     presliding.add_argument(
         "--window",
         type=int,

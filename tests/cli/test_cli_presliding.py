@@ -3,6 +3,7 @@
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from roughcontact.cli import EXIT_INPUT_ERROR, main
@@ -111,3 +112,73 @@ def test_loop_analysis_of_the_measured_example(capsys):
     assert scalars["mu"] == pytest.approx(0.153, rel=0.005)
     status, out, _ = run(capsys, "loop-analysis", MEASURED, "--normal-force", "25 mN")
     assert "K_L at A" in out and "stroke" in out
+
+
+BALL_OPTIONS = ("--material", "POM", "--counter", "silicon wafer", "--force", "5 mN", "--mu", "0.1")
+
+
+def _steps(path) -> list[dict]:
+    import csv
+
+    with open(path, newline="") as handle:
+        return list(csv.DictReader(handle))
+
+
+def test_a_path_file_reproduces_the_stroke_programme(capsys, tmp_path, ball_file):
+    """The same steps written in a CSV (in um) give the --stroke run's forces, to round-off."""
+    from roughcontact.contact.paths import stroke_path
+
+    steps = stroke_path(0.4e-6, cycles=2, steps_per_stroke=10, spacing="quadratic")
+    path = tmp_path / "path.csv"
+    path.write_text("x [um]\n" + "\n".join(repr(float(1e6 * d)) for d in steps) + "\n")
+    common = (ball_file, *BALL_OPTIONS)
+    stroke = ("--stroke", "0.4 um", "--cycles", "2", "--steps-per-stroke", "10")
+    status, _, err = run(capsys, "presliding", *common, *stroke, "-o", tmp_path / "stroke")
+    assert status == 0, err
+    status, out, err = run(capsys, "presliding", *common, "--path", path, "-o", tmp_path / "path", "--json")
+    assert status == 0, err
+    row = json.loads(out)
+    assert row["control"] == "displacement" and row["steps"] == len(steps)
+    expected = _steps(tmp_path / "stroke" / "loop_ball_5_mN.csv")
+    found = _steps(tmp_path / "path" / "path_result.csv")
+    for column in ("delta_x [m]", "F_x [N]", "stick_area [m^2]"):
+        np.testing.assert_allclose(
+            [float(r[column]) for r in found], [float(r[column]) for r in expected], rtol=1e-9, atol=1e-18
+        )
+    assert row["mu_from_loop"] == pytest.approx(0.1, rel=1e-3)
+    assert len(row["energy_per_loop [J]"]) == 1 and row["energy_per_loop [J]"][0] > 0
+    for name in ("presliding.json", "loops.png", "stick_slip.png", "path_result.csv"):
+        assert (tmp_path / "path" / name).stat().st_size > 0
+
+
+def test_a_force_path_file_runs_under_force_control(capsys, tmp_path, ball_file):
+    """Q_x in mN (+-0.5 mu F0 cycles): the applied forces are met; the loop dissipates energy."""
+    amplitude = 0.5 * 0.1 * 5.0  # mN
+    up = np.linspace(0, amplitude, 6)[1:]
+    down = np.linspace(amplitude, -amplitude, 11)[1:]
+    steps = np.concatenate([up, down, down[::-1][1:], [amplitude]])
+    path = tmp_path / "force.csv"
+    path.write_text("Q_x [mN],Q_y [mN]\n" + "\n".join(f"{float(q)!r},0" for q in steps) + "\n")
+    status, out, err = run(
+        capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path, "-o", tmp_path, "--json"
+    )
+    assert status == 0, err
+    row = json.loads(out)
+    assert row["control"] == "force"
+    forces = [float(r["F_x [N]"]) for r in _steps(tmp_path / "path_result.csv")]
+    np.testing.assert_allclose(forces, 1e-3 * steps, rtol=1e-9, atol=1e-15)
+    assert row["last_stick_fraction"] > 0  # below mu F0 part of the contact sticks
+    assert "mu_from_loop" not in row and "K_L_A [N/m]" not in row  # no sliding plateau to analyse
+    assert len(row["energy_per_loop [J]"]) == 1 and row["energy_per_loop [J]"][0] > 0
+
+
+def test_path_and_stroke_together_are_refused(capsys, tmp_path, ball_file):
+    path = tmp_path / "path.csv"
+    path.write_text("x [um]\n0.1\n")
+    status, _, err = run(
+        capsys, "presliding", ball_file, *BALL_OPTIONS, "--stroke", "1 um", "--path", path, "-o", tmp_path
+    )
+    assert status == EXIT_INPUT_ERROR and "--path" in err
+    path.write_text("x\n0.1\n")
+    status, _, err = run(capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path, "-o", tmp_path)
+    assert status == EXIT_INPUT_ERROR and "has no unit" in err

@@ -1,10 +1,18 @@
-"""Tangential loading programmes: displacement (or force) paths for :func:`solve_tangential`."""
+"""Tangential loading programmes: displacement (or force) paths for :func:`solve_tangential`.
+
+Built here (paper 001's Fig. 6 stroke path, the symmetric Mindlin-Deresiewicz cycles) or read
+from a text table (:func:`read_path_csv`, any user programme, displacement or force controlled).
+"""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 
+from .._text_table import read_text_table
 from ..errors import InputError
+from ..units import DIMENSIONS, unit_factor
 
 
 def _check_amplitude(name: str, value: float) -> float:
@@ -70,6 +78,17 @@ def symmetric_path(amplitude: float, *, cycles: int = 1, steps_per_stroke: int =
     return np.concatenate([first] + [down, down[::-1][1:].tolist() + [amplitude]] * int(cycles))
 
 
+def reversals(series) -> np.ndarray:
+    """Return the indices of the steps after which a path (one component, from 0) changes direction.
+
+    Steps that do not move are skipped: a hold between two strokes is no reversal.
+    """
+    dx = np.diff(np.concatenate([[0.0], np.asarray(series, dtype=float)]))
+    moving = np.flatnonzero(dx != 0)
+    turns = [moving[i] for i in range(1, len(moving)) if np.sign(dx[moving[i]]) != np.sign(dx[moving[i - 1]])]
+    return np.asarray([t - 1 for t in turns], dtype=int)
+
+
 def as_path(values, name: str) -> np.ndarray:
     """Return a path as an (n, 2) float array (a 1D path is along x); refuses NaN and empty paths."""
     path = np.asarray(values, dtype=float)
@@ -83,3 +102,85 @@ def as_path(values, name: str) -> np.ndarray:
             name, f"step {bad} is not a finite number ({path[bad].tolist()}).", "remove or fill it."
         )
     return path
+
+
+CONTROLS = {DIMENSIONS["length"]: "displacement", DIMENSIONS["force"]: "force"}
+"""The control a path column's unit selects: a length prescribes the rigid displacement, a force the force."""
+_PATH_FIX = (
+    "start the file with a header naming each column with its unit: 'x [um]' or 'x [um],y [um]' "
+    "(rigid tangential displacement), 'Q_x [mN]' or 'Q_x [mN],Q_y [mN]' (tangential force)."
+)
+
+
+def read_path_csv(path: str | Path, *, delimiter: str | None = None) -> tuple[np.ndarray, str]:
+    """Read a tangential loading programme: one row per step, x then (optionally) y.
+
+    The header must give every column a unit, and the units choose the control: lengths
+    (``x [um], y [um]``) prescribe the rigid tangential displacement of the counter-body, forces
+    (``Q_x [mN], Q_y [mN]``) the tangential force (see :func:`solve_tangential`). A column
+    named ``step`` and columns in units of time (``t [s]``) are ignored. The start (0, 0) is
+    the normal contact and is not a row. Units are converted once, through
+    :mod:`roughcontact.units`.
+
+    Parameters
+    ----------
+    path : str or Path
+        CSV, semicolon, tab or whitespace separated text file; ``#`` starts a comment line.
+    delimiter : str, optional
+        Column separator (detected when not given).
+
+    Returns
+    -------
+    programme : ndarray, shape (n, 2)
+        The programme in SI (m or N), x and y (0 when only x is given).
+    control : {"displacement", "force"}
+
+    Raises
+    ------
+    InputError
+        No header, a column without a unit, units of another or of mixed dimensions, more than
+        two value columns, a cell that is not a number, a NaN or infinite step, no rows.
+    UnitError
+        An unknown unit.
+    """
+    table = read_text_table(path, expected="one row per step, x then y", delimiter=delimiter)
+    if table.names is None:
+        raise InputError("path", f"{path} has no header, so its units are unknown.", _PATH_FIX)
+    columns, factors, controls = [], [], set()
+    for index, (name, unit) in enumerate(zip(table.names, table.units, strict=True)):
+        if name == "step" and unit is None:
+            continue
+        if unit is None:
+            raise InputError("path", f"{path}: column {name!r} has no unit.", _PATH_FIX)
+        factor, dimension = unit_factor(unit)
+        if dimension == DIMENSIONS["time"]:
+            continue
+        if dimension not in CONTROLS:
+            raise InputError(
+                "path", f"{path}: column {name!r} is in [{unit}], neither a length nor a force.", _PATH_FIX
+            )
+        columns.append(index)
+        factors.append(float(factor))
+        controls.add(CONTROLS[dimension])
+    if not 1 <= len(columns) <= 2 or len(controls) != 1:
+        raise InputError(
+            "path",
+            f"{path}: {len(columns)} displacement or force column(s) ({sorted(controls)}); need one or two "
+            "of the same kind.",
+            _PATH_FIX,
+        )
+    values = np.array([_numbers(row, columns, number, path) for number, row in enumerate(table.rows, 1)])
+    if len(values) == 0:
+        raise InputError("path", f"{path} has a header but no steps.", "add one row per step.")
+    programme = values * np.array(factors)
+    return as_path(programme[:, 0] if len(columns) == 1 else programme, "path"), controls.pop()
+
+
+def _numbers(row: list[str], columns: list[int], number: int, path) -> list[float]:
+    """Return the cells ``columns`` of data row ``number`` as floats, or say which row is not numbers."""
+    try:
+        return [float(row[i]) for i in columns]
+    except (IndexError, ValueError):
+        raise InputError(
+            "path", f"{path}: data row {number} {row} is not numbers.", "give a number in every column."
+        ) from None

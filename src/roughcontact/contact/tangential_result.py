@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 
+from .paths import reversals
 from .result import NormalContactResult
 
 
@@ -138,13 +139,7 @@ class TangentialPathResult:
 
     def reversals(self, axis: int = 0) -> np.ndarray:
         """Return the indices of the steps where the prescribed path along ``axis`` changes direction."""
-        x = np.concatenate([[0.0], self._controlled(axis)])
-        dx = np.diff(x)
-        moving = np.flatnonzero(dx != 0)
-        turns = [
-            moving[i] for i in range(1, len(moving)) if np.sign(dx[moving[i]]) != np.sign(dx[moving[i - 1]])
-        ]
-        return np.asarray([t - 1 for t in turns], dtype=int)
+        return reversals(self._controlled(axis))
 
     def loops(self, axis: int = 0) -> list[tuple[int, int]]:
         """(start, stop) step indices of each closed loop.

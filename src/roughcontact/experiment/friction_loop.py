@@ -59,9 +59,7 @@ doi:10.1017/CBO9781139171731
 
 from __future__ import annotations
 
-import csv
 import math
-import re
 import warnings
 from dataclasses import dataclass
 from pathlib import Path
@@ -69,6 +67,7 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import OptimizeWarning, curve_fit
 
+from .._text_table import read_text_table
 from ..errors import InputError
 from ..units import quantity
 
@@ -116,7 +115,6 @@ class Loop:
 _DISPLACEMENT_NAMES = ("displacement", "delta", "disp", "x_cs", "x")
 _FORCE_NAMES = ("force", "friction", "f_x", "fx", "f")
 _TIME_NAMES = ("time", "t")
-_HEADER_UNIT = re.compile(r"^\s*([^\[\(]*?)\s*(?:[\[\(]\s*([^\]\)]*?)\s*[\]\)])?\s*$")
 
 
 def _factor(unit: str, dimension: str, field_name: str) -> float:
@@ -176,48 +174,14 @@ def read_loop_csv(
     newton = _factor(force_unit, "force", "force_unit")
     second = _factor(time_unit, "time", "time_unit")
     path = Path(path)
-    if not path.is_file():
-        raise InputError(
-            "path", f"{path} does not exist.", "give the path of a CSV with displacement and force."
-        )
-    lines = [
-        line.strip()
-        for line in path.read_text(encoding="utf-8-sig").splitlines()
-        if line.strip() and not line.lstrip().startswith("#")
-    ]
-    if not lines:
-        raise InputError("path", f"{path} has no data lines.", "give displacement,force rows.")
-    if delimiter is None:
-        delimiter = next((d for d in (",", ";", "\t") if d in lines[0]), None)
-    rows = [
-        [
-            cell.strip()
-            for cell in (next(csv.reader([line], delimiter=delimiter)) if delimiter else line.split())
-        ]
-        for line in lines
-    ]
-
-    def numeric(cell: str) -> bool:
-        try:
-            float(cell)
-        except ValueError:
-            return False
-        return True
-
-    header = None if all(numeric(cell) for cell in rows[0]) else rows[0]
-    data_rows = rows[1:] if header is not None else rows
-    width = len(rows[0])
-    if header is not None:
-        names, units = [], []
-        for cell in header:
-            match = _HEADER_UNIT.match(cell)
-            names.append((match.group(1) if match else cell).strip().lower())
-            units.append(match.group(2) if match else None)
+    table = read_text_table(path, expected="displacement,force rows", delimiter=delimiter)
+    names, units = table.names, table.units
+    if names is not None:
         i_d, i_f, i_t = (_find_column(names, c) for c in (_DISPLACEMENT_NAMES, _FORCE_NAMES, _TIME_NAMES))
         if i_d is None or i_f is None or i_d == i_f:
             raise InputError(
                 "path",
-                f"{path}: cannot find displacement and force columns in header {header}.",
+                f"{path}: cannot find displacement and force columns in header {names}.",
                 "name the columns 'displacement' and 'force' (optionally 'time').",
             )
         for index, unit, dimension, factor, argument in (
@@ -232,26 +196,26 @@ def read_loop_csv(
                     f"{unit!r} contradicts the header of {path}, which says [{stated}].",
                     f"pass {argument}={stated!r}.",
                 )
-    elif width == 2:
+    elif table.width == 2:
         i_d, i_f, i_t = 0, 1, None
-    elif width == 3:
+    elif table.width == 3:
         i_t, i_d, i_f = 0, 1, 2
     else:
         raise InputError(
             "path",
-            f"{path} has {width} columns and no header.",
+            f"{path} has {table.width} columns and no header.",
             "give a header naming the displacement and force columns.",
         )
     try:
-        table = np.array([[float(row[i]) for i in (i_d, i_f)] for row in data_rows], dtype=float)
-        times = None if i_t is None else np.array([float(row[i_t]) for row in data_rows]) * second
+        values = np.array([[float(row[i]) for i in (i_d, i_f)] for row in table.rows], dtype=float)
+        times = None if i_t is None else np.array([float(row[i_t]) for row in table.rows]) * second
     except (ValueError, IndexError) as error:
         raise InputError(
             "path", f"{path}: unreadable data row ({error}).", "give numbers in every column."
         ) from None
-    if table.size == 0:
+    if values.size == 0:
         raise InputError("path", f"{path} has a header but no data.", "add displacement,force rows.")
-    displacement, force = table[:, 0] * length, table[:, 1] * newton
+    displacement, force = values[:, 0] * length, values[:, 1] * newton
     _check_signal(displacement, force)
     return Loop(displacement, force, times, str(path))
 

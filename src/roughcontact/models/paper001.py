@@ -30,7 +30,7 @@ import numpy as np
 
 from ..analytic.mindlin import paper001_mindlin
 from ..contact import solve_normal
-from ..contact.paths import stroke_path
+from ..contact.paths import as_path, reversals, stroke_path
 from ..contact.tangential import solve_tangential
 from ..errors import InputError
 from ..experiment.friction_loop import LoopAnalysis, analyse_loop
@@ -205,6 +205,110 @@ def presliding_case(
         references,
         point_steps,
         notes,
+    )
+
+
+@dataclass(frozen=True)
+class ProgrammeCase:
+    """A ball under a user's tangential programme (displacement or force path, x and y).
+
+    ``analysis`` is the last loop's (as paper 001 analyses its Fig. 6 cycles) when the x
+    displacement programme closes a loop that slides, else None; ``map_steps`` names the steps
+    whose fields were kept (the reversals of the x programme and the last step).
+    """
+
+    label: str
+    normal_force: float
+    friction_coefficient: float
+    control: str
+    result: Any  # TangentialPathResult
+    analysis: LoopAnalysis | None
+    map_steps: dict[str, int]
+
+    def loop(self) -> tuple[np.ndarray, np.ndarray]:
+        """Displacement [m] and friction force [N] along x from the start (0, 0), all steps."""
+        return (
+            np.concatenate([[0.0], self.result.displacement[:, 0]]),
+            np.concatenate([[0.0], self.result.force[:, 0]]),
+        )
+
+    def scalars(self) -> dict[str, Any]:
+        """Table row: inputs, contact, the last step, energy per closed loop and the last loop's analysis."""
+        result = self.result
+        row = {
+            "case": self.label,
+            "control": self.control,
+            "steps": result.steps,
+            "F0 [N]": self.normal_force,
+            "mu": self.friction_coefficient,
+            "contact_area [m^2]": result.normal.contact_area,
+            "patches": result.normal.number_of_patches,
+            "last_delta_x [m]": float(result.displacement[-1, 0]),
+            "last_delta_y [m]": float(result.displacement[-1, 1]),
+            "last_F_x [N]": float(result.force[-1, 0]),
+            "last_F_y [N]": float(result.force[-1, 1]),
+            "last_stick_fraction": float(result.stick_area[-1] / result.contact_area[-1]),
+            "energy_per_loop [J]": result.dissipated_energy().tolist(),
+        }
+        if self.analysis is not None:
+            row |= {"mu_from_loop": self.analysis.mu, "stroke_from_loop [m]": self.analysis.stroke}
+            row |= {f"K_L_{name} [N/m]": value for name, value in self.analysis.lateral_stiffness.items()}
+        return row
+
+
+def programme_case(
+    surface: Topography,
+    material: Material,
+    counter: Material | None,
+    normal_force: float,
+    *,
+    path,
+    control: str,
+    friction_coefficient: float,
+    label: str = "",
+    coupling: bool = True,
+    tolerance: float = 1e-8,
+    maps: int = 6,
+) -> ProgrammeCase:
+    """Run any tangential programme on a ball surface (paper 001's model, a user's path).
+
+    Normal contact at ``normal_force`` (free boundary; the pressure must vanish on the window's
+    border), then ``path`` (an (n,) or (n, 2) array, the rigid tangential displacement [m] or the
+    tangential force [N] after each step, as ``control`` says; e.g. from
+    :func:`roughcontact.contact.paths.read_path_csv`) through :func:`solve_tangential`. When a
+    displacement programme closes a loop that reaches full sliding, the last loop is analysed as
+    paper 001 does (stroke, mu, K_L at A, B, C); a loop that never slides (a small stroke, any
+    force programme below mu F0) has no sliding plateau to take mu and the pre-sliding span from,
+    so it is not. Fields are kept at the last ``maps - 1`` reversals and at the last step.
+    """
+    if control not in ("displacement", "force"):
+        raise InputError("control", f"unknown control {control!r}.", "use 'displacement' or 'force'.")
+    path = as_path(path, control)
+    normal = solve_normal(surface, material, counter_body=counter, force=normal_force, tolerance=tolerance)
+    _check_inside(normal.pressure, label or "the surface")
+    turns = [int(k) for k in reversals(path[:, 0])]
+    kept = sorted(set(turns[max(len(turns) - maps + 1, 0) :]) | {len(path) - 1})
+    result = solve_tangential(
+        normal,
+        material,
+        counter_body=counter,
+        friction_coefficient=friction_coefficient,
+        coupling=coupling,
+        tolerance=tolerance,
+        fields_at=kept,
+        **{control: path},
+    )
+    analysis = None
+    if control == "displacement" and result.loops():
+        displacement = np.concatenate([[0.0], result.displacement[:, 0]])
+        analysis = analyse_loop(
+            displacement, np.concatenate([[0.0], result.force[:, 0]]), normal_force, fractions=POINTS
+        )
+        if analysis.mu is None:  # the loop never slides: no stroke, mu or pre-sliding span to analyse
+            analysis = None
+    map_steps = {f"step {k + 1}": k for k in kept}
+    return ProgrammeCase(
+        label, float(normal_force), float(friction_coefficient), control, result, analysis, map_steps
     )
 
 
