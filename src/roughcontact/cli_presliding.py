@@ -159,6 +159,8 @@ def _report_programme(case, out: Path, measured, json_output: bool) -> int:
     )
     for k, energy in enumerate(row["energy_per_loop [J]"], 1):
         print(f"loop {k}: dissipated energy {format_si(energy, 'J')}")
+    if case.note:
+        print(case.note)
     if case.analysis is not None:
         stiffness = ", ".join(
             f"{p} {format_si(v, 'N/m')}" for p, v in case.analysis.lateral_stiffness.items()

@@ -21,7 +21,7 @@ def _describe(study) -> list[str]:
     lines = [f"study {study.name!r} ({study.path}): {len(study.cases)} cases"]
     for analysis in study.analyses:
         swept = f", swept: {', '.join(analysis.sweep_axes)}" if analysis.sweep_axes else ""
-        lines.append(f"  {analysis.name:<16} {analysis.kind.name:<12} {len(analysis.cases):>4} cases{swept}")
+        lines.append(f"  {analysis.name:<16} {analysis.kind.name:<15} {len(analysis.cases):>4} cases{swept}")
     if study.files:
         lines.append(f"  input files: {len(study.files)} (hashes recorded)")
     return lines
@@ -152,9 +152,10 @@ def _models(args: argparse.Namespace) -> int:
     names = kind_names() if args.name is None else [args.name]
     if args.name is not None and args.name not in kind_names():
         raise InputError("NAME", f"unknown model {args.name!r}.", f"use one of {kind_names()}.")
+    width = max(map(len, names))
     for name in names:
         kind = get_kind(name)
-        print("\n".join(describe_kind(kind) if args.name else [f"{kind.name:<12} {kind.summary}"]))
+        print("\n".join(describe_kind(kind) if args.name else [f"{kind.name:<{width}} {kind.summary}"]))
     if args.name is None:
         print("roughcontact models NAME lists a model's keys")
     return 0

@@ -172,6 +172,19 @@ def test_a_force_path_file_runs_under_force_control(capsys, tmp_path, ball_file)
     assert len(row["energy_per_loop [J]"]) == 1 and row["energy_per_loop [J]"][0] > 0
 
 
+def test_a_loop_too_coarse_for_the_eq9_fit_keeps_its_results_and_says_why(capsys, tmp_path, ball_file):
+    """Two steps per stroke slide at once: no pre-sliding samples to fit, yet the run and its loop stand."""
+    path = tmp_path / "coarse.csv"
+    path.write_text("x [um]\n0.4\n0\n-0.4\n0\n0.4\n0\n-0.4\n0\n0.4\n")
+    status, out, err = run(
+        capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path, "-o", tmp_path, "--json"
+    )
+    assert status == 0, err
+    row = json.loads(out)
+    assert row["analysis_note"].startswith("last loop not analysed") and "K_L_A [N/m]" not in row
+    assert len(row["energy_per_loop [J]"]) == 2 and min(row["energy_per_loop [J]"]) > 0
+
+
 def test_path_and_stroke_together_are_refused(capsys, tmp_path, ball_file):
     path = tmp_path / "path.csv"
     path.write_text("x [um]\n0.1\n")

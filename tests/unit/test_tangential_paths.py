@@ -67,3 +67,5 @@ def test_reversals_of_the_stroke_path_and_holds():
     assert reversals(path).tolist() == [2, 5, 8]
     assert reversals([1.0, 2.0, 2.0, 1.0]).tolist() == [2]  # a hold is no reversal; its last step is
     assert reversals([1.0, 2.0, 3.0]).size == 0
+    held = 2.0 + np.array([0.0, 4e-16, -4e-16, 4e-16])  # a force held under force control, with round-off
+    assert reversals(np.concatenate([[1.0], held, [1.0]])).tolist() == [4]

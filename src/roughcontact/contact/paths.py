@@ -81,10 +81,13 @@ def symmetric_path(amplitude: float, *, cycles: int = 1, steps_per_stroke: int =
 def reversals(series) -> np.ndarray:
     """Return the indices of the steps after which a path (one component, from 0) changes direction.
 
-    Steps that do not move are skipped: a hold between two strokes is no reversal.
+    Steps that do not move are skipped: a hold between two strokes is no reversal. "Not moving" is
+    a change below 1e-9 of the path's range, so the round-off of a held force (force control meets
+    each target to about 1e-16 relative) makes no reversals either.
     """
-    dx = np.diff(np.concatenate([[0.0], np.asarray(series, dtype=float)]))
-    moving = np.flatnonzero(dx != 0)
+    x = np.concatenate([[0.0], np.asarray(series, dtype=float)])
+    dx = np.diff(x)
+    moving = np.flatnonzero(np.abs(dx) > 1e-9 * np.ptp(x))
     turns = [moving[i] for i in range(1, len(moving)) if np.sign(dx[moving[i]]) != np.sign(dx[moving[i - 1]])]
     return np.asarray([t - 1 for t in turns], dtype=int)
 

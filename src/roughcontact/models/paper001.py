@@ -213,8 +213,9 @@ class ProgrammeCase:
     """A ball under a user's tangential programme (displacement or force path, x and y).
 
     ``analysis`` is the last loop's (as paper 001 analyses its Fig. 6 cycles) when the x
-    displacement programme closes a loop that slides, else None; ``map_steps`` names the steps
-    whose fields were kept (the reversals of the x programme and the last step).
+    displacement programme closes a loop that slides, else None and ``note`` says why;
+    ``map_steps`` names the steps whose fields were kept (the reversals of the x programme and
+    the last step).
     """
 
     label: str
@@ -224,6 +225,7 @@ class ProgrammeCase:
     result: Any  # TangentialPathResult
     analysis: LoopAnalysis | None
     map_steps: dict[str, int]
+    note: str = ""
 
     def loop(self) -> tuple[np.ndarray, np.ndarray]:
         """Displacement [m] and friction force [N] along x from the start (0, 0), all steps."""
@@ -249,6 +251,7 @@ class ProgrammeCase:
             "last_F_y [N]": float(result.force[-1, 1]),
             "last_stick_fraction": float(result.stick_area[-1] / result.contact_area[-1]),
             "energy_per_loop [J]": result.dissipated_energy().tolist(),
+            "analysis_note": self.note,
         }
         if self.analysis is not None:
             row |= {"mu_from_loop": self.analysis.mu, "stroke_from_loop [m]": self.analysis.stroke}
@@ -279,7 +282,9 @@ def programme_case(
     displacement programme closes a loop that reaches full sliding, the last loop is analysed as
     paper 001 does (stroke, mu, K_L at A, B, C); a loop that never slides (a small stroke, any
     force programme below mu F0) has no sliding plateau to take mu and the pre-sliding span from,
-    so it is not. Fields are kept at the last ``maps - 1`` reversals and at the last step.
+    so it is not, and neither is a loop whose pre-sliding part has too few steps for the eq. 9 fit:
+    the case's ``note`` says which, and the rest of the results stand. Fields are kept at the last
+    ``maps - 1`` reversals and at the last step.
     """
     if control not in ("displacement", "force"):
         raise InputError("control", f"unknown control {control!r}.", "use 'displacement' or 'force'.")
@@ -298,17 +303,23 @@ def programme_case(
         fields_at=kept,
         **{control: path},
     )
-    analysis = None
-    if control == "displacement" and result.loops():
+    analysis, note = None, "no closed loop of the x programme"
+    if control == "force":
+        note = "force control: the paper's loop analysis needs a displacement programme that slides"
+    elif result.loops():
         displacement = np.concatenate([[0.0], result.displacement[:, 0]])
-        analysis = analyse_loop(
-            displacement, np.concatenate([[0.0], result.force[:, 0]]), normal_force, fractions=POINTS
-        )
-        if analysis.mu is None:  # the loop never slides: no stroke, mu or pre-sliding span to analyse
-            analysis = None
+        try:
+            analysis = analyse_loop(
+                displacement, np.concatenate([[0.0], result.force[:, 0]]), normal_force, fractions=POINTS
+            )
+            note = ""
+        except InputError as error:  # e.g. too few steps in the pre-sliding part for the eq. 9 fit
+            note = f"last loop not analysed: {error.problem} {error.fix or ''}".strip()
+        if analysis is not None and analysis.mu is None:
+            analysis, note = None, "last loop not analysed: it never slides (no plateau to take mu from)"
     map_steps = {f"step {k + 1}": k for k in kept}
     return ProgrammeCase(
-        label, float(normal_force), float(friction_coefficient), control, result, analysis, map_steps
+        label, float(normal_force), float(friction_coefficient), control, result, analysis, map_steps, note
     )
 
 

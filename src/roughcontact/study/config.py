@@ -606,8 +606,10 @@ class _Builder:
 
     def _compare(self, kind: Kind, raw: Any, where: str):
         spec = _collect(self.problems, where, kind.compare, raw)
-        if spec is None:
-            return None
+        return None if spec is None else self.with_files(spec, where)
+
+    def with_files(self, spec: Strict, where: str) -> Strict | None:
+        """Return ``spec`` with its file (Path) fields resolved by :meth:`file`; None if one is missing."""
         updates = {}
         for field_name, value in spec:
             if isinstance(value, Path):
@@ -641,8 +643,16 @@ class _Builder:
                 parameters[axis] = value
         schema = kind.parameters
         checked = _collect(self.problems, label, schema, parameters)
+        if checked is not None:
+            checked = self.with_files(checked, label)
         if checked is None:
             return None
+        if kind.check is not None:
+            try:
+                kind.check(checked)
+            except InputError as error:
+                self.problems.append((f"{label}.{error.field}", error.problem, error.fix))
+                return None
         found: dict[str, Strict] = {}
         for field_name in references(schema, "topography"):
             value = getattr(checked, field_name)
@@ -656,6 +666,7 @@ class _Builder:
                 if material is None:
                     return None
                 used_materials[value] = material
+        files = {name: self.files[str(value)] for name, value in checked if isinstance(value, Path)}
         key_data = {
             "model": kind.name,
             "parameters": checked.model_dump(mode="json"),
@@ -665,6 +676,8 @@ class _Builder:
             },
             "materials": {name: repr(material) for name, material in sorted(used_materials.items())},
         }
+        if files:  # the content of a case's own files (absent otherwise, so older keys stay valid)
+            key_data["files"] = files
         key = hashlib.sha256(json.dumps(key_data, sort_keys=True).encode()).hexdigest()
         return Case(analysis, index, dict(axes), checked, found, used_materials, key)
 

@@ -160,6 +160,10 @@ class Kind:
         Name -> function drawing a figure or deriving a table from stored records.
     compare : type of Strict, optional
         Schema of the analysis' ``[analysis.compare]`` table (measured data), if it takes one.
+    check : callable, optional
+        ``check(parameters)``: reads a case's input files (its Path keys, resolved relative to the
+        study file) at validation time and raises :class:`~roughcontact.errors.InputError` naming
+        the problem, so a bad file fails ``roughcontact validate``, not a case half-way through a run.
     """
 
     name: str
@@ -170,3 +174,4 @@ class Kind:
     figures: Mapping[str, FigureFunction] = field(default_factory=dict)
     tables: Mapping[str, TableFunction] = field(default_factory=dict)
     compare: type[Strict] | None = None
+    check: Callable[[Any], None] | None = None

@@ -9,6 +9,7 @@
 ``asperity``              McCool parameters and the statistical KKE load-unload (paper 002)
 ``friction``              the Winkler-layer Lennard-Jones friction at one load (paper 000)
 ``presliding``            a rough ball's partial-slip loops and K_L against Mindlin (paper 001)
+``tangential_path``       a rough ball under the user's own displacement or force programme (CSV)
 ========================  =====================================================================
 
 Modules are imported when a study names their kind, so a study of one kind does not pay for the
@@ -28,6 +29,7 @@ _MODULES = {
     "asperity": "asperity",
     "friction": "friction",
     "presliding": "presliding",
+    "tangential_path": "tangential_path",
 }
 
 

@@ -361,38 +361,49 @@ def _loops(records, context):
 
 def _stick_slip(records, context):
     """Normalised shear maps at A, B, C of the last loop for up to three cases (Figs. 11-12)."""
-    from ...plotting.presliding import plot_stick_slip_maps
-
     chosen = evenly_chosen([r for r in records if r.fields_path is not None], 3)
     if not chosen:
         return None
-    maps, extents, boxes = {}, {}, []
+    panels = []
     for record in chosen:
         data = record.dataset()
-        x, y = np.asarray(data["x"]), np.asarray(data["y"])
-        hx = x[1] - x[0] if x.size > 1 else 0.0
-        hy = y[1] - y[0] if y.size > 1 else 0.0
-        extent = (x[0] - hx / 2, x[-1] + hx / 2, y[0] - hy / 2, y[-1] + hy / 2)
         name = f"{record.parameters.get('sample') or record.parameters['surface']} "
         name += f"{_number(record, 'normal_force') * 1e3:g} mN"
         reversal = float(data.attrs.get("reversal_displacement", 0.0))
         for point in np.asarray(data["point"]).astype(str):
-            values = np.asarray(data["normalised_shear"].sel(point=point), dtype=float)
             step = int(data["point_step"].sel(point=point))
             moved = abs(float(data["displacement"][step]) - reversal)
-            label = f"{name}, {point} (Δδ {moved * 1e6:.2g} µm)"
-            maps[label], extents[label] = values.T, extent  # rows along y
-            inside = np.isfinite(values)
-            if inside.any():
-                i, j = np.nonzero(inside)
-                boxes.append((x[i.min()] - hx, x[i.max()] + hx, y[j.min()] - hy, y[j.max()] + hy))
+            values = data["normalised_shear"].sel(point=point)
+            panels.append((f"{name}, {point} (Δδ {moved * 1e6:.2g} µm)", values, data["x"], data["y"]))
+    return shear_maps(panels, columns=len(POINTS))
+
+
+def shear_maps(panels, columns: int):
+    """Draw stored normalised shear maps, zoomed to the contacts (paper 001 Figs. 11-12).
+
+    ``panels``: (title, map on (x, y), x, y) per panel, the coordinates [m] at pixel centres; NaN
+    (outside the contact) is blank. The zoom is the box of every finite pixel, widened by 10 %.
+    """
+    from ...plotting.presliding import plot_stick_slip_maps
+
+    maps, extents, boxes = {}, {}, []
+    for label, values, x, y in panels:
+        values, x, y = np.asarray(values, dtype=float), np.asarray(x), np.asarray(y)
+        hx = x[1] - x[0] if x.size > 1 else 0.0
+        hy = y[1] - y[0] if y.size > 1 else 0.0
+        maps[label] = values.T  # rows along y
+        extents[label] = (x[0] - hx / 2, x[-1] + hx / 2, y[0] - hy / 2, y[-1] + hy / 2)
+        inside = np.isfinite(values)
+        if inside.any():
+            i, j = np.nonzero(inside)
+            boxes.append((x[i.min()] - hx, x[i.max()] + hx, y[j.min()] - hy, y[j.max()] + hy))
     zoom = None
     if boxes:
         x0, x1 = min(b[0] for b in boxes), max(b[1] for b in boxes)
         y0, y1 = min(b[2] for b in boxes), max(b[3] for b in boxes)
         pad = 0.1 * max(x1 - x0, y1 - y0)
         zoom = (x0 - pad, x1 + pad, y0 - pad, y1 + pad)
-    return plot_stick_slip_maps(maps, extents, zoom=zoom, columns=len(POINTS))
+    return plot_stick_slip_maps(maps, extents, zoom=zoom, columns=columns)
 
 
 def _mindlin_curves(group, loads: np.ndarray) -> dict[str, dict[str, np.ndarray]] | None:
