@@ -10,9 +10,9 @@ tracing slows every allocation), the process's peak resident memory after our so
 and operator included; the one memory figure at 4096^2), and the largest pressure difference
 to each peer relative to the peak pressure. A case whose tolerance is below its round-off
 floor (the solver stops as stalled, ``ConvergenceError.stalled_at``; 4096^2 at 1e-10) is solved,
-ours and the peers alike, at twice the floor (rounded up), and the row says so. As for the
-peers, operator set-up (kernel, FFT plans) is not in the solve time; ours is printed beside it.
-A 32^2 warm-up solve first compiles the numba kernels (cached on disk after
+ours and the peers alike, at twice the floor rounded up (``suggested_tolerance``), and the row
+says so. As for the peers, operator set-up (kernel, FFT plans) is not in the solve time; ours is
+printed beside it. A 32^2 warm-up solve first compiles the numba kernels (cached on disk after
 the first run of an install). Ends with one JSON line.
 
     python benchmarks/normal_contact.py [--sizes 256 512 1024] [--tolerance 1e-10] [--no-peers]
@@ -26,7 +26,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import os
 import platform
 import resource
@@ -113,7 +112,7 @@ def _race(surface, load: dict, peer_load: float, solvers: dict, tolerance: float
         except ConvergenceError as error:
             if error.stalled_at is None:
                 raise
-            stalled_at, tolerance = error.stalled_at, reachable_tolerance(error.stalled_at)
+            stalled_at, tolerance = error.stalled_at, error.suggested_tolerance
             print(f"  stalled at {stalled_at:.2g} (round-off floor): solving at {tolerance:g}", flush=True)
             start = time.perf_counter()
             ours = solve_normal(surface, tolerance=tolerance, compliance=operator, **load)
@@ -168,12 +167,6 @@ def _print_row(r: dict) -> None:
         f"{r['per_iteration_in_fft_pairs']:10.2f} {memory} {resident}  {peer_text}",
         flush=True,
     )
-
-
-def reachable_tolerance(floor: float) -> float:
-    """Return the tolerance a stalled case is solved at: twice its floor, rounded up to one digit."""
-    exponent = math.floor(math.log10(2 * floor))
-    return float(f"{math.ceil(2 * floor / 10**exponent)}e{exponent}")
 
 
 def warm_up() -> float:

@@ -7,6 +7,8 @@ the source.
 
 from __future__ import annotations
 
+import math
+
 
 class InputError(ValueError):
     """Invalid user input: a value, a file, a grid or a unit.
@@ -78,10 +80,18 @@ class ConvergenceError(RuntimeError):
             fix = "raise max_iterations, loosen tolerance knowingly, or refine the grid."
         else:
             fix = (
-                f"the residual stalled at {stalled_at:.3g} (the round-off floor of this problem, which "
-                f"rises with the grid size); ask for a tolerance of at least {2 * stalled_at:.1g}."
+                f"the residual stalled at {stalled_at:.3g} (the floor this problem reaches in floating "
+                f"point, which rises with the grid size); ask for {self.suggested_tolerance:g} or more."
             )
         super().__init__(
             f"{solver} did not converge: residual {residual:.3g} > tolerance {tolerance:.3g} "
             f"after {iterations} iterations. Fix: {fix}"
         )
+
+    @property
+    def suggested_tolerance(self) -> float | None:
+        """A tolerance a stalled solve meets: twice ``stalled_at``, rounded up to one digit (else None)."""
+        if self.stalled_at is None or not self.stalled_at > 0:
+            return None
+        exponent = math.floor(math.log10(2 * self.stalled_at))
+        return float(f"{math.ceil(2 * self.stalled_at / 10**exponent)}e{exponent}")

@@ -240,7 +240,7 @@ STALL_ITERATIONS = 200
 Converging solves halve it every 3-15 iterations at the longest (self-affine 256^2 to 2048^2,
 free Hertz). Below a floor the residual stops falling altogether: with preconditioning or
 without, in double or in single precision, on the benchmark's self-affine surfaces (tolerance
-asked 1e-14 to 1e-16) it stalls at about 1e-13, 1e-12, 7e-12, 7e-11 and 1.4e-10 at 256^2, 512^2,
+asked 1e-14 to 1e-16) it stalls at about 1e-13, 1e-12, 7e-12, 7e-11 and 1.2e-10 at 256^2, 512^2,
 1024^2, 2048^2 and 4096^2, with the set fixed and the gap error spread over the whole contact.
 Plain Polonsky-Keer is not checked: it can go 900 iterations without halving and then converge
 (free Hertz at 256^2).
