@@ -85,6 +85,18 @@ def _check_inside(pressure: np.ndarray, label: str) -> None:
         )
 
 
+def loop_from_start(result) -> tuple[np.ndarray, np.ndarray]:
+    """Return a tangential result's x displacement [m] and force [N] from the unloaded start (0, 0).
+
+    The record that :func:`~roughcontact.experiment.friction_loop.analyse_loop` takes and the loop
+    figures draw.
+    """
+    return (
+        np.concatenate([[0.0], result.displacement[:, 0]]),
+        np.concatenate([[0.0], result.force[:, 0]]),
+    )
+
+
 @dataclass(frozen=True)
 class PreslidingCase:
     """One ball at one load: the simulated programme, its last-loop analysis and Mindlin's K_L."""
@@ -102,10 +114,7 @@ class PreslidingCase:
 
     def loop(self) -> tuple[np.ndarray, np.ndarray]:
         """Displacement [m] and friction force [N] from the start (0, 0), all steps."""
-        return (
-            np.concatenate([[0.0], self.result.displacement[:, 0]]),
-            np.concatenate([[0.0], self.result.force[:, 0]]),
-        )
+        return loop_from_start(self.result)
 
     def scalars(self) -> dict[str, float]:
         """Table row: inputs, contact, K_L at A, B, C simulated and Mindlin (both readings) [N/m]."""
@@ -167,9 +176,7 @@ def presliding_case(
         tolerance=tolerance,
         fields_at=list(last_cycle),
     )
-    displacement = np.concatenate([[0.0], result.displacement[:, 0]])
-    force = np.concatenate([[0.0], result.force[:, 0]])
-    analysis = analyse_loop(displacement, force, normal_force, fractions=POINTS)
+    analysis = analyse_loop(*loop_from_start(result), normal_force, fractions=POINTS)
     rising = analysis.branch.direction > 0
     branch = [k for k in last_cycle if (k < len(path) - steps_per_stroke) == rising]
     point_steps = {
@@ -229,10 +236,7 @@ class ProgrammeCase:
 
     def loop(self) -> tuple[np.ndarray, np.ndarray]:
         """Displacement [m] and friction force [N] along x from the start (0, 0), all steps."""
-        return (
-            np.concatenate([[0.0], self.result.displacement[:, 0]]),
-            np.concatenate([[0.0], self.result.force[:, 0]]),
-        )
+        return loop_from_start(self.result)
 
     def scalars(self) -> dict[str, Any]:
         """Table row: inputs, contact, the last step, energy per closed loop and the last loop's analysis."""
@@ -307,11 +311,8 @@ def programme_case(
     if control == "force":
         note = "force control: the paper's loop analysis needs a displacement programme that slides"
     elif result.loops():
-        displacement = np.concatenate([[0.0], result.displacement[:, 0]])
         try:
-            analysis = analyse_loop(
-                displacement, np.concatenate([[0.0], result.force[:, 0]]), normal_force, fractions=POINTS
-            )
+            analysis = analyse_loop(*loop_from_start(result), normal_force, fractions=POINTS)
             note = ""
         except InputError as error:  # e.g. too few steps in the pre-sliding part for the eq. 9 fit
             note = f"last loop not analysed: {error.problem} {error.fix or ''}".strip()
