@@ -22,7 +22,7 @@ import platform
 import numpy as np
 
 from _timing import best_of
-from roughcontact.experiment import paper000_model_options, paper000_scans, paper000_tip
+from roughcontact.models.paper000 import paper000_model_options, paper000_scans, paper000_tip
 from roughcontact.friction import winkler_lj_model
 from roughcontact.materials import get_material
 
@@ -36,7 +36,7 @@ def prepare(scan, tip):
         scan,
         get_material("polysilicon"),
         get_material("SiO2"),
-        counter_surface=tip,
+        counter_topography=tip,
         **paper000_model_options(),
     )
 

@@ -4,7 +4,7 @@ A 2 um SiO2 sphere on LPCVD polysilicon (Ra 1.45, 1.49, 1.7 nm; seven synthetic 
 256^2 at 20 nm; 10 uN; polysilicon surface energy 50 mJ/m^2 assumed) compared with
 ``paper000_measured_mu.csv`` (SYNTHETIC values, see its header), then friction vs load and the
 adhesive-mechanical crossover for one Ra 1.7 nm scan. Pass scans of your own through
-:func:`roughcontact.experiment.paper000_simulation` (``scans=``, ``tip=``) or the CLI
+:func:`roughcontact.models.paper000.paper000_simulation` (``scans=``, ``tip=``) or the CLI
 (``roughcontact friction-compare MEASURED.csv --sample NAME=a.di,b.di --tip tip.di``).
 
 Run: ``.venv/bin/python examples/paper000_friction.py [OUTPUT_FOLDER]`` (default paper000-output).
@@ -17,16 +17,15 @@ from pathlib import Path
 
 import numpy as np
 
-from roughcontact.experiment import (
-    compare,
+from roughcontact.experiment import compare, read_measured
+from roughcontact.friction import winkler_lj_model
+from roughcontact.materials import get_material
+from roughcontact.models.paper000 import (
     paper000_model_options,
     paper000_scans,
     paper000_simulation,
     paper000_tip,
-    read_measured,
 )
-from roughcontact.friction import winkler_lj_model
-from roughcontact.materials import get_material
 from roughcontact.plotting import plot_friction_vs_load, plot_mu_boxes, plot_mu_means
 
 
@@ -49,7 +48,7 @@ def main(output: Path) -> None:
         paper000_scans(1.7e-9, count=1, seed=200)[0],
         get_material("polysilicon"),
         get_material("SiO2"),
-        counter_surface=paper000_tip(),
+        counter_topography=paper000_tip(),
         **paper000_model_options(),
     )
     crossover = model.crossover_load()

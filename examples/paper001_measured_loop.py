@@ -22,8 +22,9 @@ from pathlib import Path
 
 import numpy as np
 
-from roughcontact.analytic.mindlin import masing_force, paper001_mindlin
+from roughcontact.analytic.mindlin import masing_force
 from roughcontact.materials import Material
+from roughcontact.models.paper001 import paper001_mindlin
 
 OUTPUT = Path(__file__).with_name("paper001_measured_loop.csv")
 
@@ -45,7 +46,11 @@ SEED = 1
 def synthetic_loop(seed: int = SEED, noise: bool = True) -> dict[str, np.ndarray]:
     """Return time [s], stage and sensor displacement [m] and friction force [N] of the loop."""
     mindlin = paper001_mindlin(
-        mu=MU, normal_force=NORMAL_FORCE, radius=BALL_RADIUS, material=HDPE, counter=SILICON
+        friction_coefficient=MU,
+        normal_force=NORMAL_FORCE,
+        radius=BALL_RADIUS,
+        material=HDPE,
+        counter_body=SILICON,
     )
     slip = MU * NORMAL_FORCE / SETUP_STIFFNESS  # setup deflection while sliding
     # sensor displacement turns at x_hi (stage at S) and x_lo (stage at 0, after the first stroke)
@@ -55,7 +60,11 @@ def synthetic_loop(seed: int = SEED, noise: bool = True) -> dict[str, np.ndarray
     legs = [np.linspace(a, b, points) for a, b in zip(corners[:-1], corners[1:], strict=True)]
     x_cs = np.concatenate([legs[0]] + [leg[1:] for leg in legs[1:]])
     force = masing_force(
-        x_cs, mindlin.mu, mindlin.normal_force, mindlin.contact_radius, mindlin.shear_modulus
+        x_cs,
+        mindlin.friction_coefficient,
+        mindlin.normal_force,
+        mindlin.contact_radius,
+        mindlin.shear_modulus,
     )
     x_stage = x_cs + force / SETUP_STIFFNESS
     # resample each leg uniformly in time: the stage moves at constant speed
@@ -91,7 +100,11 @@ def synthetic_loop(seed: int = SEED, noise: bool = True) -> dict[str, np.ndarray
 def main() -> None:
     """Write the CSV (um and mN, as the capacitive sensor and force hinge would report)."""
     mindlin = paper001_mindlin(
-        mu=MU, normal_force=NORMAL_FORCE, radius=BALL_RADIUS, material=HDPE, counter=SILICON
+        friction_coefficient=MU,
+        normal_force=NORMAL_FORCE,
+        radius=BALL_RADIUS,
+        material=HDPE,
+        counter_body=SILICON,
     )
     data = synthetic_loop()
     header = [

@@ -14,7 +14,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from roughcontact.errors import InputError
-from roughcontact.experiment import paper000_model_options, paper000_scans, paper000_simulation, paper000_tip
+from roughcontact.models.paper000 import paper000_model_options, paper000_scans, paper000_simulation, paper000_tip
 from roughcontact.friction import PRINTED, Readings, winkler_lj_model
 from roughcontact.friction.readings import CHOICES
 from roughcontact.materials import get_material
@@ -27,7 +27,7 @@ def row(label: str, readings: Readings, scan, tip) -> str:
         scan,
         get_material("polysilicon"),
         get_material("SiO2"),
-        counter_surface=tip,
+        counter_topography=tip,
         **paper000_model_options(readings=readings),
     )
     try:

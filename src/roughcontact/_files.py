@@ -1,7 +1,10 @@
-"""Writing files whole or not at all: a temporary file beside the target, renamed into place.
+"""Files: checking that an input file is there, writing an output whole or not at all.
 
-Used by the native topography format (:mod:`roughcontact.topography.io`) and by the study store
-(:mod:`roughcontact.study.store`). Imports nothing heavy.
+:func:`replacing` (a temporary file beside the target, renamed into place) is used by the native
+topography format (:mod:`roughcontact.topography.native`) and by the study store
+(:mod:`roughcontact.study.store`); :func:`existing_file` and :func:`first_line` by the topography
+readers (:mod:`roughcontact.topography.io`, :mod:`roughcontact.topography.native`). Imports nothing
+heavy.
 """
 
 from __future__ import annotations
@@ -11,6 +14,8 @@ import os
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
+
+from .errors import UnsupportedFormatError
 
 
 @contextlib.contextmanager
@@ -29,3 +34,37 @@ def replacing(path: Path) -> Iterator[Path]:
     except BaseException:
         Path(temporary).unlink(missing_ok=True)
         raise
+
+
+def existing_file(path: str | os.PathLike, *, empty_fix: str) -> Path:
+    """Return ``path`` as a Path, refusing what is not a readable non-empty file.
+
+    Parameters
+    ----------
+    path : str or path-like
+        The input file.
+    empty_fix : str
+        The fix offered for an empty (0 bytes) file.
+
+    Raises
+    ------
+    UnsupportedFormatError
+        No such file, a folder, or an empty file; the field is the path.
+    """
+    path = Path(path)
+    if not path.exists():
+        raise UnsupportedFormatError(str(path), "no such file.", "check the path and the file name.")
+    if path.is_dir():
+        raise UnsupportedFormatError(
+            str(path), "is a folder, not a file.", "give the path of one topography file inside it."
+        )
+    if path.stat().st_size == 0:
+        raise UnsupportedFormatError(str(path), "the file is empty (0 bytes).", empty_fix)
+    return path
+
+
+def first_line(error: BaseException, limit: int = 160) -> str:
+    """Return the first line of an exception's text (its type name if it has none), cut to ``limit``."""
+    text = str(error).strip().splitlines()
+    line = text[0].strip() if text else type(error).__name__
+    return line if len(line) <= limit else line[: limit - 3] + "..."

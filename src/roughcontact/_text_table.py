@@ -1,9 +1,13 @@
-"""Small text tables: CSV, semicolon, tab or whitespace separated, with an optional ``name [unit]`` header.
+"""Small text tables: CSV, semicolon, tab or whitespace separated, with an optional header of units.
 
 The tokenising shared by the readers of measured friction loops
-(:func:`roughcontact.experiment.friction_loop.read_loop_csv`) and of tangential loading
-programmes (:func:`roughcontact.contact.paths.read_path_csv`); each reader gives the columns
-their meaning and converts their units (through :mod:`roughcontact.units`).
+(:func:`roughcontact.experiment.friction_loop.read_loop_csv`), of tangential loading programmes
+(:func:`roughcontact.contact.paths.read_path_csv`) and of nanoindentation curves
+(:func:`roughcontact.experiment.nanoindentation.read_indentation_csv`); each reader gives the
+columns their meaning and converts their units (through :mod:`roughcontact.units`).
+
+A header cell gives its unit as ``name [unit]``, ``name (unit)`` or ``name/unit`` (see
+:func:`split_header`).
 """
 
 from __future__ import annotations
@@ -15,8 +19,11 @@ from pathlib import Path
 
 from .errors import InputError
 
-HEADER_UNIT = re.compile(r"^\s*([^\[\(]*?)\s*(?:[\[\(]\s*([^\]\)]*?)\s*[\]\)])?\s*$")
-"""A header cell ``name [unit]`` or ``name (unit)``: group 1 the name, group 2 the unit (or None)."""
+HEADER_UNIT = re.compile(r"^\s*(.*?)\s*(?:[\[\(]\s*([^\]\)]*?)\s*[\]\)])?\s*$")
+"""A header cell ``name [unit]`` or ``name (unit)``: group 1 the name, group 2 the unit (or None).
+
+The unit is the last bracket of the cell, so ``load (corrected) [mN]`` is ``load (corrected)`` in mN.
+"""
 _WORDS = re.compile(r"[^\s\[\(]+(?:\s*[\[\(][^\]\)]*[\]\)])?")
 """A cell of a whitespace-separated line: a word with its bracketed unit, ``x [um]``, kept whole."""
 
@@ -30,14 +37,20 @@ class TextTable:
     names : list of str or None
         Lower-case column names from the header (None without a header).
     units : list of (str or None) or None
-        The unit written in brackets after each name, None where there is none.
+        The unit of each column from its header cell (:func:`split_header`), None where it gives none.
     rows : list of list of str
         The data rows, cells stripped, not converted.
+    delimiter : str or None
+        The column separator; None for whitespace.
+    header : list of str or None
+        The header cells as written, stripped (None without a header), for messages.
     """
 
     names: list[str] | None
     units: list[str | None] | None
     rows: list[list[str]]
+    delimiter: str | None = None
+    header: list[str] | None = None
 
     @property
     def width(self) -> int:
@@ -56,7 +69,8 @@ def _numeric(cell: str) -> bool:
 def read_text_table(path: str | Path, *, expected: str, delimiter: str | None = None) -> TextTable:
     """Read a text table; lines starting with ``#`` are comments.
 
-    The first line is a header when one of its cells is not a number. The separator is the
+    The first line is a header when one of its cells is not a number; its cells are split into
+    names and units by :func:`split_header`. The separator is the
     ``delimiter`` given, else the first of comma, semicolon and tab found in the first line, else
     whitespace (a header cell ``x [um]`` then stays one cell).
 
@@ -86,13 +100,35 @@ def read_text_table(path: str | Path, *, expected: str, delimiter: str | None = 
         raise InputError("path", f"{path} has no data lines.", f"give {expected}.")
     if delimiter is None:
         delimiter = next((d for d in (",", ";", "\t") if d in lines[0]), None)
-    split = (lambda line: next(csv.reader([line], delimiter=delimiter))) if delimiter else _WORDS.findall
+    split = (
+        (lambda line: next(csv.reader([line], delimiter=delimiter, skipinitialspace=True)))
+        if delimiter
+        else _WORDS.findall
+    )
     rows = [[cell.strip() for cell in split(line)] for line in lines]
     if all(_numeric(cell) for cell in rows[0]):
-        return TextTable(None, None, rows)
-    names, units = [], []
-    for cell in rows[0]:
-        match = HEADER_UNIT.match(cell)
-        names.append((match.group(1) if match else cell).strip().lower())
-        units.append(match.group(2) if match and match.group(2) else None)
-    return TextTable(names, units, rows[1:])
+        return TextTable(None, None, rows, delimiter)
+    names, units = zip(*(split_header(cell) for cell in rows[0]), strict=True)
+    return TextTable(list(names), list(units), rows[1:], delimiter, rows[0])
+
+
+def split_header(cell: str) -> tuple[str, str | None]:
+    """Split a header cell into its lower-case name and its unit (None where it gives none).
+
+    The unit is written in brackets, ``depth [nm]`` or ``load (mN)`` (the last bracket), or
+    after a slash, ``time/s`` (the first slash; a cell starting or ending with one is all name).
+    Surrounding double quotes are dropped.
+
+    Examples
+    --------
+    >>> split_header("Load [mN]"), split_header("time/s"), split_header("step")
+    (('load', 'mN'), ('time', 's'), ('step', None))
+    """
+    text = cell.strip().strip('"').strip()
+    match = HEADER_UNIT.match(text)
+    if match and match.group(2) is not None:  # a bracket, perhaps empty: "depth ()" has no unit
+        return match.group(1).strip().rstrip("/").strip().lower(), match.group(2) or None
+    name, slash, unit = text.partition("/")
+    if slash and name.strip() and unit.strip():
+        return name.strip().lower(), unit.strip()
+    return text.lower(), None

@@ -41,6 +41,32 @@ class UnsupportedFormatError(InputError):
     """A file that no reader understands (unknown, empty, truncated or corrupted)."""
 
 
+class MissingMetadataError(InputError):
+    """A file without its physical scan size or height unit, which the user must give.
+
+    Attributes
+    ----------
+    missing : dict
+        Each missing key (``size``, ``height_unit``) -> an example value (``"5 um"``, ``"nm"``), so
+        each front end can say the fix in its own words (a keyword, a study key, an option).
+    notes : list of str
+        What else helps, in any front end's words (other channels that hold heights).
+    """
+
+    def __init__(self, field: str, problem: str, fix: str, missing: dict[str, str], notes: list[str]):
+        self.missing = missing
+        self.notes = notes
+        super().__init__(field, problem, fix)
+
+
+class UndefinedPointsError(InputError):
+    """A file with undefined (missing) points that the user has not asked to fill; ``count`` of them."""
+
+    def __init__(self, field: str, problem: str, fix: str, count: int):
+        self.count = count
+        super().__init__(field, problem, fix)
+
+
 class ConvergenceError(RuntimeError):
     """An iterative solver stopped before reaching its tolerance.
 

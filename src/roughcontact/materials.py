@@ -40,27 +40,9 @@ from dataclasses import dataclass
 from numbers import Real
 from types import MappingProxyType
 
+from .checks import positive
 from .errors import InputError
 from .units import quantity
-
-
-def _check_positive(value: float | None, field: str, example: str, *, allow_zero: bool = False) -> None:
-    if value is None:
-        return
-    if isinstance(value, bool) or not isinstance(value, Real):
-        raise InputError(
-            field,
-            f"expected a number in SI units, got {type(value).__name__}.",
-            f"give a float in SI units, or use Material.from_units(..., {field}={example!r}).",
-        )
-    ok = math.isfinite(value) and (value >= 0 if allow_zero else value > 0)
-    if not ok:
-        bound = "non-negative" if allow_zero else "positive"
-        raise InputError(
-            field,
-            f"{value!r} is not a {bound} finite number.",
-            f"give a {bound} value in SI units, e.g. {example}.",
-        )
 
 
 def _check_poissons_ratio(value: float, field: str = "poissons_ratio") -> None:
@@ -109,11 +91,14 @@ class Material:
     source: str = ""
 
     def __post_init__(self):
-        _check_positive(self.youngs_modulus, "youngs_modulus", "70e9 (70 GPa)")
+        positive(self.youngs_modulus, "youngs_modulus", example="70e9", unit="Pa")
         _check_poissons_ratio(self.poissons_ratio)
-        _check_positive(self.hardness, "hardness", "0.462e9 (0.462 GPa)")
-        _check_positive(self.yield_strength, "yield_strength", "0.165e9 (0.165 GPa)")
-        _check_positive(self.surface_energy, "surface_energy", "0.072 (72 mJ/m^2)", allow_zero=True)
+        if self.hardness is not None:
+            positive(self.hardness, "hardness", example="0.462e9", unit="Pa")
+        if self.yield_strength is not None:
+            positive(self.yield_strength, "yield_strength", example="0.165e9", unit="Pa")
+        if self.surface_energy is not None:
+            positive(self.surface_energy, "surface_energy", example="0.072", unit="J/m^2", allow_zero=True)
 
     @property
     def shear_modulus(self) -> float:
@@ -500,7 +485,7 @@ def reduced_modulus_to_youngs(reduced_modulus: float, indenter: Material, poisso
     W. C. Oliver and G. M. Pharr, J. Mater. Res. 7 (1992) 1564-1583. doi:10.1557/JMR.1992.1564.
     Seed paper 001, eq. 8. doi:10.1115/1.4045900
     """
-    _check_positive(reduced_modulus, "reduced_modulus", "3e9 (3 GPa)")
+    positive(reduced_modulus, "reduced_modulus", example="3e9", unit="Pa")
     _check_poissons_ratio(poissons_ratio)
     sample_compliance = 1.0 / reduced_modulus - _sum_over_bodies(indenter, None, _hertz_compliance)
     if sample_compliance <= 0:

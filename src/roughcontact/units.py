@@ -100,6 +100,39 @@ def _symbol(symbol: str) -> tuple[Decimal, Dimension]:
     raise KeyError(symbol)
 
 
+def _terms(unit: str) -> list[tuple[str, int]]:
+    """Split a unit expression into (symbol, power) terms: ``"mJ/m^2"`` -> ``[("mJ", 1), ("m", -2)]``.
+
+    Symbols are checked by :func:`_symbol`; an unreadable term or an unknown symbol raises
+    :class:`UnitError`.
+    """
+    text = _normalise(unit)
+    if text in ("", "1"):
+        return []
+    numerator, *denominators = text.split("/")
+    parts = [(p, 1) for p in numerator.split("*") if p not in ("", "1")]
+    for den in denominators:
+        parts += [(p, -1) for p in den.split("*")]
+    terms = []
+    for part, sign in parts:
+        match = _FACTOR_RE.match(part)
+        if match is None:
+            raise UnitError(
+                "unit", f"cannot read {unit!r}.", "write units like 'nm', 'GPa', 'mJ/m^2', 'um/s'."
+            )
+        symbol, power = match.group(1), int(match.group(2) or 1) * sign
+        try:
+            _symbol(symbol)
+        except KeyError:
+            raise UnitError(
+                "unit",
+                f"unknown unit symbol {symbol!r} in {unit!r}.",
+                "use SI symbols with prefixes (nm, um, mm, m, uN, mN, N, MPa, GPa, mJ/m^2, s).",
+            ) from None
+        terms.append((symbol, power))
+    return terms
+
+
 def unit_factor(unit: str) -> tuple[Decimal, Dimension]:
     """Return the factor to SI and the dimension of a unit expression.
 
@@ -120,29 +153,9 @@ def unit_factor(unit: str) -> tuple[Decimal, Dimension]:
     UnitError
         If a symbol is unknown.
     """
-    text = _normalise(unit)
     factor, dims = Decimal(1), [0, 0, 0]
-    if text in ("", "1"):
-        return factor, (0, 0, 0)
-    numerator, *denominators = text.split("/")
-    parts = [(p, 1) for p in numerator.split("*") if p not in ("", "1")]
-    for den in denominators:
-        parts += [(p, -1) for p in den.split("*")]
-    for part, sign in parts:
-        match = _FACTOR_RE.match(part)
-        if match is None:
-            raise UnitError(
-                "unit", f"cannot read {unit!r}.", "write units like 'nm', 'GPa', 'mJ/m^2', 'um/s'."
-            )
-        symbol, power = match.group(1), int(match.group(2) or 1) * sign
-        try:
-            sym_factor, sym_dim = _symbol(symbol)
-        except KeyError:
-            raise UnitError(
-                "unit",
-                f"unknown unit symbol {symbol!r} in {unit!r}.",
-                "use SI symbols with prefixes (nm, um, mm, m, uN, mN, N, MPa, GPa, mJ/m^2, s).",
-            ) from None
+    for symbol, power in _terms(unit):
+        sym_factor, sym_dim = _symbol(symbol)
         factor *= sym_factor**power
         dims = [d + power * s for d, s in zip(dims, sym_dim, strict=True)]
     return factor, (dims[0], dims[1], dims[2])
@@ -253,27 +266,96 @@ _EXAMPLES = {
 }
 
 
-_DISPLAY_PREFIXES = (
-    ("G", 1e9),
-    ("M", 1e6),
-    ("k", 1e3),
-    ("", 1.0),
-    ("m", 1e-3),
-    ("µ", 1e-6),
-    ("n", 1e-9),
-    ("p", 1e-12),
-)
+_DISPLAY_PREFIXES = (("G", 9), ("M", 6), ("k", 3), ("", 0), ("m", -3), ("µ", -6), ("n", -9), ("p", -12))
+"""The prefixes values are shown with (symbol, power of ten), largest first."""
+_SUPERSCRIPTS = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def _label(terms: list[tuple[str, int]], prefix: str = "", prefixed: int | None = None) -> str:
+    """Write (symbol, power) terms as a unit label, ``prefix`` on term number ``prefixed``: "µm²", "mN/m"."""
+
+    def term(index: int, symbol: str, power: int) -> str:
+        shown = prefix + symbol if index == prefixed else symbol
+        return shown if abs(power) == 1 else shown + str(abs(power)).translate(_SUPERSCRIPTS)
+
+    numerator = [term(k, s, p) for k, (s, p) in enumerate(terms) if p > 0]
+    denominator = [term(k, s, p) for k, (s, p) in enumerate(terms) if p < 0]
+    if not denominator:
+        return "·".join(numerator)
+    return "·".join(numerator or ["1"]) + "".join(f"/{d}" for d in denominator)
+
+
+def prefixed_scale(value: float, unit: str) -> tuple[float, str]:
+    """Return ``(scale, label)``: the SI prefix in which ``value`` [``unit``] reads between 1 and 1000.
+
+    ``value / scale`` is the number to show in ``label``. The prefix (G, M, k, none, m, µ, n, p;
+    powers of 1000) goes on the first prefixable symbol of the numerator (of the denominator when
+    the numerator has none) and acts with that symbol's power, so areas and inverse lengths
+    are shown in prefixed metres: 3e-12 m^2 is 3 µm² and 2e6 1/m is 2 1/µm. The largest prefix
+    with ``|value / scale| >= 1`` is chosen (so ``value / scale`` is below 1000 for a power of
+    one, below 1e6 for a square), the smallest when ``value`` is smaller; 0 and non-finite values
+    and units without a prefixable symbol (``""``, ``"%"``) get scale 1. Powers are written as
+    superscripts and products with a middle dot (``"N*m"`` -> ``"N·m"``).
+
+    Parameters
+    ----------
+    value : float
+        Value in the SI unit ``unit`` (typically the largest magnitude to be shown).
+    unit : str
+        Unit expression without prefixes: ``"m"``, ``"Pa"``, ``"N"``, ``"J"``, ``"m^2"``, ``"N/m"``,
+        ``"J/m^2"``, ``"1/m"``; symbols that take no prefix (``"%"``, ``"min"``) are kept as written.
+
+    Returns
+    -------
+    scale : float
+        SI value of one ``label``: 1e-6 for "µm", 1e-12 for "µm²", 1e-3 for "mN/m", 1e6 for "1/µm".
+    label : str
+        The prefixed unit.
+
+    Raises
+    ------
+    UnitError
+        An unknown symbol, or a prefixed one (``"nm"``, ``"kN/m"``; ``"kg"`` is allowed).
+
+    Examples
+    --------
+    >>> prefixed_scale(2.5e-8, "m")
+    (1e-09, 'nm')
+    >>> prefixed_scale(3e-12, "m^2")
+    (1e-12, 'µm²')
+    >>> prefixed_scale(4e4, "N/m")
+    (1000.0, 'kN/m')
+    """
+    terms = _terms(unit)
+    prefixed = [s for s, _ in terms if s not in _BASE_UNITS and s not in _PLAIN_UNITS and s != "kg"]
+    if prefixed:
+        raise UnitError(
+            "unit",
+            f"{unit!r} has the prefixed symbol {prefixed[0]!r}; the value must be in unprefixed units.",
+            "give the value in SI: m, N, Pa, J, m^2, N/m.",
+        )
+    prefixable = [k for k, (symbol, power) in enumerate(terms) if symbol in _BASE_UNITS and power > 0]
+    prefixable += [k for k, (symbol, power) in enumerate(terms) if symbol in _BASE_UNITS and power < 0]
+    if not prefixable or value == 0 or not math.isfinite(value):
+        return 1.0, _label(terms)
+    index = prefixable[0]
+    power = terms[index][1]
+    choices = sorted(
+        ((float(f"1e{exponent * power}"), prefix) for prefix, exponent in _DISPLAY_PREFIXES), reverse=True
+    )
+    scale, prefix = next(((s, p) for s, p in choices if abs(value) >= s * (1 - 1e-12)), choices[-1])
+    return scale, _label(terms, prefix, index)
 
 
 def format_si(value: float, unit: str, *, digits: int = 4) -> str:
-    """Format an SI value with the SI prefix that puts it between 1 and 1000.
+    """Format an SI value with the SI prefix that puts it between 1 and 1000 (see :func:`prefixed_scale`).
 
     Parameters
     ----------
     value : float
         Value in the SI unit ``unit``.
     unit : str
-        SI unit symbol to append (``"m"``, ``"Pa"``, ``"N"``).
+        Unprefixed SI unit (``"m"``, ``"Pa"``, ``"N"``, ``"N/m"``, ``"m^2"``).
     digits : int
         Significant digits.
 
@@ -281,11 +363,8 @@ def format_si(value: float, unit: str, *, digits: int = 4) -> str:
     --------
     >>> format_si(2.5e-8, "m")
     '25 nm'
+    >>> format_si(3e-12, "m^2")
+    '3 µm²'
     """
-    if value == 0 or not math.isfinite(value):
-        return f"{value:.{digits}g} {unit}"
-    for prefix, scale in _DISPLAY_PREFIXES:
-        if abs(value) >= scale * (1 - 1e-12):
-            return f"{value / scale:.{digits}g} {prefix}{unit}"
-    prefix, scale = _DISPLAY_PREFIXES[-1]
-    return f"{value / scale:.{digits}g} {prefix}{unit}"
+    scale, label = prefixed_scale(value, unit)
+    return f"{value / scale:.{digits}g} {label}".rstrip()

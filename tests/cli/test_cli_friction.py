@@ -7,7 +7,7 @@ import pytest
 
 from roughcontact.cli import EXIT_INPUT_ERROR, main
 from roughcontact.topography.generate import self_affine, sphere_with_roughness
-from roughcontact.topography.io import save_topography
+from roughcontact.topography.native import save_topography
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "paper000_measured_mu.csv"
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"

@@ -10,7 +10,7 @@ from roughcontact.cli import EXIT_INPUT_ERROR, main
 from roughcontact.materials import get_material
 from roughcontact.models import paper001
 from roughcontact.topography import generate
-from roughcontact.topography.io import save_topography
+from roughcontact.topography.native import save_topography
 
 MEASURED = Path(__file__).parents[2] / "examples" / "paper001_measured_loop.csv"
 

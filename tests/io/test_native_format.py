@@ -6,13 +6,8 @@ import xarray as xr
 
 from roughcontact.errors import InputError, UnsupportedFormatError
 from roughcontact.topography import Topography
-from roughcontact.topography.io import (
-    NATIVE_FORMAT,
-    list_channels,
-    load_topography,
-    read_topography,
-    save_topography,
-)
+from roughcontact.topography.io import list_channels, read_topography
+from roughcontact.topography.native import NATIVE_FORMAT, load_topography, save_topography
 
 INFO = {
     "name": "test",

@@ -127,9 +127,9 @@ def test_asperity_scalars_equal_a_direct_call_on_the_surface_moments():
     kind = get_kind("asperity")
     parameters = kind.parameters.model_validate(
         {
-            "surface": "rough",
+            "topography": "rough",
             "material": "SU-8",
-            "counter": "diamond flat tip",
+            "counter_body": "diamond flat tip",
             "max_force": "100 uN",
             "nominal_area": "400 um^2",
             "steps": 6,
@@ -139,7 +139,7 @@ def test_asperity_scalars_equal_a_direct_call_on_the_surface_moments():
     moments = spectral_moments(inputs.topography("rough"))
     direct = asperity_parameters(
         m0=moments.m0, m2=moments.m2, m4=moments.m4, sample=SU8, counter_body=DIAMOND
-    ).to_dict()
+    ).scalars()
     assert {k: output.scalars[k] for k in direct} == direct
     curve = output.dataset
     loading = np.asarray(curve["branch"]) == "loading"
@@ -154,7 +154,7 @@ def test_load_unload_interferences_equal_a_direct_compress_island():
     kind = get_kind("load_unload")
     parameters = kind.parameters.model_validate(
         {
-            "surface": "island",
+            "topography": "island",
             "material": "SU-8",
             "substrate": "silicon wafer",
             "film_thickness": "6.3 um",
@@ -199,9 +199,9 @@ material = "SU-8"
     ("lines", "field", "words"),
     [
         (
-            'surface = "rough"\nm0 = "0.002 um^2"\nm2 = 0.002\nm4 = "0.017 1/um^2"',
+            'topography = "rough"\nm0 = "0.002 um^2"\nm2 = 0.002\nm4 = "0.017 1/um^2"',
             "analysis[0] (kke)",
-            "found surface, m0, m2, m4",
+            "found topography, m0, m2, m4",
         ),
         ("", "analysis[0] (kke)", "found none"),
         ('m0 = "-0.002 um^2"\nm2 = 0.002\nm4 = "0.017 1/um^2"', "analysis[0] (kke).m0", "must be positive"),

@@ -58,11 +58,11 @@ def _check_results_table(output):
     rows = _rows(output, "validation")
     assert len(rows) == 3 * 3
     assert {row["status"] for row in rows} == {"done"}
-    for column in ("mu", "friction [N]", "adhesive_friction [N]", "mechanical_friction [N]", "load [N]"):
+    for column in ("mu", "friction [N]", "adhesive_friction [N]", "mechanical_friction [N]", "normal_force [N]"):
         assert column in rows[0], column
     assert "crossover_load [N]" in rows[0] and "topographies.scan.ra [m]" in rows[0]
     for row in rows:
-        mu, friction, load = float(row["mu"]), float(row["friction [N]"]), float(row["load [N]"])
+        mu, friction, load = float(row["mu"]), float(row["friction [N]"]), float(row["normal_force [N]"])
         assert load == pytest.approx(10e-6, rel=1e-12)
         assert mu > 0 and friction / load == pytest.approx(mu, rel=1e-12)
         parts = float(row["adhesive_friction [N]"]) + float(row["mechanical_friction [N]"])
@@ -75,7 +75,7 @@ def _check_results_table(output):
     assert len({row["mu"] for row in rows}) == len(rows)
     sweep = _rows(output, "load_sweep")
     assert len(sweep) == 3 * 3 and {row["status"] for row in sweep} == {"done"}
-    assert sorted({float(row["load [N]"]) for row in sweep}) == pytest.approx([1e-6, math.sqrt(1e-9), 1e-3])
+    assert sorted({float(row["normal_force [N]"]) for row in sweep}) == pytest.approx([1e-6, math.sqrt(1e-9), 1e-3])
 
 
 def _check_comparison(output, study):
@@ -145,11 +145,11 @@ seed = 5
 [[analysis]]
 name = "friction"
 model = "friction"
-surface = "scan"
-counter_surface = "tip"
+topography = "scan"
+counter_topography = "tip"
 material = "polysilicon"
-counter = "SiO2"
-load = "{load}"
+counter_body = "SiO2"
+normal_force = "{load}"
 layer_thickness = "40 nm"
 epsilon = "1.5 nm"
 surface_energy = "45 mJ/m^2"
@@ -276,14 +276,14 @@ def test_a_bad_cutoff_unit_is_refused(tmp_path):
 
 
 def test_a_missing_load_is_refused_before_anything_runs(tmp_path):
-    text = DIRECT.format(load="7 uN", extra="").replace('load = "7 uN"\n', "")
+    text = DIRECT.format(load="7 uN", extra="").replace('normal_force = "7 uN"\n', "")
     problems, _ = _problems(tmp_path, text)
-    assert [(f.rsplit(".", 1)[-1], p) for f, p, _ in problems] == [("load", "is required but missing.")]
+    assert [(f.rsplit(".", 1)[-1], p) for f, p, _ in problems] == [("normal_force", "is required but missing.")]
 
 
 def test_a_load_that_is_not_a_force_is_refused(tmp_path):
     problems, _ = _problems(tmp_path, DIRECT.format(load="7 nm", extra=""))
-    assert problems[0][0].endswith("load")
+    assert problems[0][0].endswith("normal_force")
 
 
 def test_a_hold_time_without_relaxation_is_refused(tmp_path):
@@ -325,11 +325,11 @@ seed = 2
 [[analysis]]
 name = "friction"
 model = "friction"
-surface = "scan"
-counter_surface = "tip"
+topography = "scan"
+counter_topography = "tip"
 material = "polysilicon"
-counter = "SiO2"
-load = "{load}"
+counter_body = "SiO2"
+normal_force = "{load}"
 layer_thickness = "{layer}"
 epsilon = "{epsilon}"
 surface_energy = "{energy}"
@@ -418,14 +418,14 @@ radius = "1 um"
 [[analysis]]
 name = "friction"
 model = "friction"
-surface = "scan"
-counter_surface = "tip"
+topography = "scan"
+counter_topography = "tip"
 material = "polysilicon"
-counter = "SiO2"
-load = "1 uN"
+counter_body = "SiO2"
+normal_force = "1 uN"
 surface_energy = "50 mJ/m^2"
 [analysis.sweep]
-load = ["5 uN", "10 uN"]
+normal_force = ["5 uN", "10 uN"]
 replicate = [0, 1, 2]
 sample = ["a", "b"]
 [analysis.compare]
@@ -441,7 +441,7 @@ def test_a_load_sweep_is_compared_at_the_load_of_the_measurements(tmp_path, capl
         "# test values\nsample,mu\n" + "".join(f"{s},{0.5 + 0.1 * k}\n" for s in "abc" for k in range(4))
     )
     path = tmp_path / "with.toml"
-    path.write_text(SWEPT.format(load='load = "10 uN"'))
+    path.write_text(SWEPT.format(load='normal_force = "10 uN"'))
     output = tmp_path / "with"
     assert run_study(load_study(path), output).done == 12
     with caplog.at_level("WARNING"):
@@ -455,29 +455,29 @@ def test_a_load_sweep_is_compared_at_the_load_of_the_measurements(tmp_path, capl
         at_10 = [
             float(r["mu"])
             for r in rows
-            if r["sample"] == row["sample"] and math.isclose(float(r["load [N]"]), 1e-5, rel_tol=1e-12)
+            if r["sample"] == row["sample"] and math.isclose(float(r["normal_force [N]"]), 1e-5, rel_tol=1e-12)
         ]
         assert len(at_10) == int(row["n_simulated"]) == 3
         expected = stats.ttest_ind(at_10, measured[row["sample"]], equal_var=False).pvalue
         assert float(row["p_value"]) == pytest.approx(expected, rel=1e-12)
     by_sample = read_table(output / "tables" / "friction_by_sample.csv")
-    assert [(r["sample"], float(r["load [N]"]), int(r["n"])) for r in by_sample] == [
+    assert [(r["sample"], float(r["normal_force [N]"]), int(r["n"])) for r in by_sample] == [
         ("a", 5e-6, 3),
         ("a", 1e-5, 3),
         ("b", 5e-6, 3),
         ("b", 1e-5, 3),
     ]
 
-    path.write_text(SWEPT.format(load=""))  # two loads and no compare.load: no comparison, and said
+    path.write_text(SWEPT.format(load=""))  # two loads and no compare.normal_force: no comparison, said
     output = tmp_path / "without"
     run_study(load_study(path), output)
     with caplog.at_level("WARNING"):
         write_tables(output)
     assert not (output / "tables" / "friction_comparison.csv").exists()
-    assert "compare.load" in caplog.text
+    assert "compare.normal_force" in caplog.text
     written, problems = draw_figures(output)
     assert {p.name for p in written} == {"friction_friction_vs_load.png"}
-    assert len(problems) == 2 and all("compare.load" in p for p in problems)
+    assert len(problems) == 2 and all("compare.normal_force" in p for p in problems)
 
 
 def test_fields_beyond_the_size_limit_are_not_stored(tmp_path, monkeypatch):

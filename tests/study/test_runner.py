@@ -20,7 +20,8 @@ import numpy as np
 import pytest
 
 import roughcontact
-from roughcontact.cli_study import EXIT_CASES_FAILED, EXIT_INTERRUPTED, run_and_report
+from roughcontact.cli import EXIT_CASES_FAILED, EXIT_INTERRUPTED
+from roughcontact.cli.study import run_and_report
 from roughcontact.study import load_study, run_study
 from roughcontact.study.outputs import write_results_table
 from roughcontact.study.store import read_table, record_path
@@ -194,7 +195,7 @@ def provenance(folder: Path) -> dict:
 def reference(tmp_path_factory):
     """(study file, output folder) of the study run once, uninterrupted, in-process (7 cases)."""
     from roughcontact.topography.generate import self_affine
-    from roughcontact.topography.io import save_topography
+    from roughcontact.topography.native import save_topography
 
     folder = tmp_path_factory.mktemp("reference")
     scan = folder / "scan.nc"

@@ -35,7 +35,7 @@ def pair():
 def model(pair, **options):
     scan, tip = pair
     options = {"layer_thickness": 50e-9, "surface_energy": 0.05, **options}
-    return winkler_lj_model(scan, POLY, SIO2, counter_surface=tip, **options)
+    return winkler_lj_model(scan, POLY, SIO2, counter_topography=tip, **options)
 
 
 def test_readings_defaults_choices_and_strings():
@@ -108,7 +108,7 @@ def test_result_fields_and_xarray(pair):
 def test_solve_winkler_lj_matches_the_model(pair):
     scan, tip = pair
     direct = solve_winkler_lj(
-        scan, POLY, SIO2, load=1e-5, counter_surface=tip, layer_thickness=50e-9, surface_energy=0.05
+        scan, POLY, SIO2, normal_force=1e-5, counter_topography=tip, layer_thickness=50e-9, surface_energy=0.05
     )
     assert direct.mu == model(pair).solve(1e-5).mu
 
@@ -119,7 +119,7 @@ def test_sweep_matches_single_solves(pair):
     sweep = prepared.sweep(loads)
     np.testing.assert_array_equal(sweep.mu, [prepared.solve(load).mu for load in loads])
     assert np.all(np.diff(sweep.mechanical_friction) > 0)
-    assert sweep.to_xarray()["mu"].dims == ("load",)
+    assert sweep.to_xarray()["mu"].dims == ("normal_force",)
 
 
 def test_adhesive_cutoff_removes_far_springs(pair):
@@ -183,7 +183,7 @@ def test_bad_parameters_name_their_field(pair, options, field):
 def test_bad_loads_are_refused(pair, load):
     with pytest.raises(InputError) as error:
         model(pair).solve(load)
-    assert error.value.field == "load"
+    assert error.value.field == "normal_force"
 
 
 def test_different_pixel_sizes_refused_or_resampled(pair):
@@ -191,14 +191,14 @@ def test_different_pixel_sizes_refused_or_resampled(pair):
     coarse_tip = sphere_with_roughness((24, 24), scan.size, radius=1e-6, rms_height=0.3e-9, seed=1)
     with pytest.raises(InputError) as error:
         winkler_lj_model(
-            scan, POLY, SIO2, counter_surface=coarse_tip, layer_thickness=50e-9, surface_energy=0.05
+            scan, POLY, SIO2, counter_topography=coarse_tip, layer_thickness=50e-9, surface_energy=0.05
         )
-    assert error.value.field == "counter_surface" and "resample=True" in error.value.fix
+    assert error.value.field == "counter_topography" and "resample=True" in error.value.fix
     resampled = winkler_lj_model(
         scan,
         POLY,
         SIO2,
-        counter_surface=coarse_tip,
+        counter_topography=coarse_tip,
         resample=True,
         layer_thickness=50e-9,
         surface_energy=0.05,
@@ -211,11 +211,11 @@ def test_a_surface_that_never_reaches_the_flat_is_refused(pair):
     """With the printed sign adhesion carries load; a tiny load then needs the flat metres away."""
     with pytest.raises(InputError, match="never reaches the flat") as error:
         model(pair, readings=Readings(adhesion_sign="printed")).solve(1e-20)
-    assert error.value.field == "load"
+    assert error.value.field == "normal_force"
 
 
 def test_profiles_are_refused():
-    with pytest.raises(InputError, match="surface"):
+    with pytest.raises(InputError, match="topography"):
         winkler_lj_model(Topography(np.zeros(8), 1e-6), POLY, SIO2, layer_thickness=5e-8, surface_energy=0.05)
 
 

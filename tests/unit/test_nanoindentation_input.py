@@ -3,15 +3,19 @@
 import numpy as np
 import pytest
 
+from roughcontact._text_table import split_header
 from roughcontact.errors import InputError, UnitError
 from roughcontact.experiment.nanoindentation import (
     IndentationCurve,
+    IndentationResult,
     berkovich_area,
     detect_segments,
     oliver_pharr,
     read_indentation_csv,
     synthetic_indentation_curve,
 )
+from roughcontact.results import SCALAR_NAME, Result
+from roughcontact.units import prefixed_scale
 
 
 @pytest.fixture(scope="module")
@@ -157,3 +161,105 @@ def test_scalars_are_flat_and_area_function_and_beta_enter(curve):
     doubled = oliver_pharr(curve, area_function=lambda d: 4 * berkovich_area(d))
     assert doubled.reduced_modulus == pytest.approx(result.reduced_modulus / 2)
     assert oliver_pharr(curve, beta=1.034).reduced_modulus == pytest.approx(result.reduced_modulus / 1.034)
+
+
+@pytest.mark.parametrize(
+    "header, separator",
+    [
+        ("time/s,depth/nm,load/mN", ","),
+        ("time/s depth/nm load/mN", " "),
+        ('Time (s); "Indentation_Depth [nm]"; "Normal-Load (mN)"', ";"),
+    ],
+)
+def test_unit_after_a_slash_and_other_header_forms_read_through_the_text_table(tmp_path, header, separator):
+    rows = "".join(separator.join((str(i), str(i * 10), str(i * 0.1))) + "\n" for i in range(12))
+    read = read_indentation_csv(_write(tmp_path, f"# comment\n{header}\n{rows}"))
+    np.testing.assert_allclose(read.time[:3], [0, 1, 2], rtol=0, atol=0)
+    np.testing.assert_allclose(read.depth[:3], [0, 1e-8, 2e-8], rtol=1e-12, atol=0)
+    np.testing.assert_allclose(read.load[:3], [0, 1e-4, 2e-4], rtol=1e-12, atol=0)
+
+
+def test_split_header_forms():
+    assert split_header("time/s") == ("time", "s")
+    assert split_header("Load [mN]") == ("load", "mN")
+    assert split_header(" depth (nm) ") == ("depth", "nm")
+    assert split_header("stiffness/N/m") == ("stiffness", "N/m")
+    assert split_header("load (corrected) [mN]") == ("load (corrected)", "mN")
+    assert split_header("step") == ("step", None) and split_header("depth ()") == ("depth", None)
+    assert split_header("/s") == ("/s", None)
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("depth load\n" + "1 1\n" * 12, "no unit"),
+        ("indentation depth (nm) load (mN)\n" + "1 1\n" * 12, "join the words"),
+        ("1,2\n" * 12, "no header line"),
+        ("# only a comment\n", "no header and data rows"),
+        ("depth (nm),load (mN)\n", "no header and data rows"),
+        ("depth\n" + "1\n" * 12, "single column"),
+    ],
+)
+def test_table_shape_errors(tmp_path, text, message):
+    with pytest.raises(InputError, match=message):
+        read_indentation_csv(_write(tmp_path, text))
+
+
+@pytest.mark.parametrize("timed", [True, False])
+def test_to_xarray_holds_the_curve_fit_and_scalars_with_units(curve, timed, tmp_path):
+    import xarray as xr
+
+    curve = curve if timed else IndentationCurve(curve.depth, curve.load)
+    result = oliver_pharr(curve)
+    data = result.to_xarray()
+    size = curve.depth.size
+    expected = {"depth": "m", "load": "N", "segment": "1", "fit_load": "N", "in_fit_range": "1"}
+    if timed:
+        expected["time"] = "s"
+        np.testing.assert_array_equal(data["time"], curve.time)
+    assert {name: data[name].attrs["units"] for name in data.data_vars} == expected
+    assert all(data[name].dims == ("sample",) and data[name].size == size for name in data.data_vars)
+    np.testing.assert_array_equal(data["depth"], curve.depth)
+    np.testing.assert_array_equal(data["load"], curve.load)
+    segments = result.segments
+    labels = data["segment"].values
+    assert set(labels) == {"loading", "hold", "unloading"}
+    assert (labels[: segments.hold.start] == "loading").all()
+    assert (labels[segments.hold.start : segments.unloading.start] == "hold").all()
+    assert (labels[segments.unloading] == "unloading").all()
+    unloading = labels == "unloading"
+    np.testing.assert_allclose(
+        data["fit_load"].values[unloading],
+        result.unloading_fit.load(curve.depth[unloading]),
+        rtol=1e-15,
+        atol=0,
+    )
+    assert np.isnan(data["fit_load"].values[~unloading]).all()
+    assert int(data["in_fit_range"].sum()) == result.unloading_fit.points
+    assert data.attrs == result.scalars()
+    # the scalars survive a netCDF file
+    path = tmp_path / "indentation.nc"
+    data.to_netcdf(path)
+    with xr.open_dataset(path) as back:
+        assert set(back.attrs) == set(result.scalars())
+        for name, value in result.scalars().items():
+            assert back.attrs[name] == (
+                pytest.approx(value, rel=1e-15) if isinstance(value, float) else value
+            )
+        assert list(back["segment"].values) == list(labels)
+
+
+def test_result_protocol_units_name_every_dimensional_scalar(curve):
+    result = oliver_pharr(curve)
+    scalars = result.scalars()
+    assert isinstance(result, Result)
+    assert all(SCALAR_NAME.match(name) for name in scalars)
+    assert set(IndentationResult.UNITS) <= set(scalars)
+    dimensionless = {
+        "time_basis", "fit_exponent", "fit_range_low", "fit_range_high", "fit_points", "creep_fit",
+        "rate_sign", "epsilon", "beta", "poissons_ratio", "indenter", "indenter_poissons_ratio",
+    }  # fmt: skip
+    fractional = {"fit_alpha", "creep_fit_a"}  # units of fitted or fractional powers, documented
+    assert set(scalars) == set(IndentationResult.UNITS) | dimensionless | fractional
+    for unit in IndentationResult.UNITS.values():
+        assert prefixed_scale(1.0, unit)  # every unit is one roughcontact.units can show

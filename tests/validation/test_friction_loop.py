@@ -80,14 +80,18 @@ def test_eq9_fit_is_the_masing_branch(clean):
 
 
 def test_paper001_point_stiffness_matches_loop_analysis():
-    from roughcontact.analytic.mindlin import paper001_mindlin
     from roughcontact.materials import Material
+    from roughcontact.models.paper001 import paper001_mindlin
 
     m = paper001_mindlin(
-        mu=MU, normal_force=P, radius=5e-3, material=Material(0.98e9, 0.5), counter=Material(130e9, 0.28)
+        friction_coefficient=MU,
+        normal_force=P,
+        radius=5e-3,
+        material=Material(0.98e9, 0.5),
+        counter_body=Material(130e9, 0.28),
     )
     path = paper_path(stroke=8 * m.sliding_distance, cycles=2)
-    force = masing_force(path, m.mu, m.normal_force, m.contact_radius, m.shear_modulus)
+    force = masing_force(path, m.friction_coefficient, m.normal_force, m.contact_radius, m.shear_modulus)
     result = analyse_loop(path, force, P)
     assert np.allclose(result.branch.point_stiffness, m.point_stiffness(), rtol=1e-5)
 

@@ -13,7 +13,6 @@ from roughcontact.analytic.mindlin import (
     lateral_stiffness,
     masing_displacement,
     masing_force,
-    paper001_mindlin,
     shear_traction,
     sliding_displacement,
     stick_radius,
@@ -27,6 +26,7 @@ from roughcontact.materials import (
     effective_shear_modulus_paper001,
     johnson_shear_modulus,
 )
+from roughcontact.models.paper001 import paper001_mindlin
 
 HDPE = Material(0.98e9, 0.5, "HDPE")
 SILICON = Material(130e9, 0.28, "silicon")
@@ -198,7 +198,9 @@ def test_displacement_energy_partial_slip_equals_force_form():
 
 
 def test_paper001_printed_is_four_times_johnson():
-    kw = dict(mu=0.153, normal_force=25e-3, radius=5e-3, material=HDPE, counter=SILICON)
+    kw = dict(
+        friction_coefficient=0.153, normal_force=25e-3, radius=5e-3, material=HDPE, counter_body=SILICON
+    )
     johnson = paper001_mindlin(**kw)
     printed = paper001_mindlin(**kw, normalisation="printed")
     assert johnson.normalisation == "johnson"

@@ -29,7 +29,7 @@ def paper_like(n=64, seed=3, readings=None, **options):
     tip = sphere_with_roughness((n, n), size, radius=1e-6, rms_height=0.3e-9, seed=seed)
     scan = self_affine((n, n), size, hurst=0.8, rms_height=1.8e-9, seed=seed + 1)
     options = {"layer_thickness": 50e-9, "surface_energy": 0.05, **options}
-    return winkler_lj_model(scan, POLY, SIO2, counter_surface=tip, readings=readings, **options)
+    return winkler_lj_model(scan, POLY, SIO2, counter_topography=tip, readings=readings, **options)
 
 
 def tail_integral(start: float) -> float:
@@ -233,7 +233,7 @@ def solve_in_units(readings, length, force):
         scaled(scan),
         material(POLY),
         material(SIO2),
-        counter_surface=scaled(tip),
+        counter_topography=scaled(tip),
         layer_thickness=50e-9 * length,
         epsilon=2e-9 * length,
         surface_energy=0.05 * force / length,
@@ -292,4 +292,4 @@ def test_load_the_layer_cannot_carry_is_refused():
     model = paper_like()
     with pytest.raises(InputError, match="load") as error:
         model.solve(2 * model.load_capacity())
-    assert error.value.field == "load"
+    assert error.value.field == "normal_force"

@@ -23,11 +23,8 @@ Q = Q_r + 2 Q_M((delta - delta_r)/2), where Q_M is the odd extension of the mono
 reversals (a branch that reaches the reversal point before the last one closes that inner loop
 and continues on the branch it interrupted).
 
-Paper 001 (eqs. 10-12) prints the same solution with its own shear modulus G_s, defined by
-1/G_s = sum (2 - nu)(1 + nu)/(2E) = sum (2 - nu)/(4G), i.e. G_s = 4 G*, but keeps Johnson's
-prefactors 3/16 and 8 that belong to G*. As printed, delta_0 is 4x too small and K_L 4x too
-large. :func:`paper001_mindlin` offers both readings through ``normalisation``
-(``"johnson"``, the default and physically consistent one, or ``"printed"``).
+Paper 001 (eqs. 10-12) prints the same solution with its own shear modulus G_s; its reference,
+in the textbook reading and as printed, is :func:`roughcontact.models.paper001.paper001_mindlin`.
 
 All quantities are SI (N, m, Pa, J). Johnson's equation numbers are given as commonly cited (not
 re-checked against the book); the formulas themselves are verified by
@@ -53,39 +50,26 @@ experiment", ASME J. Tribol. (2020), eqs. 10-12. doi:10.1115/1.4045900
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from numbers import Real
 
 import numpy as np
 
+from .._deprecation import moved
+from ..checks import finite_array, positive
 from ..errors import InputError
-from ..materials import (
-    Material,
-    contact_modulus,
-    effective_shear_modulus_paper001,
-    johnson_shear_modulus,
-)
 
 __all__ = [
-    "NORMALISATIONS",
-    "Paper001Mindlin",
     "dissipated_energy",
     "dissipated_energy_displacement",
     "hertz_contact_radius",
     "lateral_stiffness",
     "masing_displacement",
     "masing_force",
-    "paper001_mindlin",
     "shear_traction",
     "sliding_displacement",
     "stick_radius",
     "tangential_displacement",
     "tangential_force",
 ]
-
-NORMALISATIONS = ("johnson", "printed")
-"""Readings of paper 001 eqs. 10 and 12, see :func:`paper001_mindlin`."""
-
 
 # --- moduli ---------------------------------------------------------------------------------------
 
@@ -109,45 +93,28 @@ def hertz_contact_radius(normal_force: float, radius: float, contact_modulus: fl
     float
         a [m].
     """
-    _positive(normal_force, "normal_force", "0.025 (25 mN)")
-    _positive(radius, "radius", "5e-3 (5 mm)")
-    _positive(contact_modulus, "contact_modulus", "1.3e9 (1.3 GPa)")
+    positive(normal_force, "normal_force", example="0.025", unit="N")
+    positive(radius, "radius", example="5e-3", unit="m")
+    positive(contact_modulus, "contact_modulus", example="1.3e9", unit="Pa")
     return (3.0 * normal_force * radius / (4.0 * contact_modulus)) ** (1.0 / 3.0)
 
 
 # --- checks ---------------------------------------------------------------------------------------
 
 
-def _positive(value, field: str, example: str) -> float:
-    if isinstance(value, bool) or not isinstance(value, Real) or not math.isfinite(value) or value <= 0:
-        raise InputError(
-            field, f"{value!r} is not a positive finite number.", f"give a value in SI units, e.g. {example}."
-        )
-    return float(value)
-
-
 def _check_contact(mu, normal_force, contact_radius, shear_modulus=None) -> float:
     """Validate the common parameters; return mu P [N]."""
-    _positive(mu, "mu", "0.15")
-    _positive(normal_force, "normal_force", "0.025 (25 mN)")
-    _positive(contact_radius, "contact_radius", "20e-6 (20 um)")
+    positive(mu, "mu", example="0.15")
+    positive(normal_force, "normal_force", example="0.025", unit="N")
+    positive(contact_radius, "contact_radius", example="20e-6", unit="m")
     if shear_modulus is not None:
-        _positive(shear_modulus, "shear_modulus", "0.1e9 (G* = 0.1 GPa)")
+        positive(shear_modulus, "shear_modulus", example="0.1e9", unit="Pa")
     return float(mu) * float(normal_force)
-
-
-def _finite_array(values, field: str) -> np.ndarray:
-    array = np.asarray(values, dtype=float)
-    if not np.all(np.isfinite(array)):
-        raise InputError(
-            field, "contains NaN or infinite values.", "remove or interpolate the missing samples."
-        )
-    return array
 
 
 def _force_ratio(force, mu_p: float, field: str = "force") -> np.ndarray:
     """|Q| / (mu P), checked to lie in [0, 1] (with a rounding allowance)."""
-    ratio = np.abs(_finite_array(force, field)) / mu_p
+    ratio = np.abs(finite_array(force, field)) / mu_p
     if np.any(ratio > 1.0 + 1e-12):
         raise InputError(
             field,
@@ -219,7 +186,7 @@ def shear_traction(r, force, mu: float, normal_force: float, contact_radius: flo
     c_over_a = math.cbrt(1.0 - ratio)
     c = a * c_over_a
     p0 = 3.0 * normal_force / (2.0 * math.pi * a**2)
-    rr = np.abs(_finite_array(r, "r"))
+    rr = np.abs(finite_array(r, "r"))
     full = mu * p0 * np.sqrt(np.clip(1.0 - (rr / a) ** 2, 0.0, None))
     if c > 0:
         full = full - c_over_a * mu * p0 * np.sqrt(np.clip(1.0 - (rr / c) ** 2, 0.0, None))
@@ -303,7 +270,7 @@ def tangential_force(
         Q [N].
     """
     delta0 = sliding_displacement(mu, normal_force, contact_radius, shear_modulus)
-    delta = _finite_array(displacement, "displacement")
+    delta = finite_array(displacement, "displacement")
     return _as_output(_virgin_force(delta, mu * normal_force, delta0), displacement)
 
 
@@ -376,9 +343,9 @@ def masing_displacement(
     if branch not in ("unloading", "reloading"):
         raise InputError("branch", f"unknown branch {branch!r}.", "choose 'unloading' or 'reloading'.")
     mu_p = _check_contact(mu, normal_force, contact_radius, shear_modulus)
-    _positive(force_amplitude, "force_amplitude", "0.5 * mu * normal_force")
+    positive(force_amplitude, "force_amplitude", example="0.5 * mu * normal_force")
     _force_ratio(force_amplitude, mu_p, "force_amplitude")
-    q = _finite_array(force, "force")
+    q = finite_array(force, "force")
     if np.any(np.abs(q) > force_amplitude * (1.0 + 1e-12)):
         raise InputError("force", "lies outside [-Q*, Q*].", "keep |force| <= force_amplitude.")
     q = np.clip(q, -force_amplitude, force_amplitude)
@@ -431,7 +398,7 @@ def masing_force(
     """
     delta0 = sliding_displacement(mu, normal_force, contact_radius, shear_modulus)
     mu_p = mu * normal_force
-    path = _finite_array(displacement_path, "displacement_path")
+    path = finite_array(displacement_path, "displacement_path")
     if path.ndim != 1 or path.size == 0:
         raise InputError(
             "displacement_path", "expected a non-empty 1-D array.", "pass a sequence of displacements [m]."
@@ -503,7 +470,7 @@ def dissipated_energy(
     Mindlin and Deresiewicz (1953); Johnson (1985), sec. 7.4, eq. 7.59.
     """
     mu_p = _check_contact(mu, normal_force, contact_radius, shear_modulus)
-    _positive(force_amplitude, "force_amplitude", "0.5 * mu * normal_force")
+    positive(force_amplitude, "force_amplitude", example="0.5 * mu * normal_force")
     x = float(_force_ratio(force_amplitude, mu_p, "force_amplitude"))
     prefactor = 9.0 * mu_p**2 / (10.0 * contact_radius * shear_modulus)
     return prefactor * (1.0 - (1.0 - x) ** (5.0 / 3.0) - 5.0 * x / 6.0 * (1.0 + (1.0 - x) ** (2.0 / 3.0)))
@@ -535,7 +502,7 @@ def dissipated_energy_displacement(
     float
         W [J] per cycle.
     """
-    _positive(displacement_range, "displacement_range", "2.8e-6 (2.8 um)")
+    positive(displacement_range, "displacement_range", example="2.8e-6", unit="m")
     delta0 = sliding_displacement(mu, normal_force, contact_radius, shear_modulus)
     half = displacement_range / 2.0
     mu_p = mu * normal_force
@@ -545,138 +512,9 @@ def dissipated_energy_displacement(
     return 0.8 * mu_p * delta0 + 4.0 * mu_p * (half - delta0)
 
 
-# --- paper 001, eqs. 10-12 ---------------------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class Paper001Mindlin:
-    """Paper 001's Mindlin reference (eqs. 10-12) for one ball, load and friction coefficient.
-
-    Attributes
-    ----------
-    mu : float
-        Friction coefficient [-].
-    normal_force : float
-        F0 [N].
-    contact_radius : float
-        Hertz radius a from eq. 11 [m].
-    shear_modulus : float
-        The modulus that multiplies the prefactors 3/16 and 8: G* for ``"johnson"``, G_s (= 4 G*)
-        for ``"printed"`` [Pa].
-    normalisation : str
-        ``"johnson"`` or ``"printed"``.
-    """
-
-    mu: float
-    normal_force: float
-    contact_radius: float
-    shear_modulus: float
-    normalisation: str
-
-    @property
-    def sliding_distance(self) -> float:
-        """delta_0 = 3 mu F0 / (16 a G) [m] (eq. 10)."""
-        return sliding_displacement(self.mu, self.normal_force, self.contact_radius, self.shear_modulus)
-
-    @property
-    def initial_stiffness(self) -> float:
-        """K_L at F_x = 0: 8 a G [N/m] (eq. 12)."""
-        return 8.0 * self.contact_radius * self.shear_modulus
-
-    def force(self, displacement):
-        """F_x(delta_x), eq. 10 [N] (saturated at mu F0 beyond delta_0)."""
-        return tangential_force(
-            displacement, self.mu, self.normal_force, self.contact_radius, self.shear_modulus
-        )
-
-    def displacement(self, force):
-        """delta_x(F_x), inverse of eq. 10 [m]."""
-        return tangential_displacement(
-            force, self.mu, self.normal_force, self.contact_radius, self.shear_modulus
-        )
-
-    def lateral_stiffness(self, force):
-        """K_L = 8 a G (1 - F_x / (mu F0))^(1/3), eq. 12 [N/m], at tangential force F_x [N]."""
-        return lateral_stiffness(force, self.mu, self.normal_force, self.contact_radius, self.shear_modulus)
-
-    def point_stiffness(self, fractions=(0.25, 0.5, 0.75)) -> np.ndarray:
-        """K_L [N/m] at the loop points A, B, C of :mod:`roughcontact.experiment.friction_loop`.
-
-        A point at the fraction f of a sliding branch's force span 2 mu F0 lies where the
-        Masing branch has changed by 2 Q_M(x/2) = f 2 mu F0, so its stiffness is eq. 12 at
-        F_x = f mu F0: K_L = 8 a G (1 - f)^(1/3).
-        """
-        f = np.asarray(fractions, dtype=float)
-        if np.any((f < 0) | (f > 1)) or not np.all(np.isfinite(f)):
-            raise InputError("fractions", f"{fractions!r} must lie in [0, 1].", "use e.g. (0.25, 0.5, 0.75).")
-        return self.initial_stiffness * np.cbrt(1.0 - f)
-
-    def lateral_stiffness_at_displacement(self, displacement):
-        """K_L = 3 mu F0 / (2 delta_0) (1 - delta_x / delta_0)^(1/2), eq. 12 [N/m]."""
-        delta0 = self.sliding_distance
-        x = np.minimum(np.abs(_finite_array(displacement, "displacement")) / delta0, 1.0)
-        return _as_output(1.5 * self.mu * self.normal_force / delta0 * np.sqrt(1.0 - x), displacement)
-
-
-def paper001_mindlin(
-    *,
-    mu: float,
-    normal_force: float,
-    radius: float,
-    material: Material,
-    counter: Material | None = None,
-    normalisation: str = "johnson",
-) -> Paper001Mindlin:
-    r"""Mindlin reference of paper 001 (eqs. 10-12) for a ball of ``radius`` on a flat.
-
-    Eq. 11 gives a^3 = 3 F0 R / (4 E_s) with 1/E_s = sum (1 - nu^2)/E. Eqs. 10 and 12 give
-    delta_0 = 3 mu F0 / (16 a G) and K_L = 8 a G (1 - F_x/(mu F0))^(1/3), where G is
-
-    * ``normalisation="johnson"`` (default): Johnson's G*, 1/G* = sum (2 - nu)/G. This is the
-      textbook Mindlin solution (Johnson 1985, eq. 7.42), to which the prefactors 3/16 and 8
-      belong.
-    * ``normalisation="printed"``: the paper's G_s as printed, 1/G_s = sum (2 - nu)(1 + nu)/(2E)
-      = sum (2 - nu)/(4G), i.e. G_s = 4 G*. Combined with the prefactors 3/16 and 8 this makes
-      delta_0 4 times smaller and K_L exactly 4 times larger than Johnson's (the force at a given
-      fraction of mu F0 is unchanged). Use it only to reproduce the paper's printed numbers
-      (Fig. 15, dashed lines). The consistent form with G_s would be delta_0 = 3 mu F0/(4 a G_s)
-      and K_L = 2 a G_s, which equals the ``"johnson"`` reading.
-
-    Parameters
-    ----------
-    mu : float
-        Friction coefficient mu_f [-] (paper Table 1).
-    normal_force : float
-        F0 [N].
-    radius : float
-        Ball radius R [m] (paper: 5 mm, a 10 mm ball).
-    material, counter : Material, Material or None
-        The two bodies (``counter=None`` is rigid), e.g. HDPE (0.98 GPa, 0.5) and silicon
-        (130 GPa, 0.28) from Table 2.
-    normalisation : {"johnson", "printed"}
-        See above.
-
-    Returns
-    -------
-    Paper001Mindlin
-        a, the modulus used, delta_0 and the force and stiffness functions.
-
-    Raises
-    ------
-    InputError
-        Unknown ``normalisation``, non-positive numbers or bodies that are not Materials.
-    """
-    if normalisation not in NORMALISATIONS:
-        raise InputError(
-            "normalisation",
-            f"unknown normalisation {normalisation!r}.",
-            "choose 'johnson' (textbook Mindlin, default) or 'printed' (paper 001 as printed, "
-            "K_L 4x larger).",
-        )
-    _positive(mu, "mu", "0.153")
-    a = hertz_contact_radius(normal_force, radius, contact_modulus(material, counter))
-    if normalisation == "johnson":
-        g = johnson_shear_modulus(material, counter)
-    else:
-        g = effective_shear_modulus_paper001(material, counter)
-    return Paper001Mindlin(float(mu), float(normal_force), a, g, normalisation)
+def __getattr__(name: str):
+    """Serve paper 001's reference, which moved to :mod:`roughcontact.models.paper001`, with a warning."""
+    homes = dict.fromkeys(
+        ("NORMALISATIONS", "Paper001Mindlin", "paper001_mindlin"), "roughcontact.models.paper001"
+    )
+    return moved(__name__, name, homes)

@@ -43,8 +43,9 @@ import math
 
 import numpy as np
 
+from ..checks import positive
 from ..errors import InputError
-from ..materials import _check_poissons_ratio, _check_positive
+from ..materials import _check_poissons_ratio
 
 KOGUT_ETSION_MAX = 110.0
 """Upper end of the Kogut-Etsion fits in omega* (fully plastic beyond)."""
@@ -102,11 +103,6 @@ def contact_pressure_factor(poissons_ratio: float) -> float:
     return 0.454 + 0.41 * poissons_ratio
 
 
-def _positive(**values: float) -> None:
-    for field, value in values.items():
-        _check_positive(value, field, "a positive value in SI units")
-
-
 def critical_interference(
     *, hardness: float, poissons_ratio: float, contact_modulus: float, radius: float
 ) -> float:
@@ -140,7 +136,9 @@ def critical_interference(
     ----------
     Chang, Etsion and Bogy (1987), doi:10.1115/1.3261348. Seed paper 002, eqs. 6 and 8.
     """
-    _positive(hardness=hardness, contact_modulus=contact_modulus, radius=radius)
+    positive(hardness, "hardness", example="0.462e9", unit="Pa")
+    positive(contact_modulus, "contact_modulus", example="7.97e9", unit="Pa")
+    positive(radius, "radius", example="5.08e-6", unit="m")
     factor = contact_pressure_factor(poissons_ratio)
     return (math.pi * factor * hardness / (2.0 * contact_modulus)) ** 2 * radius
 
@@ -197,7 +195,8 @@ def plasticity_index(summit_height_std: float, critical_interference: float) -> 
     Greenwood and Williamson (1966), doi:10.1098/rspa.1966.0242; Chang, Etsion and Bogy (1987),
     doi:10.1115/1.3261348. Seed paper 002, eq. 9.
     """
-    _positive(summit_height_std=summit_height_std, critical_interference=critical_interference)
+    positive(summit_height_std, "summit_height_std", example="4.31e-8", unit="m")
+    positive(critical_interference, "critical_interference", example="1.25e-8", unit="m")
     return math.sqrt(summit_height_std / critical_interference)
 
 
@@ -301,7 +300,9 @@ def jackson_green_critical_interference(
     ----------
     Jackson and Green (2005), eqs. 3 and 5. doi:10.1115/1.1866166
     """
-    _positive(yield_strength=yield_strength, contact_modulus=contact_modulus, radius=radius)
+    positive(yield_strength, "yield_strength", example="0.165e9", unit="Pa")
+    positive(contact_modulus, "contact_modulus", example="7.97e9", unit="Pa")
+    positive(radius, "radius", example="5.08e-6", unit="m")
     _check_poissons_ratio(poissons_ratio)
     factor = 1.295 * math.exp(0.736 * poissons_ratio)
     return (math.pi * factor * yield_strength / (2.0 * contact_modulus)) ** 2 * radius
@@ -401,7 +402,7 @@ def paper002_eq10_load(w_star, *, critical_load: float, reading: str = "sound"):
     """
     if reading not in _PAPER002_READINGS:
         raise InputError("reading", f"unknown reading {reading!r}.", f"use one of {_PAPER002_READINGS}.")
-    _positive(critical_load=critical_load)
+    positive(critical_load, "critical_load", example="1e-6", unit="N")
     w = _w_star(w_star, upper=KOGUT_ETSION_MAX)
     excess = np.maximum(w - 1.0, 0.0) ** 1.27
     if reading == "sound":
@@ -498,8 +499,9 @@ def unloading_load(interference, *, max_interference: float, max_load: float, cr
     ----------
     Etsion, Kligerman and Kadin (2005), doi:10.1016/j.ijsolstr.2004.12.006. Seed paper 002, eq. 11.
     """
-    _positive(max_interference=max_interference, critical_interference=critical_interference)
-    _check_positive(max_load, "max_load", "a load in N", allow_zero=True)
+    positive(max_interference, "max_interference", example="1e-7", unit="m")
+    positive(critical_interference, "critical_interference", example="1.25e-8", unit="m")
+    positive(max_load, "max_load", example="1e-6", unit="N", allow_zero=True)
     omega = np.asarray(interference, dtype=float)
     if np.any(omega > max_interference * (1 + 1e-12)):
         raise InputError(

@@ -36,8 +36,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import integrate, special
 
+from ..checks import positive
 from ..errors import InputError
-from ..materials import _check_positive
 from ..topography import Topography
 from ..topography.statistics import McCoolParameters, mccool_parameters_of, summits
 
@@ -309,8 +309,8 @@ def greenwood_williamson(
     ----------
     Greenwood and Williamson (1966). doi:10.1098/rspa.1966.0242
     """
-    _check_positive(contact_modulus, "contact_modulus", "7.97e9 (7.97 GPa)")
-    _check_positive(nominal_area, "nominal_area", "625e-12 (25 um x 25 um)")
+    positive(contact_modulus, "contact_modulus", example=7.97e9, unit="Pa")
+    positive(nominal_area, "nominal_area", example=625e-12, unit="m^2")
     d = np.atleast_1d(np.asarray(separation, dtype=float))
     count = distribution.summit_density * nominal_area
     radius = distribution.summit_radius

@@ -35,12 +35,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 from scipy import optimize
 
+from ..checks import positive
 from ..errors import InputError
-from ..materials import _check_positive
 from . import elastic_plastic as ep
 from .greenwood_williamson import SummitDistribution
 
@@ -94,6 +95,54 @@ class StatisticalLoadUnload:
     def peak(self) -> int:
         """Index of the peak load: the last point of the loading branch."""
         return int(np.flatnonzero(self.branch == "loading")[-1])
+
+    UNITS: ClassVar[dict[str, str]] = {
+        "peak_force": "N",
+        "peak_interference": "m",
+        "residual_interference": "m",
+        "peak_contact_area": "m^2",
+        "critical_interference": "m",
+        "critical_load": "N",
+    }
+    """SI unit of each dimensional scalar of :meth:`scalars`."""
+
+    CURVE_UNITS: ClassVar[dict[str, tuple[str, str]]] = {
+        "approach": ("m", "interference, zero at reference_force on loading"),
+        "interference_ratio": ("", "interference over omega_c"),
+        "separation": ("m", "flat to the summits' mean plane"),
+        "force": ("N", "load"),
+        "contact_area": ("m^2", "real contact area (loading only)"),
+        "number_of_contacts": ("", "summits in contact"),
+        "plastic_fraction": ("", "fraction of the touching summits loaded beyond omega_c"),
+    }
+    """Unit and meaning of each variable of :meth:`curve` and :meth:`to_xarray`."""
+
+    def scalars(self) -> dict[str, float | str]:
+        """Return the peak, the residual interference and the scales (SI; units in :attr:`UNITS`)."""
+        peak = self.peak
+        return {
+            "law": self.law,
+            "peak_force": float(self.force[peak]),
+            "peak_interference": float(self.approach[peak]),
+            "residual_interference": self.residual_interference,
+            "peak_contact_area": float(self.contact_area[peak]),
+            "peak_number_of_contacts": float(self.number_of_contacts[peak]),
+            "plastic_fraction_at_peak": float(self.plastic_fraction[peak]),
+            "critical_interference": self.critical_interference,
+            "critical_load": self.critical_load,
+        }
+
+    def to_xarray(self):
+        """Return the curve as an ``xarray.Dataset`` on the dimension ``point`` (SI, with units)."""
+        import xarray as xr
+
+        curve = self.curve()
+        data = {"branch": ("point", np.asarray(curve["branch"]).astype(str))}
+        for name, (unit, meaning) in self.CURVE_UNITS.items():
+            values = np.asarray(curve[name], dtype=float)
+            data[name] = ("point", values, {"units": unit, "long_name": meaning})
+        attributes = {"law": self.law, "critical_interference": self.critical_interference}
+        return xr.Dataset(data, attrs=attributes)
 
     def curve(self) -> dict[str, np.ndarray]:
         """Return the curve as a dict (the keys of ``LoadUnloadResult.curve()`` plus more), SI."""
@@ -249,8 +298,9 @@ def statistical_load_unload(
         raise InputError("law", f"unknown loading law {law!r}.", f"use one of {LOADING_LAWS}.")
     if law == "jackson_green" and yield_strength is None:
         raise InputError("yield_strength", "the Jackson-Green law needs it.", "pass yield_strength in Pa.")
-    for field, value in (("max_force", max_force), ("nominal_area", nominal_area), ("threshold", threshold)):
-        _check_positive(value, field, "a positive value in SI units")
+    positive(max_force, "max_force", example=1e-3, unit="N")
+    positive(nominal_area, "nominal_area", example=625e-12, unit="m^2")
+    positive(threshold, "threshold", example=1e-9)
     if reference_force is not None and not 0 < reference_force < max_force:
         raise InputError(
             "reference_force", f"{reference_force!r} N is not between 0 and the peak load.", "e.g. 25e-6."

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import asdict, dataclass
+from typing import ClassVar
 
 from ..errors import InputError
 from ..materials import Material, contact_modulus
@@ -54,9 +55,33 @@ class AsperityParameters:
     critical_load: float
     plasticity_index: float
 
-    def to_dict(self) -> dict[str, float]:
-        """Return the fields as a plain dict (SI)."""
+    UNITS: ClassVar[dict[str, str]] = {
+        "m0": "m^2",
+        "m4": "1/m^2",
+        "summit_density": "1/m^2",
+        "summit_radius": "m",
+        "summit_height_std": "m",
+        "summit_mean_offset": "m",
+        "contact_modulus": "Pa",
+        "critical_interference": "m",
+        "critical_load": "N",
+    }
+    """SI unit of each dimensional scalar of :meth:`scalars` (the others are dimensionless)."""
+
+    def scalars(self) -> dict[str, float]:
+        """Return the fields as a plain dict (SI; units in :attr:`UNITS`)."""
         return asdict(self)
+
+    def to_xarray(self):
+        """Return the parameters as an ``xarray.Dataset`` of scalar variables with their units."""
+        import xarray as xr
+
+        return xr.Dataset(
+            {
+                name: ((), value, {"units": self.UNITS.get(name, "1")})
+                for name, value in self.scalars().items()
+            }
+        )
 
 
 def asperity_parameters(

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 from scipy import ndimage
@@ -84,6 +84,17 @@ class NormalContactResult:
     hardness: float | None = None
     parameters: dict[str, Any] = field(default_factory=dict)
 
+    UNITS: ClassVar[dict[str, str]] = {
+        "force": "N",
+        "mean_pressure": "Pa",
+        "approach": "m",
+        "contact_area": "m^2",
+        "mean_gap": "m",
+        "max_pressure": "Pa",
+        "contact_modulus": "Pa",
+    }
+    """SI unit of each dimensional scalar of :meth:`scalars` (for a line scan force is per metre)."""
+
     def __post_init__(self):
         for name in ("pressure", "gap", "displacement"):
             getattr(self, name).setflags(write=False)
@@ -158,6 +169,7 @@ class NormalContactResult:
             "max_pressure": float(self.pressure.max()),
             "iterations": self.iterations,
             "residual": self.residual,
+            "contact_modulus": self.contact_modulus,
         }
 
     def to_xarray(self):
@@ -177,7 +189,6 @@ class NormalContactResult:
         data = {name: (axes, np.asarray(values), {"units": units[name]}) for name, values in fields.items()}
         attributes = {k: v for k, v in self.scalars().items()}
         attributes.update(
-            contact_modulus=self.contact_modulus,
             boundary=self.boundary,
             tolerance=self.tolerance,
             hardness=np.nan if self.hardness is None else self.hardness,

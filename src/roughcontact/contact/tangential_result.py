@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
@@ -122,6 +123,19 @@ class TangentialPathResult:
     states: dict[int, TangentialState]
     parameters: dict[str, Any] = field(default_factory=dict)
 
+    UNITS: ClassVar[dict[str, str]] = {
+        "normal_force": "N",
+        "last_delta_x": "m",
+        "last_delta_y": "m",
+        "last_force_x": "N",
+        "last_force_y": "N",
+        "last_contact_area": "m^2",
+        "last_stick_area": "m^2",
+        "last_slip_area": "m^2",
+        "energy_last_closed_loop": "J",
+    }
+    """SI unit of each dimensional scalar of :meth:`scalars`."""
+
     @property
     def steps(self) -> int:
         """Number of steps."""
@@ -163,19 +177,34 @@ class TangentialPathResult:
             energies.append(float(np.sum(0.5 * (f[1:] + f[:-1]) * np.diff(d, axis=0))))
         return np.asarray(energies)
 
-    def scalars(self) -> dict[str, np.ndarray]:
-        """Per-step series, keyed by name with the unit."""
+    @property
+    def converged(self) -> bool:
+        """True when every step met the tolerance (the solver raises rather than return otherwise)."""
+        tolerance = self.parameters.get("tolerance")
+        return tolerance is None or bool(np.all(self.residual <= tolerance))
+
+    def scalars(self) -> dict[str, Any]:
+        """Return the programme's scalars (SI; units in :attr:`UNITS`): its last step, loops and effort.
+
+        The per-step series are in :meth:`to_xarray`.
+        """
+        energies = self.dissipated_energy()
         return {
-            "delta_x [m]": self.displacement[:, 0],
-            "delta_y [m]": self.displacement[:, 1],
-            "F_x [N]": self.force[:, 0],
-            "F_y [N]": self.force[:, 1],
-            "contact_area [m^2]": self.contact_area,
-            "stick_area [m^2]": self.stick_area,
-            "slip_area [m^2]": self.slip_area,
-            "iterations": self.iterations,
-            "coupling_iterations": self.coupling_iterations,
-            "residual": self.residual,
+            "steps": self.steps,
+            "normal_force": self.normal_force,
+            "last_delta_x": float(self.displacement[-1, 0]),
+            "last_delta_y": float(self.displacement[-1, 1]),
+            "last_force_x": float(self.force[-1, 0]),
+            "last_force_y": float(self.force[-1, 1]),
+            "last_contact_area": float(self.contact_area[-1]),
+            "last_stick_area": float(self.stick_area[-1]),
+            "last_slip_area": float(self.slip_area[-1]),
+            "last_stick_fraction": float(self.stick_area[-1] / self.contact_area[-1]),
+            "loops": len(energies),
+            "energy_last_closed_loop": float(energies[-1]) if energies.size else math.nan,
+            "iterations": int(self.iterations.sum()),
+            "coupling_iterations": int(self.coupling_iterations.sum()),
+            "residual": float(self.residual.max()),
         }
 
     def to_xarray(self):

@@ -15,7 +15,6 @@ Seed paper 000, section 5 (t-test p values 0.13, 0.12, 0.79; Pearson r 0.96).
 
 from __future__ import annotations
 
-import csv
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -24,6 +23,8 @@ from pathlib import Path
 import numpy as np
 from scipy import stats
 
+from .._deprecation import renamed
+from .._text_table import read_text_table
 from ..errors import InputError
 from ..friction.winkler_lj import winkler_lj_model
 from ..materials import Material
@@ -186,7 +187,8 @@ def compare(
 def read_measured(path: str | Path) -> dict[str, np.ndarray]:
     """Read measured mu per sample from a CSV with columns ``sample`` and ``mu``.
 
-    Lines starting with ``#`` are comments; other columns are ignored.
+    Read through :func:`roughcontact._text_table.read_text_table`: lines starting with ``#`` are
+    comments, the header names the columns (in any case, in any order); other columns are ignored.
 
     Parameters
     ----------
@@ -201,41 +203,42 @@ def read_measured(path: str | Path) -> dict[str, np.ndarray]:
     Raises
     ------
     InputError
-        A missing file, missing columns, or a mu that is not a finite number.
+        A missing or empty file, missing columns, or a mu that is not a finite number.
     """
     path = Path(path)
     if not path.is_file():
         raise InputError(
             "measured", f"{path} does not exist.", "give the path of a CSV with columns sample,mu."
         )
-    with path.open(newline="") as handle:
-        lines = [line for line in handle if line.strip() and not line.lstrip().startswith("#")]
-    reader = csv.DictReader(lines)
-    if reader.fieldnames is None or not {"sample", "mu"} <= set(reader.fieldnames):
-        raise InputError(
-            "measured", f"{path} has columns {reader.fieldnames}.", "give a header line 'sample,mu'."
-        )
+    try:
+        table = read_text_table(path, expected="columns sample,mu", delimiter=",")
+    except InputError as error:  # no data lines: named as the measured file, with this reader's fix
+        raise InputError("measured", error.problem, "give a header line 'sample,mu'.") from error
+    if table.names is None or not {"sample", "mu"} <= set(table.names):
+        raise InputError("measured", f"{path} has columns {table.names}.", "give a header line 'sample,mu'.")
+    sample_column, mu_column = table.names.index("sample"), table.names.index("mu")
     values: dict[str, list[float]] = {}
-    for number, row in enumerate(reader, start=2):
+    for number, row in enumerate(table.rows, start=1):
+        cell = row[mu_column] if mu_column < len(row) else None
         try:
-            mu = float(row["mu"])
+            mu = float(cell)
         except (TypeError, ValueError):
             mu = math.nan
         if not math.isfinite(mu):
-            raise InputError(
-                "measured", f"{path}, data row {number - 1}: mu {row['mu']!r}.", "give a number."
-            )
-        values.setdefault(row["sample"].strip(), []).append(mu)
+            raise InputError("measured", f"{path}, data row {number}: mu {cell!r}.", "give a number.")
+        sample = row[sample_column] if sample_column < len(row) else ""
+        values.setdefault(sample, []).append(mu)
     return {name: np.array(v) for name, v in values.items()}
 
 
+@renamed(counter="counter_body", load="normal_force", counter_surface="counter_topography")
 def simulate_mu(
     scans: Mapping[str, Sequence[Topography]],
     material: Material,
-    counter: Material | None = None,
+    counter_body: Material | None = None,
     *,
-    load: float,
-    counter_surface: Topography | None = None,
+    normal_force: float,
+    counter_topography: Topography | None = None,
     **options,
 ) -> dict[str, np.ndarray]:
     """Simulate mu for every scan of every sample with the Winkler-Lennard-Jones model.
@@ -244,11 +247,11 @@ def simulate_mu(
     ----------
     scans : mapping of str to sequence of Topography
         Scans per sample (paper 000: seven 5 um x 5 um polysilicon scans per sample).
-    material, counter : Material
+    material, counter_body : Material
         Sample and counter-body (tip).
-    load : float
+    normal_force : float
         Normal load [N] (paper 000: 10 uN).
-    counter_surface : Topography, optional
+    counter_topography : Topography, optional
         Tip topography merged with each scan.
     **options
         Keyword arguments of :func:`roughcontact.friction.winkler_lj_model`
@@ -262,8 +265,10 @@ def simulate_mu(
     return {
         name: np.array(
             [
-                winkler_lj_model(scan, material, counter, counter_surface=counter_surface, **options)
-                .solve(load)
+                winkler_lj_model(
+                    scan, material, counter_body, counter_topography=counter_topography, **options
+                )
+                .solve(normal_force)
                 .mu
                 for scan in sample_scans
             ]

@@ -61,8 +61,9 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
+from typing import ClassVar
 
 import numpy as np
 from scipy.optimize import OptimizeWarning, curve_fit
@@ -425,6 +426,24 @@ class LoopAnalysis:
     branch: BranchAnalysis
     loop: slice
     reversals: tuple[int, ...] = ()
+    displacement: np.ndarray | None = field(default=None, repr=False)
+    force: np.ndarray | None = field(default=None, repr=False)
+
+    UNITS: ClassVar[dict[str, str]] = {
+        "stroke": "m",
+        "normal_force": "N",
+        "energy": "J",
+        "c1": "N",
+        "c2": "1/m",
+        "span": "N",
+        **{
+            f"{kind}_{name}": unit
+            for kind, unit in (("K_L", "N/m"), ("delta", "m"), ("distance", "m"))
+            for name in _POINT_NAMES
+        },
+        "distance_D": "m",
+    }
+    """SI unit of each dimensional scalar of :meth:`scalars`."""
 
     @property
     def point_names(self) -> tuple[str, ...]:
@@ -464,6 +483,47 @@ class LoopAnalysis:
             out[f"distance_{name}"] = float(dist)
         out["distance_D"] = b.sliding_distance
         return out
+
+    def to_xarray(self):
+        """Return the record, its last loop and the eq. 9 fits of its two branches as an ``xarray.Dataset``.
+
+        ``displacement`` and ``force`` on ``sample`` (the whole record, with ``in_last_loop``),
+        ``fit_displacement`` and ``fit_force`` on ``fit`` (each branch's eq. 9 curve from its
+        reversal to point D, ``fit_branch`` 0 or 1 in record order), the points (A, B, C) of the
+        chosen branch on ``point``; the scalars as attributes.
+        """
+        import xarray as xr
+
+        data: dict = {}
+        if self.displacement is not None:
+            inside = np.zeros(self.displacement.size, dtype=np.int8)
+            inside[self.loop] = 1
+            data |= {
+                "displacement": ("sample", self.displacement, {"units": "m"}),
+                "force": ("sample", self.force, {"units": "N"}),
+                "in_last_loop": ("sample", inside, {"units": "1"}),
+            }
+        fits = []
+        for number, b in enumerate(self.branches):
+            end = b.sliding_distance if math.isfinite(b.sliding_distance) else float(np.max(b.point_distance))
+            distance = np.linspace(0.0, end, 60)
+            fits.append(
+                (
+                    b.reversal_displacement + b.direction * distance,
+                    b.reversal_force + b.direction * eq9_force(distance, b.c1, b.c2, b.n),
+                    np.full(distance.size, number, dtype=np.int8),
+                )
+            )
+        data |= {
+            "fit_displacement": ("fit", np.concatenate([f[0] for f in fits]), {"units": "m"}),
+            "fit_force": ("fit", np.concatenate([f[1] for f in fits]), {"units": "N"}),
+            "fit_branch": ("fit", np.concatenate([f[2] for f in fits])),
+            "point_displacement": ("point", np.asarray(self.branch.point_displacement), {"units": "m"}),
+            "point_force": ("point", np.asarray(self.branch.point_force), {"units": "N"}),
+            "point_stiffness": ("point", np.asarray(self.branch.point_stiffness), {"units": "N/m"}),
+        }
+        attributes = {k: v for k, v in self.scalars().items() if v is not None and math.isfinite(v)}
+        return xr.Dataset(data, coords={"point": ("point", list(self.point_names))}, attrs=attributes)
 
 
 def _running_median(values: np.ndarray, window: int) -> np.ndarray:
@@ -683,4 +743,6 @@ def analyse_loop(
         branch=results[chosen],
         loop=loop,
         reversals=tuple(b for _, b in ranges[:-1]),
+        displacement=d,
+        force=f,
     )

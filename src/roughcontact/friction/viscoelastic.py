@@ -25,16 +25,9 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
+from ..checks import positive
 from ..errors import InputError
 from ..materials import Material
-
-
-def _positive(value: float, field: str, *, allow_zero: bool = False) -> float:
-    value = float(value)
-    if not math.isfinite(value) or value < 0 or (value == 0 and not allow_zero):
-        bound = "non-negative" if allow_zero else "positive"
-        raise InputError(field, f"{value!r} is not a {bound} finite number.", f"give a {bound} value in SI.")
-    return value
 
 
 @dataclass(frozen=True)
@@ -61,7 +54,7 @@ class PronySeries:
     relaxation_times: tuple[float, ...] = ()
 
     def __post_init__(self):
-        _positive(self.relaxed_modulus, "relaxed_modulus")
+        positive(self.relaxed_modulus, "relaxed_modulus", example="60e9", unit="Pa")
         if len(self.moduli) != len(self.relaxation_times):
             raise InputError(
                 "relaxation_times",
@@ -69,8 +62,8 @@ class PronySeries:
                 "give one relaxation time per Prony modulus.",
             )
         for k, (modulus, time) in enumerate(zip(self.moduli, self.relaxation_times, strict=True)):
-            _positive(modulus, f"moduli[{k}]", allow_zero=True)
-            _positive(time, f"relaxation_times[{k}]")
+            positive(modulus, f"moduli[{k}]", example="40e9", unit="Pa", allow_zero=True)
+            positive(time, f"relaxation_times[{k}]", example="2.0", unit="s")
         object.__setattr__(self, "moduli", tuple(float(m) for m in self.moduli))
         object.__setattr__(self, "relaxation_times", tuple(float(t) for t in self.relaxation_times))
 
@@ -81,7 +74,7 @@ class PronySeries:
 
     def __call__(self, time: float) -> float:
         """Return E(t) [Pa] at ``time`` [s] >= 0."""
-        time = _positive(time, "hold_time", allow_zero=True)
+        time = positive(time, "hold_time", example="30", unit="s", allow_zero=True)
         return self.relaxed_modulus + sum(
             m * math.exp(-time / tau) for m, tau in zip(self.moduli, self.relaxation_times, strict=True)
         )
@@ -149,7 +142,7 @@ def material_after_hold(
     InputError
         A negative hold time, or a relaxation that returns a non-positive modulus.
     """
-    hold_time = _positive(hold_time, "hold_time", allow_zero=True)
+    hold_time = positive(hold_time, "hold_time", example="30", unit="s", allow_zero=True)
     modulus = float(relaxation(hold_time))
     if not math.isfinite(modulus) or modulus <= 0:
         raise InputError(

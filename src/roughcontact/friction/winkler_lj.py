@@ -39,10 +39,13 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import ClassVar
 
 import numpy as np
 from scipy import optimize
 
+from .._deprecation import renamed
+from ..checks import positive
 from ..errors import InputError
 from ..materials import Material, composite_modulus, winkler_factor
 from ..topography import Topography
@@ -50,13 +53,6 @@ from ..topography.process import combine
 from . import lennard_jones as lj
 from .readings import Readings
 from .viscoelastic import material_after_hold
-
-
-def _positive_length(value: float, field_name: str, example: str) -> float:
-    value = float(value)
-    if not (math.isfinite(value) and value > 0):
-        raise InputError(field_name, f"{value!r} is not a positive finite length.", f"give e.g. {example}.")
-    return value
 
 
 def _surface_energy(value: float | None, body: Material | None, field_name: str) -> float:
@@ -115,7 +111,7 @@ class WinklerLJResult:
 
     Attributes
     ----------
-    load : float
+    normal_force : float
         Normal load N [N].
     separation : float
         d: distance from the flat to the base (lowest point) of the composite surface [m].
@@ -144,7 +140,7 @@ class WinklerLJResult:
     adhesive_friction, mechanical_friction, friction : float
         Sums of Q_i over bonded adhesive springs, over mechanical springs, and both [N].
     mu : float
-        friction / load.
+        friction / normal_force: the coefficient of friction the model gives.
     residual : float
         Force-balance residual of eq. 2 at ``separation``, relative to the largest term.
     max_strain : float
@@ -164,7 +160,7 @@ class WinklerLJResult:
         The composite surface.
     """
 
-    load: float
+    normal_force: float
     separation: float
     approach: float
     mechanical: np.ndarray
@@ -187,8 +183,8 @@ class WinklerLJResult:
     parameters: dict = field(repr=False)
     topography: Topography = field(repr=False)
 
-    UNITS = {
-        "load": "N",
+    UNITS: ClassVar[dict[str, str]] = {
+        "normal_force": "N",
         "friction": "N",
         "adhesive_friction": "N",
         "mechanical_friction": "N",
@@ -202,7 +198,7 @@ class WinklerLJResult:
     def scalars(self) -> dict[str, float]:
         """Return the scalar results as a flat dictionary (SI; units in :attr:`UNITS`)."""
         return {
-            "load": self.load,
+            "normal_force": self.normal_force,
             "mu": self.mu,
             "friction": self.friction,
             "adhesive_friction": self.adhesive_friction,
@@ -247,7 +243,7 @@ class WinklerLJResult:
 class FrictionSweep:
     """Friction of the model over a list of loads (arrays of one value per load, SI)."""
 
-    load: np.ndarray
+    normal_force: np.ndarray
     friction: np.ndarray
     adhesive_friction: np.ndarray
     mechanical_friction: np.ndarray
@@ -258,7 +254,7 @@ class FrictionSweep:
     bonded_springs: np.ndarray
 
     def to_xarray(self):
-        """Return an ``xarray.Dataset`` indexed by ``load`` [N]."""
+        """Return an ``xarray.Dataset`` indexed by ``normal_force`` [N]."""
         import xarray as xr
 
         units = {
@@ -271,8 +267,8 @@ class FrictionSweep:
             "adhesive_springs": "",
             "bonded_springs": "",
         }
-        data = {name: ("load", getattr(self, name), {"units": unit}) for name, unit in units.items()}
-        return xr.Dataset(data, coords={"load": ("load", self.load, {"units": "N"})})
+        data = {name: ("normal_force", getattr(self, name), {"units": unit}) for name, unit in units.items()}
+        return xr.Dataset(data, coords={"normal_force": ("normal_force", self.normal_force, {"units": "N"})})
 
 
 @dataclass(frozen=True, eq=False)
@@ -380,7 +376,7 @@ class WinklerLJModel:
         high = self.layer_thickness
         if residual(high) < 0:
             raise InputError(
-                "load",
+                "normal_force",
                 f"{load:.4g} N is more than the layer carries ({self.load_capacity():.4g} N with the "
                 f"highest spring compressed by the whole layer thickness {self.layer_thickness:.4g} m).",
                 "lower the load, or check the layer thickness and the moduli (the linear Winkler layer "
@@ -398,7 +394,7 @@ class WinklerLJModel:
             low, step = low - step, 2.0 * step
             if -low > reach:
                 raise InputError(
-                    "load",
+                    "normal_force",
                     f"adhesion alone carries {load:.4g} N with the flat more than {reach:.3g} m "
                     "(100 scan sizes) away: the surface never reaches the flat.",
                     "use adhesion_sign='attractive' (adhesion adds to the load) or a larger load.",
@@ -448,12 +444,12 @@ class WinklerLJModel:
         work = energy * (self.spring_area if self.readings.energy_area == "times_area" else 1.0)
         return np.sqrt(2.0 * work / (height * self._shear_compliance(cuboid_height)))
 
-    def solve(self, load: float) -> WinklerLJResult:
-        """Solve eq. 2 for the separation at ``load`` and return the friction (eqs. 8-17).
+    def solve(self, normal_force: float) -> WinklerLJResult:
+        """Solve eq. 2 for the separation at ``normal_force`` and return the friction (eqs. 8-17).
 
         Parameters
         ----------
-        load : float
+        normal_force : float
             Normal load N [N], > 0 (mu = F / N needs a compressive load).
 
         Returns
@@ -465,10 +461,10 @@ class WinklerLJModel:
         InputError
             A load that is not positive and finite, or more than :meth:`load_capacity`.
         """
-        load = float(load)
+        load = float(normal_force)
         if not (math.isfinite(load) and load > 0):
             raise InputError(
-                "load",
+                "normal_force",
                 f"{load!r} N is not a positive finite load.",
                 "give a compressive load > 0 (mu = F / N); use net_normal_force() for tensile states.",
             )
@@ -541,7 +537,7 @@ class WinklerLJModel:
             return values[rank]
 
         return WinklerLJResult(
-            load=load,
+            normal_force=load,
             separation=float(separation),
             approach=float(approach),
             mechanical=rank < count,
@@ -580,25 +576,25 @@ class WinklerLJModel:
         }
 
     # --- sweeps -------------------------------------------------------------------------------
-    def sweep(self, loads: Sequence[float]) -> FrictionSweep:
+    def sweep(self, normal_forces: Sequence[float]) -> FrictionSweep:
         """Solve at each load and collect friction, its parts and mu.
 
         Parameters
         ----------
-        loads : sequence of float
+        normal_forces : sequence of float
             Normal loads [N], each > 0.
 
         Returns
         -------
         FrictionSweep
         """
-        results = [self.solve(load) for load in loads]
+        results = [self.solve(load) for load in normal_forces]
 
         def column(name: str) -> np.ndarray:
             return np.array([r.scalars()[name] for r in results])
 
         return FrictionSweep(
-            load=column("load"),
+            normal_force=column("normal_force"),
             friction=column("friction"),
             adhesive_friction=column("adhesive_friction"),
             mechanical_friction=column("mechanical_friction"),
@@ -669,13 +665,14 @@ class WinklerLJModel:
         return -float(min(refined.fun, values[best]))
 
 
+@renamed(counter="counter_body", counter_surface="counter_topography")
 def winkler_lj_model(
-    surface: Topography,
+    topography: Topography,
     material: Material,
-    counter: Material | None = None,
+    counter_body: Material | None = None,
     *,
     layer_thickness: float,
-    counter_surface: Topography | None = None,
+    counter_topography: Topography | None = None,
     epsilon: float = 2e-9,
     surface_energy: float | None = None,
     counter_surface_energy: float | None = None,
@@ -688,16 +685,16 @@ def winkler_lj_model(
 
     Parameters
     ----------
-    surface : Topography
+    topography : Topography
         2D heights [m] of the rough surface (paper 000: the polysilicon scan).
     material : Material
-        Body of ``surface`` (E1, nu1, gamma1).
-    counter : Material, optional
+        Body of ``topography`` (E1, nu1, gamma1).
+    counter_body : Material, optional
         Counter-body (E2, nu2, gamma2); ``None`` is rigid (then ``counter_surface_energy`` is needed).
     layer_thickness : float
         Winkler layer height h [m] (paper 000: the thickness of the measured layer, 50 nm).
-    counter_surface : Topography, optional
-        Topography of the counter-body (paper 000: the AFM tip); merged with ``surface`` by
+    counter_topography : Topography, optional
+        Topography of the counter-body (paper 000: the AFM tip); merged with ``topography`` by
         :func:`roughcontact.topography.process.combine`.
     epsilon : float
         Equilibrium distance of eq. 7 [m] (paper 000: 2 nm), > 0.
@@ -724,31 +721,32 @@ def winkler_lj_model(
         positive, a missing, zero or negative surface energy, an invalid Poisson's ratio for eq. 4.
     """
     readings = Readings() if readings is None else readings
-    if not isinstance(surface, Topography) or surface.dim != 2:
-        raise InputError("surface", "expected a 2D Topography.", "pass a height map (nx, ny) in metres.")
-    if counter_surface is not None:
+    if not isinstance(topography, Topography) or topography.dim != 2:
+        raise InputError("topography", "expected a 2D Topography.", "pass a height map (nx, ny) in metres.")
+    surface = topography
+    if counter_topography is not None:
         try:
-            surface = combine(surface, counter_surface, resample=resample)
+            surface = combine(topography, counter_topography, resample=resample)
         except InputError as error:
             raise InputError(
-                "counter_surface",
+                "counter_topography",
                 error.problem,
                 "pass resample=True (CLI: --resample) to interpolate both onto a common grid, "
                 "or bring the scans to one grid first.",
             ) from error
-    epsilon = _positive_length(epsilon, "epsilon", "2e-9 (2 nm)")
-    layer_thickness = _positive_length(layer_thickness, "layer_thickness", "50e-9 (50 nm)")
+    epsilon = positive(epsilon, "epsilon", example="2e-9", unit="m")
+    layer_thickness = positive(layer_thickness, "layer_thickness", example="50e-9", unit="m")
     gamma_1 = _surface_energy(surface_energy, material, "surface_energy")
-    gamma_2 = _surface_energy(counter_surface_energy, counter, "counter_surface_energy")
+    gamma_2 = _surface_energy(counter_surface_energy, counter_body, "counter_surface_energy")
     if relaxation is not None:
         material = material_after_hold(material, relaxation, hold_time)
     nu_1 = material.poissons_ratio
-    if counter is None:
+    if counter_body is None:
         modulus = material.youngs_modulus / (1.0 - nu_1**2)
         nu_2 = nu_1
     else:
-        nu_2 = counter.poissons_ratio
-        modulus = composite_modulus(material.youngs_modulus, nu_1, counter.youngs_modulus, nu_2)
+        nu_2 = counter_body.poissons_ratio
+        modulus = composite_modulus(material.youngs_modulus, nu_1, counter_body.youngs_modulus, nu_2)
     k = winkler_factor(nu_1, nu_2, reading=readings.winkler_factor)
     if k <= 0:
         raise InputError(
@@ -779,18 +777,24 @@ def winkler_lj_model(
     )
 
 
+@renamed(counter="counter_body", load="normal_force")
 def solve_winkler_lj(
-    surface: Topography, material: Material, counter: Material | None = None, *, load: float, **options
+    topography: Topography,
+    material: Material,
+    counter_body: Material | None = None,
+    *,
+    normal_force: float,
+    **options,
 ) -> WinklerLJResult:
     """Friction of a surface against a flat at one normal load (paper 000); see :func:`winkler_lj_model`.
 
     Parameters
     ----------
-    surface : Topography
+    topography : Topography
         Rough surface [m].
-    material, counter : Material
-        The two bodies (``counter=None``: rigid flat).
-    load : float
+    material, counter_body : Material
+        The two bodies (``counter_body=None``: rigid flat).
+    normal_force : float
         Normal load N [N], > 0.
     **options
         Keyword arguments of :func:`winkler_lj_model` (``layer_thickness`` is required).
@@ -799,4 +803,4 @@ def solve_winkler_lj(
     -------
     WinklerLJResult
     """
-    return winkler_lj_model(surface, material, counter, **options).solve(load)
+    return winkler_lj_model(topography, material, counter_body, **options).solve(normal_force)

@@ -6,10 +6,13 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
+from ..units import unit_factor
 from .contact import plot_von_mises
 from .topography import _axes
 
 _BRANCH_STYLES = {"loading": "-", "unloading": "--"}
+_LOAD_UNIT, _AREA_UNIT = "µN", "µm²"  # fixed, in the units of paper 002's figures
+_LOAD_SCALE, _AREA_SCALE = (float(unit_factor(unit)[0]) for unit in (_LOAD_UNIT, _AREA_UNIT))
 
 
 def plot_load_interference(
@@ -45,14 +48,13 @@ def plot_load_interference(
             keep = branches == branch
             if keep.any():
                 x = np.asarray(curve["approach"])[keep] / critical_interference
-                ax.plot(
-                    x, np.asarray(curve["force"])[keep] * 1e6, style, color=color, label=f"{label}, {branch}"
-                )
+                load = np.asarray(curve["force"])[keep] / _LOAD_SCALE
+                ax.plot(x, load, style, color=color, label=f"{label}, {branch}")
     if measured is not None:
         x = np.asarray(measured["approach"]) / critical_interference
-        ax.plot(x, np.asarray(measured["force"]) * 1e6, "k.", ms=3, label="measured")
+        ax.plot(x, np.asarray(measured["force"]) / _LOAD_SCALE, "k.", ms=3, label="measured")
     ax.set_xlabel("interference ω/ω_c")
-    ax.set_ylabel("load (µN)")
+    ax.set_ylabel(f"load ({_LOAD_UNIT})")
     ax.legend(fontsize="small")
     ax.grid(True, alpha=0.3)
     return fig, ax
@@ -64,9 +66,10 @@ def plot_area_load(curves: dict[str, dict], ax: Axes | None = None):
     for label, curve in curves.items():
         loading = np.asarray(curve["branch"]) == "loading"
         area = np.asarray(curve["contact_area"])[loading]
-        ax.plot(np.asarray(curve["force"])[loading] * 1e6, area * 1e12, "-o", ms=3, label=label)
-    ax.set_xlabel("load (µN)")
-    ax.set_ylabel("real contact area (µm²)")
+        load = np.asarray(curve["force"])[loading] / _LOAD_SCALE
+        ax.plot(load, area / _AREA_SCALE, "-o", ms=3, label=label)
+    ax.set_xlabel(f"load ({_LOAD_UNIT})")
+    ax.set_ylabel(f"real contact area ({_AREA_UNIT})")
     ax.legend(fontsize="small")
     ax.grid(True, alpha=0.3)
     return fig, ax
@@ -95,7 +98,7 @@ def plot_von_mises_maps(compression, indices: list[int], *, depth: float = 0.0) 
     for ax, index in zip(axes, indices, strict=False):
         plot_von_mises(compression.stress(index, depths=[depth]), 0, ax)
         force = compression.steps[index].force
-        ax.set_title(f"{compression.branch[index]}, W = {force * 1e6:.0f} µN")
+        ax.set_title(f"{compression.branch[index]}, W = {force / _LOAD_SCALE:.0f} {_LOAD_UNIT}")
     for ax in axes[len(indices) :]:
         ax.set_visible(False)
     return fig, axes

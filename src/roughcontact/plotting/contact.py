@@ -6,23 +6,14 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-from .topography import _axes, length_scale
-
-_PRESSURE_UNITS = (("GPa", 1e9), ("MPa", 1e6), ("kPa", 1e3), ("Pa", 1.0))
-
-
-def pressure_scale(value: float) -> tuple[float, str]:
-    """Return ``(scale, label)`` of the pressure unit in which ``value`` [Pa] reads between 1 and 1000."""
-    for label, scale in _PRESSURE_UNITS:
-        if abs(value) >= scale:
-            return scale, label
-    return 1.0, "Pa"
+from ..units import prefixed_scale
+from .topography import _axes
 
 
 def _map(ax: Axes, result, values: np.ndarray, label: str, cmap: str):
     fig = ax.figure
     topography = result.topography
-    size_scale, size_label = length_scale(max(topography.size))
+    size_scale, size_label = prefixed_scale(max(topography.size), "m")
     x, y = (c / size_scale for c in topography.coordinates())
     image = ax.pcolormesh(x, y, values.T, cmap=cmap, shading="auto", rasterized=True)
     ax.set_aspect("equal")
@@ -34,7 +25,7 @@ def _map(ax: Axes, result, values: np.ndarray, label: str, cmap: str):
 def plot_pressure(result, ax: Axes | None = None, *, cmap: str = "magma"):
     """Draw the contact pressure map of a 2D NormalContactResult; returns ``(fig, ax)``."""
     fig, ax = _axes(ax)
-    scale, unit = pressure_scale(float(result.pressure.max()) or 1.0)
+    scale, unit = prefixed_scale(float(result.pressure.max()) or 1.0, "Pa")
     _map(ax, result, result.pressure / scale, f"pressure ({unit})", cmap)
     ax.set_title(f"contact pressure, {100 * result.contact_fraction:.2g} % in contact")
     return fig, ax
@@ -43,7 +34,7 @@ def plot_pressure(result, ax: Axes | None = None, *, cmap: str = "magma"):
 def plot_gap(result, ax: Axes | None = None, *, cmap: str = "viridis"):
     """Draw the gap map of a 2D NormalContactResult (contact where the gap is zero); returns ``(fig, ax)``."""
     fig, ax = _axes(ax)
-    scale, unit = length_scale(float(np.max(result.gap)) or 1e-9)
+    scale, unit = prefixed_scale(float(np.max(result.gap)) or 1e-9, "m")
     _map(ax, result, result.gap / scale, f"gap ({unit})", cmap)
     ax.set_title(f"gap, mean {result.mean_gap / scale:.3g} {unit}")
     return fig, ax
@@ -53,11 +44,8 @@ def plot_load_approach(curve: dict, ax: Axes | None = None, *, label: str | None
     """Draw force against approach from ``LoadUnloadResult.curve()`` (or any dict with those keys)."""
     fig, ax = _axes(ax)
     approach, force = np.asarray(curve["approach"]), np.asarray(curve["force"])
-    a_scale, a_unit = length_scale(float(np.max(np.abs(approach))) or 1e-9)
-    f_max = float(np.max(np.abs(force))) or 1.0
-    f_scale, f_unit = next(
-        ((s, u) for u, s in (("N", 1), ("mN", 1e-3), ("µN", 1e-6), ("nN", 1e-9)) if f_max >= s), (1e-9, "nN")
-    )
+    a_scale, a_unit = prefixed_scale(float(np.max(np.abs(approach))) or 1e-9, "m")
+    f_scale, f_unit = prefixed_scale(float(np.max(np.abs(force))) or 1.0, "N")
     branches = np.asarray(curve.get("branch", ["loading"] * len(force)))
     for branch, style in (("loading", "-o"), ("unloading", "--s")):
         keep = branches == branch
@@ -85,8 +73,8 @@ def plot_von_mises(stress, depth_index: int, ax: Axes | None = None, *, cmap: st
     """Draw the von Mises stress on the plane ``stress.depths[depth_index]``; returns ``(fig, ax)``."""
     fig, ax = _axes(ax)
     vm = stress.von_mises()[depth_index]
-    scale, unit = pressure_scale(float(vm.max()) or 1.0)
-    size_scale, size_label = length_scale(max(stress.size))
+    scale, unit = prefixed_scale(float(vm.max()) or 1.0, "Pa")
+    size_scale, size_label = prefixed_scale(max(stress.size), "m")
     nx, ny = vm.shape
     x = np.arange(nx) * stress.size[0] / nx / size_scale
     y = np.arange(ny) * stress.size[1] / ny / size_scale
@@ -95,7 +83,7 @@ def plot_von_mises(stress, depth_index: int, ax: Axes | None = None, *, cmap: st
     ax.set_xlabel(f"x ({size_label})")
     ax.set_ylabel(f"y ({size_label})")
     fig.colorbar(image, ax=ax, label=f"von Mises ({unit})")
-    d_scale, d_unit = length_scale(float(stress.depths[depth_index]) or 1e-9)
+    d_scale, d_unit = prefixed_scale(float(stress.depths[depth_index]) or 1e-9, "m")
     ax.set_title(f"von Mises at z = {stress.depths[depth_index] / d_scale:.3g} {d_unit}")
     return fig, ax
 

@@ -5,16 +5,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.axes import Axes
 
+from ..units import prefixed_scale
 from .topography import _axes
-
-_FORCE_UNITS = (("mN", 1e-3), ("µN", 1e-6), ("nN", 1e-9))
-
-
-def _force_scale(value: float) -> tuple[float, str]:
-    for label, scale in _FORCE_UNITS:
-        if abs(value) >= scale:
-            return scale, label
-    return 1e-9, "nN"
 
 
 def plot_mu_boxes(comparison, ax: Axes | None = None):
@@ -97,11 +89,12 @@ def plot_friction_vs_load(sweep, ax: Axes | None = None, *, crossover: float | N
     (Figure, Axes)
     """
     fig, ax = _axes(ax)
-    scale, unit = _force_scale(float(np.max(sweep.load)))
+    scale, unit = prefixed_scale(float(np.max(sweep.normal_force)), "N")
     for name, style in (("friction", "k-"), ("adhesive_friction", "b--"), ("mechanical_friction", "r-.")):
         values = np.asarray(getattr(sweep, name))
         shown = values > 0
-        ax.loglog(sweep.load[shown] / scale, values[shown] / scale, style, label=name.replace("_", " "))
+        label = name.replace("_", " ")
+        ax.loglog(sweep.normal_force[shown] / scale, values[shown] / scale, style, label=label)
     if crossover is not None:
         ax.axvline(crossover / scale, color="grey", lw=0.8, label=f"crossover {crossover / scale:.3g} {unit}")
     ax.set_xlabel(f"normal load ({unit})")

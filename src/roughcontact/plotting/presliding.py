@@ -2,11 +2,13 @@
 
 * :func:`plot_hysteresis_loops` - friction loops, simulated and measured (paper 001 Figs. 13-14);
 * :func:`plot_stick_slip_maps` - normalised shear sqrt(qx^2 + qy^2)/(mu p) maps (Figs. 11-12);
-* :func:`plot_lateral_stiffness` - K_L at points A, B, C vs normal load with Mindlin (Fig. 15).
+* :func:`plot_lateral_stiffness` - K_L at points A, B, C vs normal load with Mindlin (Fig. 15);
+* :func:`plot_loop_analysis` - a loop's record, its last loop, the eq. 9 fits and the points (Fig. 10).
 
-Inputs are SI (m, N, N/m); the axes show um, mN and mN/um (= kN/m). Each function
-returns the :class:`matplotlib.figure.Figure` (its axes are ``fig.axes``); nothing is shown and
-no pyplot state is touched (Agg-safe).
+Inputs are SI (m, N, N/m). The loops and the lateral stiffness are shown in the paper's fixed units,
+µm, mN and mN/µm (= kN/m); the maps' lengths in the prefix :func:`roughcontact.units.prefixed_scale`
+chooses for their extent. Each function returns the :class:`matplotlib.figure.Figure` (its axes are
+``fig.axes``); nothing is shown and no pyplot state is touched (Agg-safe).
 """
 
 from __future__ import annotations
@@ -19,9 +21,13 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ..errors import InputError
+from ..units import prefixed_scale, unit_factor
 from .topography import _axes
 
-UM, MN = 1e-6, 1e-3
+_LENGTH_UNIT, _FORCE_UNIT, _STIFFNESS_UNIT = "µm", "mN", "mN/µm"  # fixed, as in paper 001 Figs. 13-15
+_LENGTH_SCALE, _FORCE_SCALE, _STIFFNESS_SCALE = (
+    float(unit_factor(unit)[0]) for unit in (_LENGTH_UNIT, _FORCE_UNIT, _STIFFNESS_UNIT)
+)
 POINT_COLOURS = {"A": "tab:red", "B": "tab:blue", "C": "black", "D": "tab:green"}
 """Colours of the points, as in paper 001 Fig. 15 (A red, B blue, C black)."""
 MINDLIN_STYLES = {"johnson": "--", "printed": "-."}
@@ -76,12 +82,12 @@ def plot_hysteresis_loops(
     """
     fig, ax = _axes(ax, figsize=(5.5, 4.0))
     for delta, force, label in _curves(simulated, "simulated"):
-        ax.plot(delta / UM, force / MN, "-", linewidth=2.0, label=label)
+        ax.plot(delta / _LENGTH_SCALE, force / _FORCE_SCALE, "-", linewidth=2.0, label=label)
     for delta, force, label in _curves(measured, "measured"):
-        ax.plot(delta / UM, force / MN, "--", linewidth=1.0, alpha=0.8, label=label)
+        ax.plot(delta / _LENGTH_SCALE, force / _FORCE_SCALE, "--", linewidth=1.0, alpha=0.8, label=label)
     ax.axhline(0.0, color="0.7", linewidth=0.5)
-    ax.set_xlabel("tangential displacement δ_x (µm)")
-    ax.set_ylabel("friction force F_x (mN)")
+    ax.set_xlabel(f"tangential displacement δ_x ({_LENGTH_UNIT})")
+    ax.set_ylabel(f"friction force F_x ({_FORCE_UNIT})")
     if title:
         ax.set_title(title)
     if ax.get_lines():
@@ -145,7 +151,7 @@ def plot_stick_slip_maps(
             raise InputError(
                 "extent", f"{box!r} for {label!r}.", "give (xmin, xmax, ymin, ymax) in m."
             ) from None
-        scale, unit = (1e-3, "mm") if max(abs(x1 - x0), abs(y1 - y0)) >= 1e-3 else (UM, "µm")
+        scale, unit = prefixed_scale(max(abs(x1 - x0), abs(y1 - y0)), "m")
         image = ax.imshow(
             np.ma.masked_invalid(values),
             origin="lower",
@@ -192,7 +198,7 @@ def plot_lateral_stiffness(
     Simulated values are markers, measured ones solid lines, Mindlin's dashed lines, one colour
     per point (A red, B blue, C black). Mindlin curves may be given for both normalisations of
     paper 001 eqs. 10-12 (``"johnson"``: dashed; ``"printed"``, 4x Johnson's: dash-dotted), each
-    labelled; see :func:`roughcontact.analytic.mindlin.paper001_mindlin` and its
+    labelled; see :func:`roughcontact.models.paper001.paper001_mindlin` and its
     ``point_stiffness``.
 
     Parameters
@@ -226,15 +232,21 @@ def plot_lateral_stiffness(
             raise InputError(
                 field, f"point {point}: {k.size} values for {load.size} loads.", "give one K_L per load."
             )
-        return k * UM / MN  # N/m -> mN/um
+        return k / _STIFFNESS_SCALE
 
     for point, series in (measured or {}).items():
         colour = POINT_COLOURS.get(point)
-        ax.plot(load / MN, values(series, "measured", point), "-", color=colour, label=f"{point} measured")
+        ax.plot(
+            load / _FORCE_SCALE,
+            values(series, "measured", point),
+            "-",
+            color=colour,
+            label=f"{point} measured",
+        )
     for point, series in (simulated or {}).items():
         colour = POINT_COLOURS.get(point)
         ax.plot(
-            load / MN,
+            load / _FORCE_SCALE,
             values(series, "simulated", point),
             "o",
             linestyle="none",
@@ -251,17 +263,82 @@ def plot_lateral_stiffness(
         name = "Mindlin (Johnson)" if normalisation == "johnson" else "Mindlin (paper 001 as printed, 4x)"
         for point, series in points.items():
             ax.plot(
-                load / MN,
+                load / _FORCE_SCALE,
                 values(series, "mindlin", point),
                 MINDLIN_STYLES[normalisation],
                 color=POINT_COLOURS.get(point),
                 linewidth=1.2,
                 label=f"{point} {name}",
             )
-    ax.set_xlabel("normal force F_0 (mN)")
-    ax.set_ylabel("lateral stiffness K_L (mN/µm)")
+    ax.set_xlabel(f"normal force F_0 ({_FORCE_UNIT})")
+    ax.set_ylabel(f"lateral stiffness K_L ({_STIFFNESS_UNIT})")
     if title:
         ax.set_title(title)
     if ax.get_lines():
         ax.legend(fontsize="x-small", ncol=2)
+    return fig
+
+
+def plot_loop_analysis(
+    data: Mapping[str, np.ndarray], scalars: Mapping, *, title: str = "", ax: Axes | None = None
+):
+    """Draw the analysis of a friction loop: the record, its last loop, both eq. 9 fits, the points (Fig. 10).
+
+    Parameters
+    ----------
+    data : mapping
+        :meth:`~roughcontact.experiment.friction_loop.LoopAnalysis.to_xarray`'s arrays:
+        ``displacement``, ``force``, ``in_last_loop`` (per sample), ``fit_displacement``,
+        ``fit_force``, ``fit_branch`` (the fitted curves), ``point_displacement``,
+        ``point_force``, ``point_stiffness`` and ``point`` (the points' names).
+    scalars : mapping
+        :meth:`~roughcontact.experiment.friction_loop.LoopAnalysis.scalars` (``mu``, ``stroke``).
+    title : str
+        Above the figure's own line (mu and the stroke).
+    ax : Axes, optional
+        Where to draw.
+
+    Returns
+    -------
+    Figure
+    """
+    fig, ax = _axes(ax, figsize=(5.5, 4.4))
+    um, mn = _LENGTH_SCALE, _FORCE_SCALE
+    if "displacement" in data:
+        displacement, force = np.asarray(data["displacement"]), np.asarray(data["force"])
+        last = np.asarray(data["in_last_loop"]).astype(bool)
+        ax.plot(displacement / um, force / mn, "-", color="0.75", lw=0.8, label="record")
+        ax.plot(displacement[last] / um, force[last] / mn, "k-", lw=1.0, label="last loop")
+    branches = np.asarray(data["fit_branch"])
+    for number in np.unique(branches):
+        part = branches == number
+        ax.plot(
+            np.asarray(data["fit_displacement"])[part] / um,
+            np.asarray(data["fit_force"])[part] / mn,
+            "--",
+            color="tab:orange",
+            lw=1.6,
+            label="eq. 9 fit" if number == branches[0] else "_eq. 9 fit",
+        )
+    for name, x, y, k in zip(
+        np.asarray(data["point"]).astype(str),
+        np.asarray(data["point_displacement"]),
+        np.asarray(data["point_force"]),
+        np.asarray(data["point_stiffness"]),
+        strict=True,
+    ):
+        ax.plot(
+            x / um,
+            y / mn,
+            "o",
+            color=POINT_COLOURS.get(name, "k"),
+            label=f"{name}: K_L = {k / _STIFFNESS_SCALE:.3g} {_STIFFNESS_UNIT}",
+        )
+    mu, stroke = scalars.get("mu"), scalars.get("stroke")
+    line = f"μ = {mu:.3g}, stroke {stroke / um:.3g} {_LENGTH_UNIT}" if mu is not None else ""
+    ax.set_title(f"{title}\n{line}" if title else line, fontsize="medium")
+    ax.set_xlabel(f"tangential displacement δ_x ({_LENGTH_UNIT})")
+    ax.set_ylabel(f"friction force F_x ({_FORCE_UNIT})")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize="small", loc="center")  # inside the loop, where nothing is drawn
     return fig

@@ -11,8 +11,7 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-from .contact import pressure_scale
-from .topography import length_scale
+from ..units import prefixed_scale
 
 
 def new_figure(rows: int, columns: int, *, width: float = 5.0, height: float = 4.0) -> tuple[Figure, list]:
@@ -22,24 +21,19 @@ def new_figure(rows: int, columns: int, *, width: float = 5.0, height: float = 4
     return figure, [list(row) for row in axes]
 
 
-def value_scale(value: float, unit: str) -> tuple[float, str]:
-    """Scale and label that make ``value`` [SI ``unit``] read between 1 and 1000 (Pa and m only)."""
-    if unit == "Pa":
-        return pressure_scale(value)
-    if unit == "m":
-        return length_scale(value)
-    return 1.0, unit
-
-
 def map_axes(
     ax: Axes, field, label: str, unit: str, *, cmap: str = "viridis", symmetric: bool = False
 ) -> None:
-    """Draw a 2D field (``xarray.DataArray`` on x, y [m]) as a map with a colour bar in readable units."""
+    """Draw a 2D field (``xarray.DataArray`` on x, y [m]) as a map with a colour bar in readable units.
+
+    ``unit`` is the field's unprefixed SI unit (``"Pa"``, ``"m"``, ``"N/m"``, ``""``); the colour bar
+    shows it with the prefix :func:`roughcontact.units.prefixed_scale` chooses for the largest value.
+    """
     x, y = np.asarray(field["x"]), np.asarray(field["y"])
     values = np.asarray(field).T
     largest = float(np.nanmax(np.abs(values))) or 1.0
-    scale, shown = value_scale(largest, unit)
-    size_scale, size_unit = length_scale(max(x.max() - x.min(), y.max() - y.min()) or 1e-9)
+    scale, shown = prefixed_scale(largest, unit)
+    size_scale, size_unit = prefixed_scale(max(x.max() - x.min(), y.max() - y.min()) or 1e-9, "m")
     limits = {"vmin": -largest / scale, "vmax": largest / scale} if symmetric else {}
     image = ax.pcolormesh(
         x / size_scale, y / size_scale, values / scale, cmap=cmap, shading="auto", rasterized=True, **limits

@@ -12,16 +12,7 @@ from matplotlib.figure import Figure
 
 from ..topography import Topography
 from ..topography.statistics import psd_1d, psd_radial
-
-_LENGTH_UNITS = (("mm", 1e-3), ("µm", 1e-6), ("nm", 1e-9), ("pm", 1e-12))
-
-
-def length_scale(value: float) -> tuple[float, str]:
-    """Return ``(scale, label)`` of the length unit in which ``value`` [m] reads between 1 and 1000."""
-    for label, scale in _LENGTH_UNITS:
-        if abs(value) >= scale:
-            return scale, label
-    return _LENGTH_UNITS[-1][1], _LENGTH_UNITS[-1][0]
+from ..units import prefixed_scale
 
 
 def _axes(ax: Axes | None, figsize=(5.0, 4.0)) -> tuple[Figure, Axes]:
@@ -54,8 +45,8 @@ def plot_heights(topography: Topography, ax: Axes | None = None, *, cmap: str = 
     """
     fig, ax = _axes(ax)
     heights = topography.heights - topography.heights.mean()
-    size_scale, size_label = length_scale(max(topography.size))
-    height_scale, height_label = length_scale(float(np.ptp(heights)) or 1e-9)
+    size_scale, size_label = prefixed_scale(max(topography.size), "m")
+    height_scale, height_label = prefixed_scale(float(np.ptp(heights)) or 1e-9, "m")
     coords = [c / size_scale for c in topography.coordinates()]
     if topography.dim == 1:
         ax.plot(coords[0], heights / height_scale, lw=0.8)

@@ -164,6 +164,12 @@ class Kind:
         ``check(parameters)``: reads a case's input files (its Path keys, resolved relative to the
         study file) at validation time and raises :class:`~roughcontact.errors.InputError` naming
         the problem, so a bad file fails ``roughcontact validate``, not a case half-way through a run.
+    headline : tuple of str
+        The scalars a command prints per case when it runs several (a sweep), besides the swept
+        values; one case prints all of them.
+    renamed : mapping
+        Deprecated key -> its key now (the spellings of release 0.1); a study that still uses one
+        validates, with a note saying what to write instead.
     """
 
     name: str
@@ -175,3 +181,5 @@ class Kind:
     tables: Mapping[str, TableFunction] = field(default_factory=dict)
     compare: type[Strict] | None = None
     check: Callable[[Any], None] | None = None
+    headline: tuple[str, ...] = ()
+    renamed: Mapping[str, str] = field(default_factory=dict)

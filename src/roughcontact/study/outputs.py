@@ -133,14 +133,13 @@ def write_results_table(folder: str | Path) -> Path:
     return path
 
 
-def _produce(folder: Path, what: str) -> tuple[list[tuple[str, str, Any]], list[str]]:
+def produce(analyses: list[StoredAnalysis], what: str) -> tuple[list[tuple[str, str, Any]], list[str]]:
     """Call every analysis' table (``what="table"``) or chosen figure functions on its finished cases.
 
     Returns (analysis, name, product) for each product made, and the problems met: a function
     that fails (measured data that do not match the cases, say) is reported and the others still
     run. A function returns None where it has nothing to show (too few cases, say).
     """
-    _, analyses = read_study(folder)
     made, problems = [], []
     for analysis in analyses:
         records = analysis.finished
@@ -160,13 +159,30 @@ def _produce(folder: Path, what: str) -> tuple[list[tuple[str, str, Any]], list[
     return made, problems
 
 
+def in_memory(study, records: dict[str, list[CaseRecord]]) -> list[StoredAnalysis]:
+    """Return a study's analyses with records that were never stored (a command run without ``-o``)."""
+    return [
+        StoredAnalysis(
+            analysis.name,
+            analysis.kind,
+            analysis.kind.summary,
+            analysis.figures,
+            analysis.compare,
+            analysis.sweep_axes,
+            tuple(case.case_id for case in analysis.cases),
+            tuple(records.get(analysis.name, ())),
+        )
+        for analysis in study.analyses
+    ]
+
+
 def write_tables(folder: str | Path) -> tuple[list[Path], list[str]]:
     """Write every analysis' derived tables to ``OUT/tables/ANALYSIS_TABLE.csv``.
 
-    Returns the files written and the problems met (see :func:`_produce`).
+    Returns the files written and the problems met (see :func:`produce`).
     """
     folder = Path(folder).expanduser().resolve()
-    tables, problems = _produce(folder, "table")
+    tables, problems = produce(read_study(folder)[1], "table")
     written = []
     for analysis, name, rows in tables:
         path = folder / "tables" / f"{analysis}_{name}.csv"
@@ -182,7 +198,7 @@ def draw_figures(folder: str | Path, *, dpi: int = 150) -> tuple[list[Path], lis
     matplotlib.use("Agg")
 
     folder = Path(folder).expanduser().resolve()
-    figures, problems = _produce(folder, "figure")
+    figures, problems = produce(read_study(folder)[1], "figure")
     written = []
     for analysis, name, figure in figures:
         path = folder / "figures" / f"{analysis}_{name}.png"

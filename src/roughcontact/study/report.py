@@ -107,7 +107,7 @@ def _run_line(provenance: dict[str, Any]) -> str:
     )
 
 
-def write_report(folder: str | Path, *, redraw: bool = True) -> Path:
+def write_report(folder: str | Path, *, redraw: bool = True, dpi: int = 150) -> Path:
     """Write ``OUT/report.html`` for the study in ``folder`` (tables and figures re-drawn first).
 
     Parameters
@@ -116,6 +116,8 @@ def write_report(folder: str | Path, *, redraw: bool = True) -> Path:
         A study's output folder.
     redraw : bool
         Re-write the results table, derived tables and figures from the records before the page.
+    dpi : int
+        Resolution of the re-drawn figures.
 
     Returns
     -------
@@ -126,7 +128,7 @@ def write_report(folder: str | Path, *, redraw: bool = True) -> Path:
     problems: list[str] = []
     if redraw:
         write_results_table(folder)
-        problems = write_tables(folder)[1] + draw_figures(folder)[1]
+        problems = write_tables(folder)[1] + draw_figures(folder, dpi=dpi)[1]
     document, analyses = read_study(folder)
     rows = result_rows(analyses)
     provenance_path = folder / "provenance.json"

@@ -71,6 +71,7 @@ class Task:
     axes_units: dict[str, str | None]
     seeds: dict[str, int]
     worker_storage: str | None = None
+    raise_errors: bool = False
 
 
 def _version() -> str:
@@ -104,7 +105,8 @@ def execute(task: Task) -> tuple[dict[str, Any], Any]:
     """Run one case and return its record and its dataset (None if it has none or it went to storage).
 
     Errors of the case itself are caught and recorded (``status = "failed"`` with the message and
-    the last lines of the traceback); only interruptions (KeyboardInterrupt, SystemExit) propagate.
+    the last lines of the traceback), unless the task says ``raise_errors`` (a command's cases:
+    the error reaches the user at once); interruptions (KeyboardInterrupt, SystemExit) propagate.
     """
     from .kinds import get_kind
 
@@ -119,6 +121,8 @@ def execute(task: Task) -> tuple[dict[str, Any], Any]:
         dataset = output.dataset
         record["status"] = "done"
     except Exception as error:  # recorded, the study goes on
+        if task.raise_errors:
+            raise
         record["error"] = f"{type(error).__name__}: {error}"
         record["traceback"] = traceback.format_exc(limit=-4)
     record["seconds"] = time.perf_counter() - start
@@ -158,7 +162,9 @@ def _axes_si(case: Case) -> tuple[dict[str, Any], dict[str, str | None]]:
     return json_ready(values), units
 
 
-def make_task(study: Study, case: Case, worker_storage: str | None = None) -> Task:
+def make_task(
+    study: Study, case: Case, worker_storage: str | None = None, *, raise_errors: bool = False
+) -> Task:
     """Build the picklable task of a case (file topographies travel as the arrays read in validation)."""
     files = {
         name: study.loaded[spec.model_dump_json()]
@@ -180,6 +186,7 @@ def make_task(study: Study, case: Case, worker_storage: str | None = None) -> Ta
         axes_units=axes_units,
         seeds=case.seeds,
         worker_storage=worker_storage,
+        raise_errors=raise_errors,
     )
 
 
@@ -298,6 +305,7 @@ def run_study(
     worker_storage: str | Path | None = None,
     progress: bool = False,
     on_record: Callable[[dict], None] | None = None,
+    raise_errors: bool = False,
 ) -> RunSummary:
     """Run every pending case of ``study`` into ``output`` and write the table and provenance.
 
@@ -319,6 +327,9 @@ def run_study(
         Show a progress bar on standard error.
     on_record : callable, optional
         Called with each case's record as it is handed to storage (for tests and logging).
+    raise_errors : bool
+        Stop at the first case that fails and raise its error (in-process only; a command's
+        cases), instead of recording it and going on. Finished cases are stored either way.
 
     Returns
     -------
@@ -341,7 +352,7 @@ def run_study(
     pending = [case for case in cases if not (resume and is_finished(folder, case))]
     summary = RunSummary(total=len(cases), skipped=len(cases) - len(pending))
     storage = None if worker_storage is None else str(Path(worker_storage).expanduser().resolve())
-    tasks = [make_task(study, case, storage) for case in pending]
+    tasks = [make_task(study, case, storage, raise_errors=raise_errors) for case in pending]
     started = datetime.now(UTC)
     clock = time.perf_counter()
     bar = _progress(len(tasks), progress)
@@ -407,7 +418,7 @@ def study_document(study: Study, folder: Path) -> dict[str, Any]:
     return {
         "name": study.name,
         "description": study.description,
-        "study_file": str(study.path),
+        "study_file": None if study.path is None else str(study.path),
         "analyses": [
             {
                 "name": analysis.name,
@@ -438,7 +449,7 @@ def write_summary_files(study: Study, folder: Path, summary: RunSummary, started
         "platform": platform.platform(),
         "packages": {"numpy": numpy.__version__, "scipy": scipy.__version__, "xarray": xarray.__version__},
         "command": sys.argv,
-        "study_file": str(study.path),
+        "study_file": None if study.path is None else str(study.path),
         "study_sha256": hashlib.sha256(study.text.encode()).hexdigest(),
         "input_files": study.files,
         "study_seed": study.seed,

@@ -47,6 +47,9 @@ def _si(dimension: str):
                 "quantity", "expected a {dimension} such as a string with a unit", {"dimension": dimension}
             )
         try:
+            if dimension == "area" and isinstance(value, str) and " x " in value:  # '25 um x 25 um'
+                first, second = value.split(" x ", 1)
+                return quantity(first, "length") * quantity(second, "length")
             return quantity(value, dimension)
         except InputError as error:
             raise PydanticCustomError(
@@ -58,10 +61,12 @@ def _si(dimension: str):
 
 
 def _si_per_axis(dimension: str):
-    """One value for both axes, or a pair ``["5 um", "10 um"]``; a single error either way."""
+    """One value for both axes, or two (``["5 um", "10 um"]`` or ``"5 um x 10 um"``); one error either way."""
     single = _si(dimension).func
 
     def convert(value: Any) -> float | tuple[float, float]:
+        if isinstance(value, str) and " x " in value:  # '5 um x 10 um'
+            value = [part.strip() for part in value.split(" x ")]
         if isinstance(value, list | tuple):
             if len(value) != 2:
                 raise PydanticCustomError(

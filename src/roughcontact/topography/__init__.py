@@ -1,11 +1,13 @@
 """Surfaces: the :class:`Topography` container, instrument readers, generators, processing and statistics.
 
-The submodules hold the functions: ``io`` (read/save/load), ``generate`` (synthetic surfaces),
-``process`` (detrend, sphere removal, crop, resample, combine) and ``statistics`` (roughness
-parameters, spectral moments, McCool asperity parameters, PSD). The most used are re-exported here.
+The submodules hold the functions: ``io`` (read instrument files), ``native`` (save/load roughcontact's
+own NetCDF format), ``generate`` (synthetic surfaces), ``process`` (detrend, sphere removal, crop,
+resample, combine) and ``statistics`` (roughness parameters, spectral moments, McCool asperity
+parameters, PSD). The most used are re-exported here.
 """
 
-from .io import list_channels, load_topography, read_topography, save_topography
+from .io import list_channels, read_topography
+from .native import load_topography, save_topography
 from .process import combine, detrend, remove_sphere
 from .statistics import mccool_parameters, spectral_moments, summary
 from .surface import Topography

@@ -33,6 +33,7 @@ from collections.abc import Callable
 import numpy as np
 from scipy import fft
 
+from ..checks import positive
 from ..errors import InputError
 from . import statistics
 from .surface import Topography
@@ -78,16 +79,6 @@ def _grid(
     return tuple(int(n) for n in dims), tuple(float(s) for s in lengths)
 
 
-def _positive(value: float, field: str, *, allow_zero: bool = False) -> float:
-    value = float(value)
-    if not math.isfinite(value) or value < 0 or (value == 0 and not allow_zero):
-        bound = "non-negative" if allow_zero else "positive"
-        raise InputError(
-            field, f"must be {bound} and finite, got {value!r}.", f"give a {bound} value in SI units."
-        )
-    return value
-
-
 def _hurst(hurst: float) -> float:
     hurst = float(hurst)
     if not 0 < hurst <= 1:
@@ -99,13 +90,14 @@ def _hurst(hurst: float) -> float:
     return hurst
 
 
-def _per_axis(value: float | tuple[float, ...], dim: int, field: str) -> tuple[float, ...]:
+def _per_axis(value: float | tuple[float, ...], dim: int, field: str, example: str) -> tuple[float, ...]:
+    """Validate one positive length [m] or one per axis."""
     values = np.atleast_1d(np.asarray(value, dtype=float))
     if values.size == 1:
         values = np.repeat(values, dim)
     if values.shape != (dim,):
         raise InputError(field, f"got {values.size} values for {dim} axes.", f"give one value or {dim}.")
-    return tuple(_positive(v, field) for v in values)
+    return tuple(positive(v, field, example=example, unit="m") for v in values)
 
 
 # --- random fields -------------------------------------------------------------------------------
@@ -162,8 +154,8 @@ def _one_target(rms_height: float | None, rms_slope: float | None) -> tuple[floa
             "pass rms_height [m] or rms_slope [-], not both and not neither.",
         )
     if rms_height is not None:
-        return _positive(rms_height, "rms_height"), None
-    return None, _positive(rms_slope, "rms_slope")
+        return positive(rms_height, "rms_height", example="1e-9", unit="m"), None
+    return None, positive(rms_slope, "rms_slope", example="0.1 (dimensionless)")
 
 
 def self_affine(
@@ -242,15 +234,21 @@ def self_affine(
     shape, size = _grid(shape, size)
     hurst = _hurst(hurst)
     rms_height, rms_slope = _one_target(rms_height, rms_slope)
-    q_short = math.inf if short_cutoff is None else 2.0 * math.pi / _positive(short_cutoff, "short_cutoff")
-    q_long = 0.0 if long_cutoff is None else 2.0 * math.pi / _positive(long_cutoff, "long_cutoff")
+    if short_cutoff is not None:
+        short_cutoff = positive(short_cutoff, "short_cutoff", example="1e-8", unit="m")
+    if long_cutoff is not None:
+        long_cutoff = positive(long_cutoff, "long_cutoff", example="1e-6", unit="m")
+    q_short = math.inf if short_cutoff is None else 2.0 * math.pi / short_cutoff
+    q_long = 0.0 if long_cutoff is None else 2.0 * math.pi / long_cutoff
     if q_long >= q_short:
         raise InputError(
             "long_cutoff",
             f"{long_cutoff!r} m is not longer than short_cutoff {short_cutoff!r} m.",
             "give long_cutoff > short_cutoff.",
         )
-    plateau = 0.0 if rolloff is None else _positive(rolloff, "rolloff", allow_zero=True)
+    plateau = 0.0
+    if rolloff is not None:
+        plateau = positive(rolloff, "rolloff", example="0 (no plateau) or 1 (flat plateau)", allow_zero=True)
     exponent = 2.0 * (1.0 + hurst) if len(shape) == 2 else 1.0 + 2.0 * hurst
 
     def psd_shape(q: np.ndarray) -> np.ndarray:
@@ -311,8 +309,8 @@ def gaussian_random(
     in their contact. Proc. R. Soc. A 316, 97-121. doi:10.1098/rspa.1970.0068
     """
     shape, size = _grid(shape, size)
-    rms_height = _positive(rms_height, "rms_height")
-    correlation_length = _positive(correlation_length, "correlation_length")
+    rms_height = positive(rms_height, "rms_height", example="1e-9", unit="m")
+    correlation_length = positive(correlation_length, "correlation_length", example="1e-7", unit="m")
     heights = _filtered_noise(
         shape, size, lambda q: np.exp(-((q * correlation_length) ** 2) / 4.0), seed, "correlation_length"
     )
@@ -403,7 +401,7 @@ def sphere(
     doi:10.1017/CBO9781139171731
     """
     shape, size = _grid(shape, size)
-    radius = _positive(radius, "radius")
+    radius = positive(radius, "radius", example="5e-3", unit="m")
     if kind not in ("sphere", "paraboloid"):
         raise InputError("kind", f"unknown kind {kind!r}.", "choose 'sphere' or 'paraboloid'.")
     distance = _radial_distance(shape, size, centre, periodic)
@@ -461,8 +459,8 @@ def sinusoid(
     Topography
     """
     shape, size = _grid(shape, size)
-    amplitude = _positive(amplitude, "amplitude")
-    wavelength = _positive(wavelength, "wavelength")
+    amplitude = positive(amplitude, "amplitude", example="1e-7", unit="m")
+    wavelength = positive(wavelength, "wavelength", example="1e-5", unit="m")
     if axis not in range(len(shape)):
         raise InputError(
             "axis", f"axis {axis!r} does not exist on a {len(shape)}D grid.", "use 0 (x), or 1 (y) for a map."
@@ -513,8 +511,8 @@ def bisinusoid(
     shape, size = _grid(shape, size)
     if len(shape) != 2:
         raise InputError("shape", "a bisinusoid needs a map (nx, ny).", "use sinusoid for a profile.")
-    amplitude = _positive(amplitude, "amplitude")
-    wavelength = _per_axis(wavelength, 2, "wavelength")
+    amplitude = positive(amplitude, "amplitude", example="1e-7", unit="m")
+    wavelength = _per_axis(wavelength, 2, "wavelength", "1e-5")
     x, y = (np.arange(n) * s / n for n, s in zip(shape, size, strict=True))
     heights = amplitude * np.outer(
         np.cos(2.0 * np.pi * x / wavelength[0]), np.cos(2.0 * np.pi * y / wavelength[1])
@@ -561,8 +559,8 @@ def flat_punch(
     doi:10.1017/CBO9781139171731
     """
     shape, size = _grid(shape, size)
-    radius = _positive(radius, "radius")
-    depth = _positive(depth, "depth")
+    radius = positive(radius, "radius", example="10e-6", unit="m")
+    depth = positive(depth, "depth", example="1e-6", unit="m")
     heights = np.where(_radial_distance(shape, size, centre, False) <= radius, 0.0, -depth)
     info = {"name": "flat punch", "generator": "flat_punch", "radius": radius, "depth": depth}
     return Topography(heights, size, periodic=False, info=info)
@@ -619,9 +617,9 @@ def raised_island(
     Seed paper 002, section II (raised SU-8 squares, Fig. 2).
     """
     shape, size = _grid(shape, size)
-    island_size = _positive(island_size, "island_size")
-    thickness = _positive(thickness, "thickness")
-    rms_height = _positive(rms_height, "rms_height", allow_zero=True)
+    island_size = positive(island_size, "island_size", example="25e-6", unit="m")
+    thickness = positive(thickness, "thickness", example="1e-6", unit="m")
+    rms_height = positive(rms_height, "rms_height", example="1e-9", unit="m", allow_zero=True)
     hurst = _hurst(hurst)
     substrate_height = float(substrate_height)
     if not math.isfinite(substrate_height):

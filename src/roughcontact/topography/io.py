@@ -1,4 +1,4 @@
-"""Read measured topographies from instrument files, and save/load roughcontact's own format.
+"""Read measured topographies from instrument files.
 
 Instrument files are read through SurfaceTopography, which recognises the format from the
 file's content (AFM: Bruker ``.di``, Asylum ``.ibw``, Nanosurf ``.nid``, WSxM ``.top``;
@@ -13,11 +13,9 @@ points are refused unless the user asks for them to be interpolated; they are ne
 zero. A file that cannot be read raises :class:`~roughcontact.errors.UnsupportedFormatError`
 naming the file, with SurfaceTopography's own exception chained.
 
-roughcontact's own format (:func:`save_topography`, :func:`load_topography`) is a NetCDF-4
-file (HDF5, written with the ``h5netcdf`` engine) holding the heights [m] as float64 on
-coordinates ``x`` (and ``y``) [m], and as attributes the physical size [m], the periodic
-flag, the metadata ``info`` as JSON and a format marker with a version. It round-trips a
-:class:`~roughcontact.topography.surface.Topography` exactly.
+roughcontact's own NetCDF files (written by
+:func:`~roughcontact.topography.native.save_topography`, see :mod:`roughcontact.topography.native`)
+are recognised by their format marker and read here too, with the same options.
 
 References
 ----------
@@ -28,7 +26,6 @@ from __future__ import annotations
 
 import gzip
 import io
-import json
 import os
 import shlex
 import zlib
@@ -41,20 +38,22 @@ from typing import Any
 
 import numpy as np
 
-from .._files import replacing
-from ..errors import InputError, UnitError, UnsupportedFormatError
+from .._files import existing_file, first_line
+from ..errors import (
+    InputError,
+    MissingMetadataError,
+    UndefinedPointsError,
+    UnitError,
+    UnsupportedFormatError,
+)
 from ..units import length_unit_factor, quantity
+from .native import channel_name, is_native_file, read_native
 from .process import fill_undefined
 from .surface import Topography
 
-__all__ = ["ChannelInfo", "list_channels", "load_topography", "read_topography", "save_topography"]
-
-NATIVE_FORMAT = "roughcontact-topography"
-NATIVE_VERSION = 1
+__all__ = ["ChannelInfo", "list_channels", "read_topography"]
 
 _GZIP_MAGIC = b"\x1f\x8b"
-_HDF5_MAGIC = b"\x89HDF\r\n\x1a\n"
-_TUPLE_TAG = "__tuple__"  # JSON has no tuples: {"__tuple__": [...]} keeps info round trips exact
 _UNDEFINED_CHOICES = ("refuse", "interpolate")
 _REREAD_FIX = (
     "copy the file again from the instrument or export it again (e.g. as .x3p, .sur or a "
@@ -119,13 +118,13 @@ def list_channels(path: PathLike) -> list[ChannelInfo]:
     UnsupportedFormatError
         A missing, empty, unknown or damaged file.
     """
-    path = _existing_file(path)
-    if _is_native(path):
-        topography = load_topography(path)
+    path = existing_file(path, empty_fix=_REREAD_FIX)
+    if is_native_file(path):
+        topography = read_native(path)
         return [
             ChannelInfo(
                 0,
-                str(topography.info.get("channel", "heights")),
+                channel_name(topography),
                 topography.shape,
                 topography.size,
                 "m",
@@ -159,7 +158,7 @@ def read_topography(
     ----------
     path : str or path-like
         Instrument file (any format SurfaceTopography reads, optionally gzip-compressed) or a
-        roughcontact ``.nc`` file written by :func:`save_topography`.
+        roughcontact ``.nc`` file written by :func:`~roughcontact.topography.native.save_topography`.
     channel : int or str, optional
         Channel index or name (see :func:`list_channels`); default: the file's default channel.
     size : float or str or tuple, optional
@@ -201,9 +200,9 @@ def read_topography(
     """
     if undefined not in _UNDEFINED_CHOICES:
         raise InputError("undefined", f"unknown choice {undefined!r}.", "choose 'refuse' or 'interpolate'.")
-    path = _existing_file(path)
-    if _is_native(path):
-        return _read_native(path, channel, size, height_unit, periodic)
+    path = existing_file(path, empty_fix=_REREAD_FIX)
+    if is_native_file(path):
+        return _with_options(read_native(path, channel=channel), path, size, height_unit, periodic)
     with _open_reader(path) as reader:
         selected = _select_channel(reader, channel, path)
         file_size_unit, file_height_unit = _file_units(selected)
@@ -237,143 +236,7 @@ def read_topography(
     return Topography(heights, physical_size, periodic=periodic, info=info)
 
 
-def save_topography(topography: Topography, path: PathLike) -> None:
-    """Write a topography to roughcontact's own NetCDF format, atomically.
-
-    The file holds ``heights`` [m] (float64) on coordinates ``x`` (and ``y``) [m] at the grid
-    points ``i * spacing``, and attributes ``format = "roughcontact-topography"``,
-    ``format_version = 1``, ``size`` [m], ``periodic`` (0 or 1) and ``info`` (JSON; tuples are
-    written as ``{"__tuple__": [...]}`` so that they come back as tuples). The file is written
-    under a temporary name in the target folder and renamed into place, so a failed write
-    leaves no partial file and an existing file intact.
-
-    Parameters
-    ----------
-    topography : Topography
-        Surface to save; its ``info`` must hold only str, numbers, None, lists, tuples and dicts
-        with str keys.
-    path : str or path-like
-        Output file, conventionally ending in ``.nc``.
-
-    Raises
-    ------
-    InputError
-        Not a Topography, info that JSON cannot hold exactly, a missing or unwritable folder.
-    """
-    import xarray as xr
-
-    if not isinstance(topography, Topography):
-        raise InputError(
-            "topography",
-            f"expected a Topography, got {type(topography).__name__}.",
-            "read or generate a Topography first.",
-        )
-    path = Path(path)
-    dims = ("x", "y")[: topography.dim]
-    coordinates = {d: (d, c, {"units": "m"}) for d, c in zip(dims, topography.coordinates(), strict=True)}
-    heights = (dims, np.asarray(topography.heights, dtype=np.float64), {"units": "m", "long_name": "height"})
-    dataset = xr.Dataset(
-        {"heights": heights},
-        coords=coordinates,
-        attrs={
-            "format": NATIVE_FORMAT,
-            "format_version": NATIVE_VERSION,
-            "size": list(topography.size),
-            "size_units": "m",
-            "periodic": int(topography.periodic),
-            "info": _encode_info(topography.info),
-        },
-    )
-    encoding = {name: {"_FillValue": None} for name in (*dims, "heights")}
-    _write_atomically(dataset, path, encoding)
-
-
-def load_topography(path: PathLike) -> Topography:
-    """Load a topography written by :func:`save_topography`, exactly as it was saved.
-
-    Parameters
-    ----------
-    path : str or path-like
-        A roughcontact ``.nc`` file.
-
-    Returns
-    -------
-    Topography
-        Heights [m], size [m], periodic flag and info as saved.
-
-    Raises
-    ------
-    UnsupportedFormatError
-        A missing file, a file that is not NetCDF, a NetCDF file without the roughcontact format
-        marker, or one written by a newer format version.
-    """
-    import xarray as xr
-
-    path = _existing_file(path)
-    try:
-        with xr.open_dataset(path, engine="h5netcdf") as dataset:
-            dataset.load()
-    except Exception as error:  # any failure of the HDF5 stack means the same to the user
-        raise UnsupportedFormatError(
-            str(path),
-            f"cannot be opened as a NetCDF file ({_first_line(error)}).",
-            "load .nc files written by save_topography(); read instrument files with read_topography().",
-        ) from error
-    attrs = dataset.attrs
-    if attrs.get("format") != NATIVE_FORMAT or "heights" not in dataset:
-        raise UnsupportedFormatError(
-            str(path),
-            f"is NetCDF but not a roughcontact topography (no format marker {NATIVE_FORMAT!r}).",
-            "read instrument files with read_topography(); write this format with save_topography().",
-        )
-    version = attrs.get("format_version")
-    if version != NATIVE_VERSION:
-        raise UnsupportedFormatError(
-            str(path),
-            f"has format version {version}; this roughcontact reads version {NATIVE_VERSION}.",
-            "open it with the roughcontact version that wrote it.",
-        )
-    size = tuple(float(s) for s in np.atleast_1d(attrs["size"]))
-    return Topography(
-        dataset["heights"].values, size, periodic=bool(attrs["periodic"]), info=_decode_info(attrs["info"])
-    )
-
-
 # --- files and SurfaceTopography -----------------------------------------------------------------
-
-
-def _existing_file(path: PathLike) -> Path:
-    """Return ``path`` as a Path, refusing what is not a readable non-empty file."""
-    path = Path(path)
-    if not path.exists():
-        raise UnsupportedFormatError(str(path), "no such file.", "check the path and the file name.")
-    if path.is_dir():
-        raise UnsupportedFormatError(
-            str(path), "is a folder, not a file.", "give the path of one topography file inside it."
-        )
-    if path.stat().st_size == 0:
-        raise UnsupportedFormatError(str(path), "the file is empty (0 bytes).", _REREAD_FIX)
-    return path
-
-
-def _is_native(path: Path) -> bool:
-    """Whether ``path`` is an HDF5 file carrying roughcontact's format marker."""
-    import h5netcdf
-
-    with path.open("rb") as stream:
-        if stream.read(len(_HDF5_MAGIC)) != _HDF5_MAGIC:
-            return False
-    try:
-        with h5netcdf.File(path, "r") as handle:
-            return handle.attrs.get("format") == NATIVE_FORMAT
-    except Exception:  # a damaged HDF5 file is left to SurfaceTopography, which reports it
-        return False
-
-
-def _first_line(error: BaseException, limit: int = 160) -> str:
-    text = str(error).strip().splitlines()
-    line = text[0].strip() if text else type(error).__name__
-    return line if len(line) <= limit else line[: limit - 3] + "..."
 
 
 @contextmanager
@@ -398,11 +261,11 @@ def _reader_errors(path: Path) -> Iterator[None]:
         ) from error
     except CorruptFile as error:
         raise UnsupportedFormatError(
-            str(path), f"the file is damaged: {_first_line(error)}", _REREAD_FIX
+            str(path), f"the file is damaged: {first_line(error)}", _REREAD_FIX
         ) from error
     except Exception as error:
         raise UnsupportedFormatError(
-            str(path), f"reading failed ({type(error).__name__}: {_first_line(error)}).", _REREAD_FIX
+            str(path), f"reading failed ({type(error).__name__}: {first_line(error)}).", _REREAD_FIX
         ) from error
 
 
@@ -415,7 +278,7 @@ def _decompressed(path: Path) -> io.BytesIO | str:
         content = gzip.decompress(path.read_bytes())
     except (OSError, EOFError, zlib.error) as error:
         raise UnsupportedFormatError(
-            str(path), f"the gzip archive is damaged or truncated ({_first_line(error)}).", _REREAD_FIX
+            str(path), f"the gzip archive is damaged or truncated ({first_line(error)}).", _REREAD_FIX
         ) from error
     if not content:
         raise UnsupportedFormatError(str(path), "the gzip archive holds an empty file.", _REREAD_FIX)
@@ -551,11 +414,11 @@ def _require_metadata(
             if channel.physical_sizes is None
             else (f" (it gives {' x '.join(f'{float(s):g}' for s in channel.physical_sizes)} without a unit)")
         )
-        missing.append(("size", f"no physical scan size{in_file}", 'size="5 um"', '--size "5 um"'))
+        missing.append(("size", f"no physical scan size{in_file}", 'size="5 um"', '--size "5 um"', "5 um"))
         if channel.dim == 2:
             notes.append('a non-square scan takes size=("5 um", "10 um") or --size "5 um x 10 um"')
     if height_unit is None and file_height_unit is None:
-        missing.append(("height_unit", "no height unit", 'height_unit="nm"', "--height-unit nm"))
+        missing.append(("height_unit", "no height unit", 'height_unit="nm"', "--height-unit nm", "nm"))
         others = [name for name in _height_channel_names(reader) if name != channel.name]
         if others:
             names = ", ".join(map(repr, others))
@@ -565,13 +428,15 @@ def _require_metadata(
     what = " and ".join(m[1] for m in missing)
     python = ", ".join(m[2] for m in missing)
     cli = " ".join(m[3] for m in missing)
-    raise InputError(
+    raise MissingMetadataError(
         missing[0][0],
         f"{path} has {what}.",
         f"give the real values, e.g. read_topography({str(path)!r}, {python}) in Python, or "
         f"roughcontact inspect {shlex.quote(str(path))} {cli} at the command line"
         + "".join(f"; {note}" for note in notes)
         + ".",
+        {m[0]: m[4] for m in missing},
+        [note for note in notes if note.startswith("channel")],
     )
 
 
@@ -619,11 +484,12 @@ def _handle_undefined(heights: np.ndarray, undefined: str, path: Path) -> tuple[
     if count == 0:
         return heights, 0
     if undefined == "refuse":
-        raise InputError(
+        raise UndefinedPointsError(
             str(path),
             f"{count} of {heights.size} points are undefined (missing in the measurement).",
             "pass undefined='interpolate' (command line: --fill-undefined) to fill them by "
             "harmonic interpolation from their neighbours, or crop them away.",
+            count,
         )
     return fill_undefined(heights, field=str(path)), count
 
@@ -650,16 +516,21 @@ def _file_info(
     }
     for key in ("instrument", "acquisition_time"):
         if key in measured_info:
-            info[key] = _json_ready(measured_info[key])
+            info[key] = _info_value(measured_info[key])
     return info
 
 
-def _json_ready(value: Any) -> Any:
-    """Convert reader metadata to JSON-ready values (dicts with str keys, tuples, str, numbers)."""
+def _info_value(value: Any) -> Any:
+    """Convert reader metadata to values the native format stores exactly (dicts with str keys, tuples, ...).
+
+    Not :func:`roughcontact._json.json_ready`, which serves ``json.dumps`` output: that one turns
+    tuples into lists and NaN into None and passes arrays, dates and other objects through, while
+    ``info`` keeps tuples and NaN, and needs arrays as tuples and dates and objects as text.
+    """
     if isinstance(value, Mapping):
-        return {str(k): _json_ready(v) for k, v in value.items()}
+        return {str(k): _info_value(v) for k, v in value.items()}
     if isinstance(value, list | tuple | np.ndarray):
-        return tuple(_json_ready(v) for v in value)
+        return tuple(_info_value(v) for v in value)
     if isinstance(value, np.generic):
         return value.item()
     if isinstance(value, datetime | date):
@@ -684,16 +555,11 @@ def _user_size(size: SizeLike, dim: int) -> tuple[float, ...]:
     return metres
 
 
-def _read_native(
-    path: Path, channel: int | str | None, size: SizeLike | None, height_unit: str | None, periodic: bool
+def _with_options(
+    topography: Topography, path: Path, size: SizeLike | None, height_unit: str | None, periodic: bool
 ) -> Topography:
-    """Apply read_topography's options to a roughcontact .nc file (one channel, heights in m)."""
-    topography = load_topography(path)
-    if channel not in (None, 0, topography.info.get("channel", "heights")):
-        raise InputError(
-            "channel", f"{path.name} is a roughcontact file with a single channel.", "leave channel out."
-        )
-    _height_factor(path, "m", height_unit)
+    """Apply read_topography's size, height_unit and periodic to a roughcontact file's topography."""
+    _height_factor(path, "m", height_unit)  # its heights are stored in metres
     changes: dict[str, Any] = {}
     if size is not None:
         changes["size"] = _user_size(size, topography.dim)
@@ -701,59 +567,3 @@ def _read_native(
     if periodic:
         changes["periodic"] = True
     return topography.with_heights(topography.heights, **changes) if changes else topography
-
-
-# --- native format helpers -----------------------------------------------------------------------
-
-
-def _encode_info(info: Mapping[str, Any]) -> str:
-    """Return ``info`` as JSON, tuples tagged so that they are restored as tuples."""
-
-    def encode(value: Any, where: str) -> Any:
-        if isinstance(value, Mapping):
-            for key in value:
-                if not isinstance(key, str):
-                    raise InputError(
-                        "topography.info", f"key {key!r} in {where} is not a string.", "use str keys in info."
-                    )
-            return {k: encode(v, f"{where}[{k!r}]") for k, v in value.items()}
-        if isinstance(value, tuple):
-            return {_TUPLE_TAG: [encode(v, where) for v in value]}
-        if isinstance(value, list):
-            return [encode(v, where) for v in value]
-        if isinstance(value, np.generic):
-            return value.item()
-        if value is None or isinstance(value, str | bool | int | float):
-            return value
-        raise InputError(
-            "topography.info",
-            f"{where} holds a {type(value).__name__}, which the .nc format cannot store.",
-            "keep info to str, numbers, None, lists, tuples and dicts with str keys.",
-        )
-
-    return json.dumps(encode(dict(info), "info"))
-
-
-def _decode_info(text: str) -> dict[str, Any]:
-    def restore(mapping: dict) -> Any:
-        return tuple(mapping[_TUPLE_TAG]) if mapping.keys() == {_TUPLE_TAG} else mapping
-
-    return json.loads(text, object_hook=restore)
-
-
-def _write_atomically(dataset, path: Path, encoding: dict) -> None:
-    """Write ``dataset`` through a temporary file beside ``path`` (:func:`roughcontact._files.replacing`).
-
-    The folder must exist (it is not created); a failed write is an :class:`InputError` naming the path.
-    """
-    if not path.parent.is_dir():
-        raise InputError(
-            "path", f"folder {path.parent} does not exist.", "create it first or choose another path."
-        )
-    try:
-        with replacing(path) as temporary:
-            dataset.to_netcdf(temporary, engine="h5netcdf", encoding=encoding)
-    except OSError as error:
-        raise InputError(
-            "path", f"cannot write {path}: {_first_line(error)}", "choose a writable folder with free space."
-        ) from error

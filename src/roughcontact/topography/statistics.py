@@ -59,6 +59,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import fft, signal
 
+from ..checks import positive
 from ..errors import InputError
 from .surface import Topography
 
@@ -351,13 +352,6 @@ class McCoolParameters:
     summit_mean_offset: float
 
 
-def _positive_finite(value: float, field: str, unit: str) -> float:
-    value = float(value)
-    if not math.isfinite(value) or value <= 0:
-        raise InputError(field, f"must be positive and finite, got {value!r}.", f"give {field} in {unit}.")
-    return value
-
-
 def mccool_parameters(*, m0: float, m2: float, m4: float) -> McCoolParameters:
     r"""McCool's asperity parameters from the spectral moments (paper 002 eqs. 4-5).
 
@@ -402,9 +396,9 @@ def mccool_parameters(*, m0: float, m2: float, m4: float) -> McCoolParameters:
     Nayak, P. R. (1971). J. Lubr. Technol. 93, 398-407. doi:10.1115/1.3451150
     Seed paper 002, eqs. 4-5.
     """
-    m0 = _positive_finite(m0, "m0", "m^2")
-    m2 = _positive_finite(m2, "m2", "dimensionless units (mean square slope)")
-    m4 = _positive_finite(m4, "m4", "1/m^2")
+    m0 = positive(m0, "m0", example="2.1e-15", unit="m^2")
+    m2 = positive(m2, "m2", example="2.3e-3 (mean square slope, dimensionless)")
+    m4 = positive(m4, "m4", example="1.7e10", unit="1/m^2")
     bandwidth = m0 * m4 / m2**2
     if bandwidth < MCCOOL_MIN_BANDWIDTH:
         raise InputError(

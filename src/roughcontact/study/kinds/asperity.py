@@ -2,7 +2,7 @@ r"""Study kind ``asperity``: McCool asperity parameters and the statistical KKE 
 
 One case is a rough surface against a flat (seed paper 002, sections IV-V):
 
-* the spectral moments m0, m2, m4 (eqs. 1-3), from a study topography (``surface``, through
+* the spectral moments m0, m2, m4 (eqs. 1-3), from a study topography (``topography``, through
   :func:`~roughcontact.topography.statistics.spectral_moments`) or given (``m0``, ``m2``, ``m4``);
 * McCool's summit radius R_asp = 0.375 sqrt(pi / m4) (eq. 4) and summit height deviation
   sigma_s = sqrt(1 - 0.8968 m2^2 / (m0 m4)) sqrt(m0) (eq. 5), the composite modulus E' (eq. 7),
@@ -48,11 +48,11 @@ import numpy as np
 from pydantic import AfterValidator, Field, model_validator
 from pydantic_core import PydanticCustomError
 
-from ...asperity.load_unload import LOADING_LAWS
-from ...models import asperity_report
+from ...asperity.load_unload import LOADING_LAWS, StatisticalLoadUnload
+from ...asperity.parameters import AsperityParameters
 from ..kind import CaseOutput, CaseParameters, Kind
 from ..schema import Area, Force, InverseArea, MaterialName, Pressure, Strict, TopographyName
-from .common import curve_dataset, evenly_chosen
+from .common import evenly_chosen
 
 
 def _positive(unit: str):
@@ -71,18 +71,18 @@ def _positive(unit: str):
     return AfterValidator(check)
 
 
-class AsperityParameters(CaseParameters):
+class AsperityKeys(CaseParameters):
     """Keys of a ``model = "asperity"`` analysis (SI after validation).
 
     Attributes
     ----------
-    surface : str, optional
+    topography : str, optional
         A study topography whose moments (eqs. 1-3) are used; or give ``m0``, ``m2``, ``m4``.
     m0, m2, m4 : float, optional
         Spectral moments [m^2], [-], [1/m^2] (``m0 = "0.00213279 um^2"``, ``m4 = "0.0171036 1/um^2"``).
     material : str
         The rough, softer body (its hardness sets omega_c, its nu sets K).
-    counter : str, optional
+    counter_body : str, optional
         The flat (default: rigid).
     hardness, yield_strength : float, optional
         Overrides of the material's H and S_y [Pa] (S_y only enters the Jackson-Green law).
@@ -93,7 +93,7 @@ class AsperityParameters(CaseParameters):
     law : str
         Loading law of one summit (:data:`~roughcontact.asperity.load_unload.LOADING_LAWS`).
     distribution : {"gaussian", "measured"}
-        Summit heights: Gaussian of sigma_s, or the 8-neighbour maxima of ``surface``.
+        Summit heights: Gaussian of sigma_s, or the 8-neighbour maxima of ``topography``.
     reference_force : float, optional
         Load of zero interference [N] (paper 002: 25 uN); both branches end there.
     steps : int
@@ -102,12 +102,12 @@ class AsperityParameters(CaseParameters):
         Add this case to the ``paper002`` table (section IV's printed values against ours).
     """
 
-    surface: TopographyName | None = None
+    topography: TopographyName | None = None
     m0: Annotated[Area, _positive("m^2")] | None = None
     m2: Annotated[float, _positive("")] | None = None
     m4: Annotated[InverseArea, _positive("1/m^2")] | None = None
     material: MaterialName
-    counter: MaterialName | None = None
+    counter_body: MaterialName | None = None
     hardness: Pressure | None = None
     yield_strength: Pressure | None = None
     modulus_form: Literal["standard", "paper002_eq7_printed"] = "standard"
@@ -120,16 +120,17 @@ class AsperityParameters(CaseParameters):
     paper002: bool = False
 
     @model_validator(mode="after")
-    def _consistent(self) -> AsperityParameters:
+    def _consistent(self) -> AsperityKeys:
         moments = [k for k in ("m0", "m2", "m4") if getattr(self, k) is not None]
-        if (self.surface is None) == (not moments) or (moments and len(moments) != 3):
-            found = ", ".join((["surface"] if self.surface is not None else []) + moments) or "none"
+        if (self.topography is None) == (not moments) or (moments and len(moments) != 3):
+            found = ", ".join((["topography"] if self.topography is not None else []) + moments) or "none"
             raise PydanticCustomError(
                 "quantity",
-                "give exactly one of surface or the three moments m0, m2, m4 (found {found})",
+                "give exactly one of topography or the three moments m0, m2, m4 (found {found})",
                 {
                     "found": found,
-                    "fix": "e.g. surface = 'scan', or m0 = '0.00213 um^2', m2 = 0.0023, m4 = '0.0171 1/um^2'",
+                    "fix": "e.g. topography = 'scan', or m0 = '0.00213 um^2', m2 = 0.0023, "
+                    "m4 = '0.0171 1/um^2'",
                 },
             )
         if moments:
@@ -156,11 +157,11 @@ class AsperityParameters(CaseParameters):
                 "reference_force must lie between 0 and max_force",
                 {"fix": "e.g. reference_force = '25 uN' with max_force = '1000 uN'"},
             )
-        if self.distribution == "measured" and self.surface is None:
+        if self.distribution == "measured" and self.topography is None:
             raise PydanticCustomError(
                 "quantity",
                 "distribution = 'measured' takes the summit heights of a surface",
-                {"fix": "give surface = NAME, or use distribution = 'gaussian'"},
+                {"fix": "give topography = NAME, or use distribution = 'gaussian'"},
             )
         return self
 
@@ -176,18 +177,18 @@ class MeasuredCurve(Strict):
     measured_curve: Path
 
 
-def _moments(parameters: AsperityParameters, inputs) -> tuple[dict[str, float], object]:
+def _moments(parameters: AsperityKeys, inputs) -> tuple[dict[str, float], object]:
     """Return the moments of the case (SI) and its topography (None for given moments)."""
-    if parameters.surface is None:
+    if parameters.topography is None:
         return {"m0": parameters.m0, "m2": parameters.m2, "m4": parameters.m4}, None
     from ...topography.statistics import spectral_moments
 
-    surface = inputs.topography(parameters.surface)
+    surface = inputs.topography(parameters.topography)
     found = spectral_moments(surface)
     return {"m0": found.m0, "m2": found.m2, "m4": found.m4}, surface
 
 
-def run(parameters: AsperityParameters, inputs) -> CaseOutput:
+def run(parameters: AsperityKeys, inputs) -> CaseOutput:
     """Asperity parameters (eqs. 4-9) and, with ``max_force``, the KKE load-unload curve."""
     from ...asperity import statistical_load_unload
     from ...asperity.greenwood_williamson import summits_of
@@ -199,11 +200,11 @@ def run(parameters: AsperityParameters, inputs) -> CaseOutput:
     found = asperity_parameters(
         **moments,
         sample=sample,
-        counter_body=inputs.material(parameters.counter),
+        counter_body=inputs.material(parameters.counter_body),
         hardness=parameters.hardness,
         modulus_form=parameters.modulus_form,
     )
-    scalars = found.to_dict()
+    scalars = found.scalars()
     if parameters.max_force is None:
         return CaseOutput(scalars)
     statistical = statistical_load_unload(
@@ -220,30 +221,19 @@ def run(parameters: AsperityParameters, inputs) -> CaseOutput:
         reference_force=parameters.reference_force,
         steps=parameters.steps,
     )
-    curve = statistical.curve()
-    peak = statistical.peak
+    curve = statistical.scalars()
     omega_c = found.critical_interference
     scalars |= {
-        "peak_force": float(curve["force"][peak]),
-        "peak_interference": float(curve["approach"][peak]),
-        "residual_interference": statistical.residual_interference,
-        "peak_interference_over_omega_c": float(curve["approach"][peak]) / omega_c,
-        "residual_interference_over_omega_c": statistical.residual_interference / omega_c,
-        "peak_contact_area": float(curve["contact_area"][peak]),
-        "peak_number_of_contacts": float(curve["number_of_contacts"][peak]),
-        "plastic_fraction_at_peak": float(curve["plastic_fraction"][peak]),
+        "peak_force": curve["peak_force"],
+        "peak_interference": curve["peak_interference"],
+        "residual_interference": curve["residual_interference"],
+        "peak_interference_over_omega_c": curve["peak_interference"] / omega_c,
+        "residual_interference_over_omega_c": curve["residual_interference"] / omega_c,
+        "peak_contact_area": curve["peak_contact_area"],
+        "peak_number_of_contacts": curve["peak_number_of_contacts"],
+        "plastic_fraction_at_peak": curve["plastic_fraction_at_peak"],
     }
-    units = {
-        "approach": ("m", "interference, zero at reference_force on loading"),
-        "interference_ratio": ("", "interference over omega_c"),
-        "separation": ("m", "flat to the summits' mean plane"),
-        "force": ("N", "load"),
-        "contact_area": ("m^2", "real contact area (loading only)"),
-        "number_of_contacts": ("", "summits in contact"),
-        "plastic_fraction": ("", "fraction of the touching summits loaded beyond omega_c"),
-    }
-    dataset = curve_dataset(curve, units, {"law": parameters.law, "critical_interference": omega_c})
-    return CaseOutput(scalars, dataset)
+    return CaseOutput(scalars, statistical.to_xarray())
 
 
 # --- figures and tables --------------------------------------------------------------------------
@@ -365,22 +355,25 @@ def _paper002_table(records, context):
     return rows
 
 
-UNITS = asperity_report.UNITS | {
-    "peak_force": "N",
-    "peak_interference": "m",
-    "residual_interference": "m",
-    "peak_contact_area": "m^2",
-}
+UNITS = AsperityParameters.UNITS | StatisticalLoadUnload.UNITS
 """Scalar name -> SI unit (the parameters' units come from their schema)."""
 
 KIND = Kind(
     name="asperity",
     summary="McCool asperity parameters (R_asp, sigma_s, E', K, omega_c, psi) and the statistical KKE "
     "load-unload (paper 002)",
-    parameters=AsperityParameters,
+    parameters=AsperityKeys,
     run=run,
     units=UNITS,
     figures={"load_interference": _load_interference, "contact_area": _contact_area},
     tables={"paper002": _paper002_table},
     compare=MeasuredCurve,
+    headline=(
+        "summit_radius",
+        "summit_height_std",
+        "critical_interference",
+        "plasticity_index",
+        "peak_interference",
+    ),
+    renamed={"surface": "topography", "counter": "counter_body"},
 )

@@ -1,19 +1,19 @@
 r"""Study kind ``friction``: the Winkler-layer Lennard-Jones friction of paper 000 at one load per case.
 
 Wraps :func:`roughcontact.friction.winkler_lj_model` and its ``solve(load)`` (details and the
-derivations in ``docs/winkler_lj.md``). The two topographies (``surface``, e.g. a polysilicon scan,
-and ``counter_surface``, e.g. the AFM tip) are merged into one composite surface z_i facing a rigid
+derivations in ``docs/winkler_lj.md``). The two topographies (``topography``, e.g. a polysilicon
+scan, and ``counter_topography``, e.g. the AFM tip) are merged into one composite surface z_i facing a rigid
 flat (paper 000, Fig. 1); each pixel is a spring, a cuboid of top area S (the pixel area) and
 height h (``layer_thickness``, the Winkler layer):
 
-* eq. 1: E = [(1 - nu1^2) / E1 + (1 - nu2^2) / E2]^-1 (``material`` and ``counter``; no
-  ``counter``: a rigid counter-body);
+* eq. 1: E = [(1 - nu1^2) / E1 + (1 - nu2^2) / E2]^-1 (``material`` and ``counter_body``; no
+  ``counter_body``: a rigid counter-body);
 * eqs. 3-4: spring stress P_i = E dz_i / (k h), k = (1 + s)(1 - 2s) / (1 - s), s = sqrt(nu1 nu2)
   (the uniaxial-strain reading; eq. 4 prints the denominator 1 - nu1 nu2);
 * eqs. 5-7: attraction f(l) = (8 dgamma / 3 eps) [(eps / l)^3 - (eps / l)^9] (``epsilon``),
   dgamma from the two surface energies (``surface_energy``, ``counter_surface_energy``; default
   the materials' own);
-* eq. 2: sum P_i S - sum f(l_i) S = N (``load``) for the separation d, l_i = d - z_i;
+* eq. 2: sum P_i S - sum f(l_i) S = N (``normal_force``) for the separation d, l_i = d - z_i;
 * eq. 8: extension dz_i = f(l_i) k h / E of the springs in adhesive contact;
 * eqs. 9-15: lateral force Q_i = sqrt(2 W_i / (c H_i)) that breaks the bond of an adhesive spring
   (shear work of the cuboid = the bond energy e(l_ia) S of eq. 14);
@@ -94,13 +94,13 @@ class FrictionParameters(CaseParameters):
 
     Attributes
     ----------
-    surface : str
+    topography : str
         The rough surface (paper 000: a polysilicon scan).
-    counter_surface : str, optional
-        The counter-body's topography (paper 000: the AFM tip), merged with ``surface``.
-    material, counter : str
+    counter_topography : str, optional
+        The counter-body's topography (paper 000: the AFM tip), merged with ``topography``.
+    material, counter_body : str
         Materials of the surface's body and of the counter-body (None: rigid).
-    load : float
+    normal_force : float
         Normal load N [N].
     layer_thickness, epsilon : float
         Winkler layer height h and the Lennard-Jones equilibrium distance [m] (paper 000: 50 nm, 2 nm).
@@ -116,11 +116,11 @@ class FrictionParameters(CaseParameters):
         Also find the load where mechanical friction overtakes adhesive friction.
     """
 
-    surface: TopographyName
-    counter_surface: TopographyName | None = None
+    topography: TopographyName
+    counter_topography: TopographyName | None = None
     material: MaterialName
-    counter: MaterialName | None = None
-    load: Force
+    counter_body: MaterialName | None = None
+    normal_force: Force
     layer_thickness: Length = 50e-9
     epsilon: Length = 2e-9
     surface_energy: SurfaceEnergy | None = None
@@ -141,7 +141,7 @@ class FrictionParameters(CaseParameters):
     def _check(self) -> FrictionParameters:
         bad = [
             name
-            for name in ("load", "layer_thickness", "epsilon", "relaxation_time")
+            for name in ("normal_force", "layer_thickness", "epsilon", "relaxation_time")
             if not (math.isfinite(getattr(self, name)) and getattr(self, name) > 0)
         ]
         if bad:
@@ -169,7 +169,7 @@ class FrictionParameters(CaseParameters):
         return self
 
 
-_EXAMPLES = {"load": "10 uN", "layer_thickness": "50 nm", "epsilon": "2 nm", "relaxation_time": "1 s"}
+_EXAMPLES = {"normal_force": "10 uN", "layer_thickness": "50 nm", "epsilon": "2 nm", "relaxation_time": "1 s"}
 
 
 def normalized_readings(value: dict[str, Any]) -> dict[str, str]:
@@ -280,13 +280,13 @@ def build_model(parameters: FrictionParameters, inputs):
             material.youngs_modulus, relaxed, parameters.relaxation_time
         )
         options["hold_time"] = parameters.hold_time
-    counter_surface = parameters.counter_surface
+    counter_topography = parameters.counter_topography
     return winkler_lj_model(
-        inputs.topography(parameters.surface),
+        inputs.topography(parameters.topography),
         material,
-        inputs.material(parameters.counter),
+        inputs.material(parameters.counter_body),
         layer_thickness=parameters.layer_thickness,
-        counter_surface=None if counter_surface is None else inputs.topography(counter_surface),
+        counter_topography=None if counter_topography is None else inputs.topography(counter_topography),
         epsilon=parameters.epsilon,
         surface_energy=parameters.surface_energy,
         counter_surface_energy=parameters.counter_surface_energy,
@@ -314,9 +314,9 @@ def _cropped(result) -> Any:
 
 
 def run(parameters: FrictionParameters, inputs) -> CaseOutput:
-    """Solve one case: the separation from eq. 2 at ``load``, then friction and mu (eqs. 8-17)."""
+    """Solve one case: the separation from eq. 2 at ``normal_force``, then friction and mu (eqs. 8-17)."""
     model = build_model(parameters, inputs)
-    result = model.solve(parameters.load)
+    result = model.solve(parameters.normal_force)
     constants = model.parameters()
     scalars: dict[str, Any] = dict(result.scalars())
     mechanical = result.mechanical_friction
@@ -340,7 +340,7 @@ def run(parameters: FrictionParameters, inputs) -> CaseOutput:
 
 
 def _load(record: CaseRecord) -> float:
-    return float(record.parameters["load"])
+    return float(record.parameters["normal_force"])
 
 
 def _loads(records: Sequence[CaseRecord]) -> list[float]:
@@ -357,18 +357,18 @@ def _at_one_load(records: Sequence[CaseRecord], load: float | None) -> list[Case
     if load is None:
         if len(loads) > 1:
             raise InputError(
-                "compare.load",
+                "compare.normal_force",
                 f"the analysis has {len(loads)} loads ({loads[0]:.4g} to {loads[-1]:.4g} N) and the "
                 "measured values are at one.",
-                "add load = '10 uN' (the load of the measurements) to [analysis.compare].",
+                "add normal_force = '10 uN' (the load of the measurements) to [analysis.compare].",
             )
         return list(records)
     chosen = [r for r in records if math.isclose(_load(r), load, rel_tol=_LOAD_RTOL)]
     if not chosen:
         raise InputError(
-            "compare.load",
+            "compare.normal_force",
             f"no case at {load:.6g} N (the analysis has {', '.join(f'{x:.6g}' for x in loads)} N).",
-            "set compare.load to one of the analysis' loads.",
+            "set compare.normal_force to one of the analysis' loads.",
         )
     return chosen
 
@@ -397,13 +397,13 @@ def comparison(records: Sequence[CaseRecord], context: FigureContext):
     Raises
     ------
     InputError
-        Several loads and no ``compare.load``, an unreadable CSV, no sample in common, or fewer
+        Several loads and no ``compare.normal_force``, an unreadable CSV, no sample in common, or fewer
         than two values in a sample.
     """
     from ...experiment.compare import compare, read_measured
 
     spec = context.compare
-    simulated = simulated_mu(_at_one_load(records, spec.load))
+    simulated = simulated_mu(_at_one_load(records, spec.normal_force))
     measured = read_measured(spec.measured)
     common = [s for s in simulated if s in measured]
     left_out = sorted(set(simulated) ^ set(measured))
@@ -444,7 +444,7 @@ def _by_sample(records, context):
             mu = np.array([float(r.scalars["mu"]) for r in chosen])
             row: dict[str, Any] = {
                 "sample": sample,
-                "load [N]": load,
+                "normal_force [N]": load,
                 "n": mu.size,
                 "mu_mean": float(mu.mean()),
                 "mu_std": float(mu.std(ddof=1)) if mu.size > 1 else None,
@@ -573,7 +573,7 @@ class FrictionCompare(Strict):
     equal_var : bool
         Student's pooled-variance t-test if true; Welch's (default) does not assume that simulation
         and measurement scatter alike.
-    load : float, optional
+    normal_force : float, optional
         Load of the measurements [N]; needed only when the analysis sweeps the load (the cases at
         this load are compared).
     """
@@ -581,7 +581,7 @@ class FrictionCompare(Strict):
     measured: Path
     alpha: float = Field(default=0.1, gt=0.0, lt=1.0)
     equal_var: bool = False
-    load: Force | None = None
+    normal_force: Force | None = None
 
 
 KIND = Kind(
@@ -602,4 +602,11 @@ KIND = Kind(
     figures={"friction_vs_load": _friction_vs_load, "mu_boxes": _mu_boxes, "mu_means": _mu_means},
     tables={"comparison": _comparison_table, "by_sample": _by_sample},
     compare=FrictionCompare,
+    headline=("mu", "adhesive_friction", "mechanical_friction", "adhesive_to_mechanical", "crossover_load"),
+    renamed={
+        "surface": "topography",
+        "counter_surface": "counter_topography",
+        "counter": "counter_body",
+        "load": "normal_force",
+    },
 )

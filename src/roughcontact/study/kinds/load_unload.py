@@ -57,7 +57,7 @@ class LoadUnloadParameters(CaseParameters):
 
     Attributes
     ----------
-    surface : str
+    topography : str
         The study topography (heights towards the punch; paper 002: ``generate = "paper002_island"``).
     material : str
         The film or half-space; its hardness caps the pressure unless ``hardness``.
@@ -85,7 +85,7 @@ class LoadUnloadParameters(CaseParameters):
         Largest number of map points per axis that is stored.
     """
 
-    surface: TopographyName
+    topography: TopographyName
     material: MaterialName
     substrate: MaterialName | None = None
     film_thickness: Length | None = None
@@ -182,7 +182,7 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
 
     from ...models.thin_film_island import compress_island
 
-    surface = inputs.topography(parameters.surface)
+    surface = inputs.topography(parameters.topography)
     material = inputs.material(parameters.material)
     loading, unloading = load_targets(
         parameters.peak_force, parameters.reference_force, parameters.load_steps
@@ -344,4 +344,6 @@ KIND = Kind(
     },
     figures={"load_interference": _load_interference, "von_mises": _von_mises},
     compare=MeasuredCurve,
+    headline=("peak_interference", "residual_interference", "peak_contact_area", "max_von_mises_at_peak"),
+    renamed={"surface": "topography"},
 )

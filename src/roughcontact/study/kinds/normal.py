@@ -19,19 +19,20 @@ import numpy as np
 from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
+from ...contact.result import NormalContactResult
 from ..kind import CaseOutput, CaseParameters, Kind
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
-from .common import evenly_chosen, grid, grouped, scalar_series
+from .common import evenly_chosen, grouped, scalar_series
 
 
 class NormalParameters(CaseParameters):
     """Keys of a ``model = "normal"`` analysis (SI after validation)."""
 
-    surface: TopographyName
+    topography: TopographyName
     """The rough surface (heights towards the flat)."""
     material: MaterialName
     """The surface's body (the film with film_thickness)."""
-    counter: MaterialName | None = None
+    counter_body: MaterialName | None = None
     """The flat's material; default rigid."""
     mean_pressure: Pressure | None = None
     """Load control by the nominal mean pressure (one of three targets)."""
@@ -78,7 +79,7 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
     from ...elasticity.halfspace import ElasticLayer
     from ...elasticity.stress import subsurface_stress
 
-    surface = inputs.topography(parameters.surface)
+    surface = inputs.topography(parameters.topography)
     material = inputs.material(parameters.material)
     layer = None
     if parameters.film_thickness is not None:
@@ -87,7 +88,7 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
     result = solve_normal(
         surface,
         None if layer is not None else material,
-        counter_body=inputs.material(parameters.counter),
+        counter_body=inputs.material(parameters.counter_body),
         layer=layer,
         mean_pressure=parameters.mean_pressure,
         force=parameters.force,
@@ -96,15 +97,8 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
         boundary=parameters.boundary,
         tolerance=parameters.tolerance,
     )
-    scalars = result.scalars() | {"contact_modulus": result.contact_modulus}
-    axes, coordinates = grid(surface)
-    dataset = xr.Dataset(
-        {
-            "pressure": (axes, result.pressure, {"units": "Pa"}),
-            "gap": (axes, result.gap, {"units": "m"}),
-        },
-        coords=coordinates,
-    )
+    scalars = result.scalars()
+    dataset = result.to_xarray()
     if parameters.stress_depths and surface.dim == 2:
         stress = subsurface_stress(
             result.pressure,
@@ -197,21 +191,13 @@ KIND = Kind(
     summary="normal contact against a flat: FFT-BEM, load or approach control, optional hardness/film",
     parameters=NormalParameters,
     run=run,
-    units={
-        "force": "N",
-        "mean_pressure": "Pa",
-        "approach": "m",
-        "contact_area": "m^2",
-        "mean_gap": "m",
-        "max_pressure": "Pa",
-        "contact_modulus": "Pa",
-        "max_von_mises": "Pa",
-        "max_von_mises_depth": "m",
-    },
+    units=NormalContactResult.UNITS | {"max_von_mises": "Pa", "max_von_mises_depth": "m"},
     figures={
         "contact": _contact_maps,
         "area_load": _area_load,
         "load_approach": _load_approach,
         "von_mises": _von_mises,
     },
+    headline=("force", "mean_pressure", "approach", "contact_fraction", "number_of_patches", "max_pressure"),
+    renamed={"surface": "topography", "counter": "counter_body"},
 )

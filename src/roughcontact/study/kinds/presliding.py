@@ -1,8 +1,9 @@
-r"""Study kind ``presliding``: a rough ball's partial-slip friction loops and K_L against Mindlin (paper 001).
+r"""Study kind ``presliding``: a rough ball on a flat under a tangential programme, K_L against Mindlin.
 
 One case is one rough ball (heights *with* its spherical shape, as paper 001 Fig. 4) pressed on a
-flat with a constant normal force F0 and taken through paper 001's tangential programme; it wraps
-:func:`roughcontact.models.paper001.presliding_case`:
+flat with a constant normal force F0 and taken through a tangential programme: paper 001's (give
+``stroke``) or your own (give ``path``, a CSV file). It wraps
+:func:`roughcontact.models.paper001.presliding`:
 
 1. Normal contact (paper 001 eq. 4): FFT boundary elements on a free (non-periodic) grid, load
    control, complementarity p = 0 where g > 0 and p > 0 where g = 0, with the integral of p equal
@@ -10,21 +11,30 @@ flat with a constant normal force F0 and taken through paper 001's tangential pr
    (:func:`~roughcontact.models.paper001.central_window`; only the centre of the ball touches,
    paper Figs. 8-9); the pressure must vanish on the window's border, else the case fails and
    asks for a larger window.
-2. Tangential programme: the displacement path of paper Fig. 6, delta_x: 0 -> d_s -> 0 repeated
-   ``cycles`` times (default 4, as the paper), ``steps_per_stroke`` steps per branch spaced
-   quadratically from each reversal so the short pre-sliding part is resolved. Each step is an
-   increment under the local Coulomb law of eq. 3: a point sticks (|q| < mu_f p and no change of
-   the relative displacement s = u - delta, eq. 1) or slips (|q| = mu_f p, s changes). With
-   ``coupling`` (default) the pressure is re-solved under the shear of dissimilar materials
-   (paper sec. 2, "included in an iterative manner"); without it the Goodman approximation holds.
-3. The last loop (the converged one, paper sec. 4) is analysed by
-   :func:`roughcontact.experiment.friction_loop.analyse_loop`: the stroke, mu from the sliding
-   plateaus, the energy dissipated, and the eq. 9 fit F_x = c1 (1 - (1 - c2 delta_x)^n) of the
-   branch along increasing displacement, with K_L = dF_x/d delta_x = c1 c2 n (1 - c2
-   delta_x)^(n - 1) at the points A, B, C (Fig. 10).
+2. The programme. Paper 001's (``stroke``): the displacement path of Fig. 6, delta_x: 0 -> d_s -> 0
+   repeated ``cycles`` times (default 4, as the paper), ``steps_per_stroke`` steps per branch
+   spaced quadratically from each reversal so the short pre-sliding part is resolved. Yours
+   (``path``): a CSV with one row per step, x and optionally y, and a unit in every column's
+   header (:func:`roughcontact.contact.paths.read_path_csv`); lengths (``x [um], y [um]``)
+   prescribe the rigid tangential displacement of the flat, forces (``Q_x [mN], Q_y [mN]``) the
+   tangential force, which must stay below mu_f F0 (gross sliding under force control is refused).
+   Each step is an increment under the local Coulomb law of eq. 3: a point sticks (|q| < mu_f p
+   and no change of the relative displacement s = u - delta, eq. 1) or slips (|q| = mu_f p, s
+   changes). With ``coupling`` (default) the pressure is re-solved under the shear of dissimilar
+   materials (paper sec. 2, "included in an iterative manner"); without it Goodman's approximation
+   holds. The file is read and checked when the study is validated, and its content is part of
+   each case's key (editing it reruns the cases on ``--resume``); it must be readable where the
+   case runs (a Dask worker on another machine needs the same path).
+3. The last loop (the converged one, paper sec. 4), where the x programme closes one that slides,
+   is analysed by :func:`roughcontact.experiment.friction_loop.analyse_loop`: the stroke, mu from
+   the sliding plateaus, the energy dissipated, and the eq. 9 fit F_x = c1 (1 - (1 - c2
+   delta_x)^n) of the branch along increasing displacement, with K_L = dF_x/d delta_x = c1 c2 n
+   (1 - c2 delta_x)^(n - 1) at the points A, B, C (Fig. 10). A loop that never slides, a force
+   programme and a pre-sliding part with fewer than the 4 steps the fit needs are not analysed:
+   those scalars are NaN and ``analysis_note`` says why.
 4. Mindlin's smooth-ball reference for a ball of ``radius`` (eqs. 10-12): a^3 = 3 F0 R / (4 E_s)
    with 1/E_s = sum (1 - nu^2)/E (eq. 11), and K_L = 8 a G (1 - F_x/(mu_f F0))^(1/3) (eq. 12)
-   at the same points, in two readings (:func:`roughcontact.analytic.mindlin.paper001_mindlin`):
+   at the same points, in two readings (:func:`roughcontact.models.paper001.paper001_mindlin`):
    ``johnson``, the textbook one, 1/G = 1/G* = sum (2 - nu)/G_i, to which eq. 12's prefactor 8
    belongs; ``printed``, the paper's 1/G_s = sum (2 - nu)(1 + nu)/(2E) = sum (2 - nu)/(4 G_i),
    which makes K_L exactly 4 times Johnson's (a known typo of the paper, kept to reproduce its
@@ -36,26 +46,18 @@ reached 0.25, 0.5 and 0.75 of the branch's pre-sliding force span (2 mu_f F0 for
 both ways), so Mindlin's K_L there is eq. 12 at F_x = f mu_f F0; the bodies are linear elastic (the
 paper argues the polymer balls stay elastic) without visco-elasticity (so the measured loops'
 curved corners are absent); static and kinetic friction coefficients are equal; the counter-face
-(paper: a silicon wafer) is smooth; ``counter`` absent means a rigid flat.
+(paper: a silicon wafer) is smooth; no ``counter_body`` means a rigid flat.
 
-Scalars (SI, plain names; :data:`UNITS` gives the units): the inputs (normal_force, stroke,
-friction_coefficient, radius), the contact (contact_area, patches, max_pressure), the last loop
-(stroke_from_loop, mu_from_loop, energy_last_loop, presliding_distance, eq9_c1, eq9_c2, eq9_n),
-K_L_A, K_L_B, K_L_C and their Mindlin values K_L_A_mindlin_johnson, ..., K_L_C_mindlin_printed,
-Mindlin's hertz_radius and sliding_distance_mindlin (2 delta_0, Johnson), and the numerics
-(window_size, pixel, steps, coupling).
-
-Dataset: the whole loop (``displacement`` and ``force`` at every step from the unloaded start, with
-the stick and slip areas), the normal-contact ``pressure`` map, and the normalised shear
-sqrt(q_x^2 + q_y^2)/(mu_f p) at points A, B, C of the last loop (``normalised_shear``, < 1 stick,
-1 slip, NaN outside the contact; paper Figs. 11-12) on the solved window's x/y coordinates
-(the maps in single precision, to keep the files small). The maps are those of the computed step
-nearest to each point (``point_step``); with few steps in the pre-sliding part two points can
-share a step, which the ``stick_slip`` titles show by the displacement from the reversal.
+Scalars: :meth:`roughcontact.models.paper001.PreslidingResult.scalars` (units in its ``UNITS``).
+Dataset: :meth:`~roughcontact.models.paper001.PreslidingResult.to_xarray` (every step from the
+unloaded start, the pressure map, the normalised shear sqrt(q_x^2 + q_y^2)/(mu_f p) at the points
+A, B, C of the last loop, or at the last reversals and step of your programme, in single
+precision). With few steps in the pre-sliding part two points can share a step, which the
+``stick_slip`` titles show by the displacement from the reversal.
 
 Figures: ``loops`` (every case's hysteresis loops, one panel per sample, with the measured loop of
-``[analysis.compare]``; Figs. 13-14), ``stick_slip`` (stick/slip maps at A, B, C for up to three
-cases, zoomed to the contact; Figs. 11-12), ``lateral_stiffness`` (K_L at A, B, C against F0 with
+``[analysis.compare]``; Figs. 13-14), ``stick_slip`` (stick/slip maps of up to three cases,
+zoomed to the contact; Figs. 11-12), ``lateral_stiffness`` (K_L at A, B, C against F0 with
 both Mindlin readings, one panel per sample; Fig. 15). Tables: ``lateral_stiffness`` (per case
 K_L simulated against Mindlin, with their ratios) and, with ``[analysis.compare]``,
 ``measured_loop`` (stroke, mu and K_L at A, B, C of the measured loop beside the simulated cases at
@@ -73,22 +75,19 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Annotated
 
 import numpy as np
-from pydantic import Field, field_validator
+from pydantic import Field, field_validator, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...errors import InputError
+from ...models.paper001 import MINDLIN_READINGS as READINGS
+from ...models.paper001 import POINT_NAMES as POINTS
+from ...models.paper001 import PreslidingResult
 from ..kind import CaseOutput, CaseParameters, Kind
 from ..schema import Force, Length, MaterialName, Strict, TopographyName
 from .common import evenly_chosen, grouped
-
-POINTS = ("A", "B", "C")
-"""The loop points of paper 001 Fig. 10 at which K_L is evaluated."""
-
-READINGS = ("johnson", "printed")
-"""The two readings of Mindlin's K_L (eqs. 10-12): textbook (Johnson) and as printed (4x)."""
 
 _Positive = Field(gt=0.0, allow_inf_nan=False)
 
@@ -98,42 +97,66 @@ class PreslidingParameters(CaseParameters):
 
     Attributes
     ----------
-    surface : str
+    topography : str
         The ball: a topography with its spherical shape (paper Fig. 4), e.g. a generated
         ``sphere_with_roughness``.
     window : int or None
         Solve only the central ``window`` x ``window`` pixels (free boundary); None solves the
         whole surface.
-    material, counter : str
+    material, counter_body : str
         The ball's material and the flat's (None: a rigid flat).
     normal_force : float
         F0 [N] (paper Table 1: 25, 50, 75 mN).
-    stroke : float
-        d_s [m], the range of the displacement path (Table 1).
     friction_coefficient : float
         mu_f of the local Coulomb law (Table 1), > 0.
     radius : float
         Ball radius R for Mindlin's reference [m] (default 5 mm: the paper's 10 mm balls).
+    stroke : float
+        d_s [m], the range of paper 001's displacement path (Table 1); or give ``path``.
     cycles, steps_per_stroke : int
         Cycles of the Fig. 6 path (default 4) and steps per branch (default 20).
+    path : Path
+        Your programme instead of paper 001's: a CSV relative to the study file, one row per step,
+        ``x [um]`` (and ``y [um]``) for displacement control or ``Q_x [mN]`` (and ``Q_y [mN]``)
+        for force control.
+    maps : int
+        With ``path``: steps whose shear maps are stored, the last ``maps - 1`` reversals and the
+        last step.
     coupling : bool
         Normal-tangential coupling of dissimilar materials (default True, as the paper).
     tolerance : float
         Relative tolerance of the normal and tangential solvers.
     """
 
-    surface: TopographyName
+    topography: TopographyName
     window: Annotated[int, Field(ge=3)] | None = None
     material: MaterialName
-    counter: MaterialName | None = None
+    counter_body: MaterialName | None = None
     normal_force: Annotated[Force, _Positive]
-    stroke: Annotated[Length, _Positive]
     friction_coefficient: Annotated[float, _Positive]
     radius: Annotated[Length, _Positive] = 5e-3
+    stroke: Annotated[Length, _Positive] | None = None
     cycles: Annotated[int, Field(ge=1)] = 4
     steps_per_stroke: Annotated[int, Field(ge=4)] = 20
+    path: Path | None = None
+    maps: Annotated[int, Field(ge=1, le=12)] = 4
     coupling: bool = True
     tolerance: float = Field(default=1e-8, gt=0.0, lt=1.0)
+
+    @model_validator(mode="after")
+    def _one_programme(self) -> PreslidingParameters:
+        if (self.stroke is None) == (self.path is None):
+            given = "both" if self.stroke is not None else "neither"
+            raise PydanticCustomError(
+                "quantity",
+                "give the stroke of paper 001's programme or your own path, exactly one (found {given})",
+                {
+                    "given": given,
+                    "fix": "e.g. stroke = '2.8 um', or path = 'programme.csv'",
+                    "field": "stroke",
+                },
+            )
+        return self
 
 
 class PreslidingCompare(Strict):
@@ -181,116 +204,46 @@ class PreslidingCompare(Strict):
         return value
 
 
-def _dataset(case, surface):
-    """Return the loop, the pressure and the normalised shear maps at A, B, C on the window's x/y."""
-    import xarray as xr
+def check(parameters: PreslidingParameters) -> None:
+    """Read a programme file at validation time (its errors name the file, row or column)."""
+    if parameters.path is not None:
+        from ...contact.paths import read_path_csv
 
-    result, analysis = case.result, case.analysis
-    displacement, force = case.loop()
-    contact = result.normal.contact_area
-    names = tuple(case.point_steps)
-    maps = np.stack([result.states[case.point_steps[p]].normalised_shear for p in names])
-    x, y = surface.coordinates()
-    return xr.Dataset(
-        {
-            "displacement": ("step", displacement, {"units": "m", "long_name": "tangential displacement"}),
-            "force": ("step", force, {"units": "N", "long_name": "friction force F_x"}),
-            "stick_area": ("step", np.concatenate([[contact], result.stick_area]), {"units": "m^2"}),
-            "slip_area": ("step", np.concatenate([[0.0], result.slip_area]), {"units": "m^2"}),
-            "pressure": (("x", "y"), result.normal.pressure.astype(np.float32), {"units": "Pa"}),
-            "normalised_shear": (
-                ("point", "x", "y"),
-                maps.astype(np.float32),
-                {"units": "1", "long_name": "sqrt(q_x^2 + q_y^2) / (mu p)"},
-            ),
-            "point_step": ("point", np.array([case.point_steps[p] + 1 for p in names], dtype=np.int32)),
-            "point_displacement": ("point", np.asarray(analysis.branch.point_displacement), {"units": "m"}),
-            "point_force": ("point", np.asarray(analysis.branch.point_force), {"units": "N"}),
-        },
-        coords={
-            "step": ("step", np.arange(displacement.size)),
-            "x": ("x", x, {"units": "m"}),
-            "y": ("y", y, {"units": "m"}),
-            "point": ("point", list(names)),
-        },
-        attrs={
-            "last_loop_start": int(analysis.loop.start),
-            "last_loop_stop": int(analysis.loop.stop),
-            "reversal_displacement": float(analysis.branch.reversal_displacement),
-        },
-    )
+        read_path_csv(parameters.path)
 
 
 def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
-    """Run paper 001's programme on one ball at one load; scalars as listed in the module docstring."""
-    from ...analytic.mindlin import paper001_mindlin
-    from ...models.paper001 import central_window, presliding_case
+    """Run the programme on one ball at one load; scalars and dataset of :class:`PreslidingResult`."""
+    from ...models.paper001 import central_window, presliding
 
-    surface = inputs.topography(parameters.surface)
+    surface = inputs.topography(parameters.topography)
     if parameters.window is not None:
         surface = central_window(surface, parameters.window)
-    material = inputs.material(parameters.material)
-    counter = inputs.material(parameters.counter)
-    ball = parameters.sample or parameters.surface
-    case = presliding_case(
+    if parameters.path is not None:
+        from ...contact.paths import read_path_csv
+
+        path, control = read_path_csv(parameters.path)
+        programme = {"path": path, "control": control, "maps": parameters.maps}
+    else:
+        programme = {
+            "stroke": parameters.stroke,
+            "cycles": parameters.cycles,
+            "steps_per_stroke": parameters.steps_per_stroke,
+        }
+    ball = parameters.sample or parameters.topography
+    result = presliding(
         surface,
-        material,
-        counter,
-        parameters.normal_force,
-        stroke=parameters.stroke,
+        inputs.material(parameters.material),
+        inputs.material(parameters.counter_body),
+        normal_force=parameters.normal_force,
         friction_coefficient=parameters.friction_coefficient,
         radius=parameters.radius,
-        label=f"{ball} at {parameters.normal_force * 1e3:g} mN",
-        ball=ball,
-        cycles=parameters.cycles,
-        steps_per_stroke=parameters.steps_per_stroke,
         coupling=parameters.coupling,
         tolerance=parameters.tolerance,
+        label=f"{ball} at {parameters.normal_force * 1e3:g} mN",
+        **programme,
     )
-    reference = paper001_mindlin(
-        mu=parameters.friction_coefficient,
-        normal_force=parameters.normal_force,
-        radius=parameters.radius,
-        material=material,
-        counter=counter,
-    )
-    scalars = _scalars(case, reference, parameters.radius)
-    return CaseOutput(scalars, _dataset(case, surface))
-
-
-def _scalars(case, reference, radius: float) -> dict[str, Any]:
-    """Return the scalars under plain names (:meth:`PreslidingCase.scalars` has units in its keys)."""
-    row = case.scalars()
-    branch = case.analysis.branch
-    scalars: dict[str, Any] = {
-        "normal_force": row["F0 [N]"],
-        "stroke": row["stroke [m]"],
-        "friction_coefficient": row["mu"],
-        "radius": radius,
-        "contact_area": row["contact_area [m^2]"],
-        "patches": row["patches"],
-        "max_pressure": float(np.max(case.result.normal.pressure)),
-        "stroke_from_loop": case.analysis.stroke,
-        "mu_from_loop": row["mu_from_loop"],
-        "energy_last_loop": row["energy_last_loop [J]"],
-        "presliding_distance": branch.sliding_distance,
-        "eq9_c1": branch.c1,
-        "eq9_c2": branch.c2,
-        "eq9_n": branch.n,
-    }
-    for point in POINTS:
-        scalars[f"K_L_{point}"] = row[f"K_L_{point} [N/m]"]
-    for reading in READINGS:
-        for point in POINTS:
-            scalars[f"K_L_{point}_mindlin_{reading}"] = row[f"K_L_{point}_mindlin_{reading} [N/m]"]
-    return scalars | {
-        "hertz_radius": reference.contact_radius,
-        "sliding_distance_mindlin": 2.0 * reference.sliding_distance,
-        "window_size": row["note_window [m]"],
-        "pixel": row["note_pixel [m]"],
-        "steps": row["note_steps"],
-        "coupling": row["note_coupling"],
-    }
+    return CaseOutput(result.scalars(), result.to_xarray())
 
 
 # --- figures and tables (from stored records only) -----------------------------------------------
@@ -342,7 +295,9 @@ def _loops(records, context):
             data = record.dataset()
             force, mu = _number(record, "normal_force"), _number(record, "friction_coefficient")
             label = f"{force * 1e3:g} mN, μ {mu:g}"
-            curves.append((np.asarray(data["displacement"]), np.asarray(data["force"]), label))
+            if data.attrs.get("control") == "force":
+                label += ", force control"
+            curves.append((np.asarray(data["delta_x"]), np.asarray(data["force_x"]), label))
         overlay = []
         if measured is not None and _compares_with(context.compare, sample):
             loop, analysis = measured
@@ -360,22 +315,26 @@ def _loops(records, context):
 
 
 def _stick_slip(records, context):
-    """Normalised shear maps at A, B, C of the last loop for up to three cases (Figs. 11-12)."""
+    """Normalised shear maps of up to three cases: A, B, C of the last loop, or kept steps (Figs. 11-12)."""
     chosen = evenly_chosen([r for r in records if r.fields_path is not None], 3)
     if not chosen:
         return None
     panels = []
     for record in chosen:
         data = record.dataset()
-        name = f"{record.parameters.get('sample') or record.parameters['surface']} "
+        name = f"{record.parameters.get('sample') or record.parameters['topography']} "
         name += f"{_number(record, 'normal_force') * 1e3:g} mN"
-        reversal = float(data.attrs.get("reversal_displacement", 0.0))
-        for point in np.asarray(data["point"]).astype(str):
-            step = int(data["point_step"].sel(point=point))
-            moved = abs(float(data["displacement"][step]) - reversal)
-            values = data["normalised_shear"].sel(point=point)
-            panels.append((f"{name}, {point} (Δδ {moved * 1e6:.2g} µm)", values, data["x"], data["y"]))
-    return shear_maps(panels, columns=len(POINTS))
+        reversal = data.attrs.get("reversal_displacement")
+        for index, label in enumerate(np.asarray(data["map"]).astype(str)):
+            delta = float(data["delta_x"][int(data["map_step"][index])])
+            if label in POINTS and reversal is not None:
+                shown = f"{label} (Δδ {abs(delta - float(reversal)) * 1e6:.2g} µm)"
+            else:
+                shown = f"{label} (δx {delta * 1e6:.3g} µm)"
+            values = data["normalised_shear"].isel(map=index)
+            panels.append((f"{name}, {shown}", values, data["x"], data["y"]))
+    columns = max(len(panels) // len(chosen), 1)
+    return shear_maps(panels, columns=columns)
 
 
 def shear_maps(panels, columns: int):
@@ -413,7 +372,9 @@ def _mindlin_curves(group, loads: np.ndarray) -> dict[str, dict[str, np.ndarray]
     at a fixed fraction f of mu_f F0 (the points A, B, C) gives K_L = 8 a G (1 - f)^(1/3),
     independent of mu_f: so K_L(F0) = K_L(F0_case) (F0 / F0_case)^(1/3), drawn as a smooth curve.
     """
-    keys = {(r.parameters["material"], r.parameters.get("counter"), r.parameters["radius"]) for r in group}
+    keys = {
+        (r.parameters["material"], r.parameters.get("counter_body"), r.parameters["radius"]) for r in group
+    }
     if len(keys) != 1:
         return None
     first = group[0]
@@ -535,33 +496,25 @@ def _measured_loop_table(records, context):
     return rows
 
 
-UNITS = {
-    "normal_force": "N",
-    "stroke": "m",
-    "radius": "m",
-    "contact_area": "m^2",
-    "max_pressure": "Pa",
-    "stroke_from_loop": "m",
-    "energy_last_loop": "J",
-    "presliding_distance": "m",
-    "eq9_c1": "N",
-    "eq9_c2": "1/m",
-    **{f"K_L_{p}": "N/m" for p in POINTS},
-    **{f"K_L_{p}_mindlin_{r}": "N/m" for r in READINGS for p in POINTS},
-    "hertz_radius": "m",
-    "sliding_distance_mindlin": "m",
-    "window_size": "m",
-    "pixel": "m",
-}
-"""Scalar name -> SI unit (the results table's column headers)."""
-
 KIND = Kind(
     name="presliding",
-    summary="rough ball on a flat: partial-slip loops (Fig. 6 path), last-loop K_L at A, B, C vs Mindlin",
+    summary="rough ball on a flat: partial-slip loops under paper 001's programme (Fig. 6) or yours (CSV), "
+    "last-loop K_L at A, B, C vs Mindlin",
     parameters=PreslidingParameters,
     run=run,
-    units=UNITS,
+    units=PreslidingResult.UNITS,
     figures={"loops": _loops, "stick_slip": _stick_slip, "lateral_stiffness": _lateral_stiffness},
     tables={"lateral_stiffness": _lateral_stiffness_table, "measured_loop": _measured_loop_table},
     compare=PreslidingCompare,
+    check=check,
+    headline=(
+        "contact_area",
+        "last_stick_fraction",
+        "mu_from_loop",
+        "stroke_from_loop",
+        "K_L_A",
+        "K_L_B",
+        "K_L_C",
+    ),
+    renamed={"surface": "topography", "counter": "counter_body"},
 )

@@ -20,7 +20,7 @@ from .common import evenly_chosen, grid
 class StatisticsParameters(CaseParameters):
     """Keys of a ``model = "statistics"`` analysis."""
 
-    surface: TopographyName
+    topography: TopographyName
     """The topography to describe."""
 
 
@@ -30,7 +30,7 @@ def run(parameters: StatisticsParameters, inputs) -> CaseOutput:
 
     from ...topography.statistics import psd_1d, psd_radial, summary
 
-    surface = inputs.topography(parameters.surface)
+    surface = inputs.topography(parameters.topography)
     scalars = {
         "points_x": surface.shape[0],
         "points_y": surface.shape[1] if surface.dim == 2 else 1,
@@ -104,4 +104,6 @@ KIND = Kind(
         "summit_height_std": "m",
     },
     figures={"heights": _heights, "psd": _psd},
+    headline=("Rq", "Ra", "rms_slope", "summit_radius"),
+    renamed={"surface": "topography"},
 )

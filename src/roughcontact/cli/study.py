@@ -1,4 +1,4 @@
-"""The ``run``, ``validate`` and ``report`` subcommands, and the study side of ``plot`` and ``demo``.
+"""The study commands: ``run``, ``validate``, ``report``, ``models``, ``demo``, and ``plot OUT/``.
 
 ``roughcontact run STUDY.toml -o OUT/ [--workers N | --scheduler ADDR] [--resume]`` validates the
 whole study first (every problem reported at once, nothing computed), then runs the cases and
@@ -11,10 +11,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from .errors import InputError
-
-EXIT_INTERRUPTED = 130
-EXIT_CASES_FAILED = 4
+from ..errors import InputError
+from .options import EXIT_CASES_FAILED, EXIT_INTERRUPTED
 
 
 def _describe(study) -> list[str]:
@@ -27,10 +25,16 @@ def _describe(study) -> list[str]:
     return lines
 
 
+def _notes(study) -> None:
+    for note in study.notes:
+        print(f"roughcontact: note: {note}", file=sys.stderr)
+
+
 def _validate(args: argparse.Namespace) -> int:
-    from .study import load_study
+    from ..study import load_study
 
     study = load_study(args.study)
+    _notes(study)
     print("\n".join(_describe(study)))
     print("valid: nothing was computed")
     return 0
@@ -38,7 +42,7 @@ def _validate(args: argparse.Namespace) -> int:
 
 def finish(folder: Path, summary) -> int:
     """Write figures and the report after a run and print what happened; return the exit status."""
-    from .study.report import write_report
+    from ..study.report import write_report
 
     report = write_report(folder)
     print(
@@ -53,7 +57,7 @@ def finish(folder: Path, summary) -> int:
 
 def run_and_report(study, output: Path, *, progress: bool, **options) -> int:
     """Run ``study`` into ``output`` and finish with the report; Ctrl-C keeps what finished."""
-    from .study import run_study
+    from ..study import run_study
 
     try:
         summary = run_study(study, output, progress=progress, **options)
@@ -79,11 +83,12 @@ def _quiet_dask(verbose: int) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from .study import load_study
+    from ..study import load_study
 
     if args.workers is not None or args.scheduler is not None:
         _quiet_dask(args.verbose)
     study = load_study(args.study)
+    _notes(study)
     print("\n".join(_describe(study)))
     return run_and_report(
         study,
@@ -124,7 +129,7 @@ def describe_kind(kind) -> list[str]:
     """Lines describing a study model: its keys (type, default), figures, tables and comparison keys."""
     from pydantic_core import PydanticUndefined
 
-    from .study.schema import unit_of
+    from ..study.schema import unit_of
 
     lines = [f"{kind.name}: {kind.summary}", "  keys:"]
     notes = _attribute_notes(kind.parameters)
@@ -147,7 +152,7 @@ def describe_kind(kind) -> list[str]:
 
 
 def _models(args: argparse.Namespace) -> int:
-    from .study.kinds import get_kind, kind_names
+    from ..study.kinds import get_kind, kind_names
 
     names = kind_names() if args.name is None else [args.name]
     if args.name is not None and args.name not in kind_names():
@@ -162,7 +167,7 @@ def _models(args: argparse.Namespace) -> int:
 
 
 def _report(args: argparse.Namespace) -> int:
-    from .study.report import write_report
+    from ..study.report import write_report
 
     print(f"wrote {write_report(args.folder)}")
     return 0
@@ -170,7 +175,7 @@ def _report(args: argparse.Namespace) -> int:
 
 def plot_study(folder: Path) -> int:
     """Re-draw the figures and tables of a study's output folder from its stored records."""
-    from .study.outputs import draw_figures, write_tables
+    from ..study.outputs import draw_figures, write_tables
 
     tables, table_problems = write_tables(folder)
     figures, problems = draw_figures(folder)
@@ -192,8 +197,17 @@ def demo_study() -> Path:
     return path
 
 
-def add_study_commands(commands) -> None:
-    """Add ``run``, ``validate`` and ``report`` to the subparsers ``commands`` of the CLI."""
+def _demo(args: argparse.Namespace) -> int:
+    from ..study import load_study
+
+    path = demo_study()
+    study = load_study(path)
+    print(f"demo study {study.name!r}: {len(study.cases)} cases ({path})")
+    return run_and_report(study, args.output, progress=sys.stderr.isatty(), resume=True)
+
+
+def add_commands(commands) -> None:
+    """Add ``run``, ``validate``, ``report``, ``models`` and ``demo`` to the subparsers ``commands``."""
     run = commands.add_parser(
         "run",
         help="run a study file (TOML): every case, the results table, figures and an HTML report",
@@ -230,3 +244,9 @@ def add_study_commands(commands) -> None:
     )
     report.add_argument("folder", type=Path, help="the output folder of 'roughcontact run'")
     report.set_defaults(handler=_report)
+
+    demo = commands.add_parser(
+        "demo", help="run the embedded demo study (examples/demo.toml) and write its report"
+    )
+    demo.add_argument("-o", "--output", type=Path, default=Path("demo-output"), help="output folder")
+    demo.set_defaults(handler=_demo)

@@ -17,12 +17,13 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
+from .._deprecation import renamed
+from ..experiment.compare import simulate_mu
 from ..friction.readings import Readings
 from ..materials import get_material
 from ..topography import Topography
 from ..topography.generate import self_affine, sphere_with_roughness
 from ..topography.process import scale_to_ra
-from .compare import simulate_mu
 
 PAPER000_SAMPLES: Mapping[str, float] = {"Ra 1.45 nm": 1.45e-9, "Ra 1.49 nm": 1.49e-9, "Ra 1.7 nm": 1.7e-9}
 """Sample name -> Ra [m] of the three polysilicon samples of paper 000."""
@@ -101,9 +102,10 @@ def paper000_scans(roughness: float, *, count: int = 7, shape: int = 256, seed: 
     return scans
 
 
+@renamed(load="normal_force")
 def paper000_simulation(
     *,
-    load: float = 10e-6,
+    normal_force: float = 10e-6,
     surface_energy: float = 0.05,
     readings: Readings | None = None,
     scans: Mapping[str, Sequence[Topography]] | None = None,
@@ -116,7 +118,7 @@ def paper000_simulation(
 
     Parameters
     ----------
-    load : float
+    normal_force : float
         Normal load [N] (paper: 10 uN).
     surface_energy : float
         Polysilicon surface energy [J/m^2] (a stated assumption, see the module).
@@ -145,7 +147,7 @@ def paper000_simulation(
         scans,
         get_material("polysilicon"),
         get_material("SiO2"),
-        load=load,
-        counter_surface=tip,
+        normal_force=normal_force,
+        counter_topography=tip,
         **paper000_model_options(surface_energy=surface_energy, readings=readings),
     )

@@ -1,0 +1,53 @@
+"""Names of release 0.1 that moved or were renamed: kept one release, with a DeprecationWarning.
+
+:func:`moved` serves a module's ``__getattr__`` (a name now defined elsewhere); :func:`renamed`
+wraps a function whose keyword arguments were respelled (``counter=`` is now ``counter_body=``).
+"""
+
+from __future__ import annotations
+
+import functools
+import warnings
+from collections.abc import Callable, Mapping
+from importlib import import_module
+from typing import Any
+
+
+def moved(module: str, name: str, homes: Mapping[str, str]) -> Any:
+    """Return ``name`` from its new module (``homes[name]``) with a warning; AttributeError otherwise.
+
+    Use as ``def __getattr__(name): return moved(__name__, name, {"old": "roughcontact.new"})``.
+    """
+    if name not in homes:
+        raise AttributeError(f"module {module!r} has no attribute {name!r}")
+    warnings.warn(
+        f"{module}.{name} has moved to {homes[name]}.{name}; import it from there "
+        "(the old place goes in the next release).",
+        DeprecationWarning,
+        stacklevel=3,
+    )
+    return getattr(import_module(homes[name]), name)
+
+
+def renamed(**spellings: str) -> Callable:
+    """Decorate a function so that each old keyword (``counter="counter_body"``) works, with a warning."""
+
+    def decorate(function: Callable) -> Callable:
+        @functools.wraps(function)
+        def wrapper(*args, **kwargs):
+            for old, new in spellings.items():
+                if old in kwargs:
+                    if new in kwargs:
+                        raise TypeError(f"{function.__name__}() got both {old!r} and its new name {new!r}")
+                    warnings.warn(
+                        f"{function.__name__}({old}=...) is now spelled {new}=...; the old spelling goes "
+                        "in the next release.",
+                        DeprecationWarning,
+                        stacklevel=2,
+                    )
+                    kwargs[new] = kwargs.pop(old)
+            return function(*args, **kwargs)
+
+        return wrapper
+
+    return decorate

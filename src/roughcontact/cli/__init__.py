@@ -1,0 +1,66 @@
+"""Command line: ``roughcontact inspect | plot | contact | friction | asperity | presliding | run | ...``.
+
+One module per command group: :mod:`.topography` (``inspect``, ``plot``), :mod:`.study` (``run``,
+``validate``, ``report``, ``models``, ``demo``), :mod:`.contact`, :mod:`.friction`,
+:mod:`.asperity`, :mod:`.presliding` (``presliding``, ``loop-analysis``) and :mod:`.indentation`
+(``nanoindent``). What they share is public in :mod:`.options` (options, a command as a study)
+and :mod:`.output` (running it and showing its results).
+
+The edges of the program live here: unit strings from the user are converted once (through
+:mod:`roughcontact.units`, inside the study schemas), errors become one readable line naming the
+option and an exit status, and logging is configured (only here).
+"""
+
+from __future__ import annotations
+
+import argparse
+import logging
+import sys
+from collections.abc import Sequence
+
+from .. import __version__
+from ..errors import ConvergenceError, InputError
+from . import asperity, contact, friction, indentation, presliding, study, topography
+from .options import EXIT_CASES_FAILED, EXIT_INPUT_ERROR, EXIT_INTERRUPTED, EXIT_NOT_CONVERGED
+
+__all__ = [
+    "EXIT_CASES_FAILED",
+    "EXIT_INPUT_ERROR",
+    "EXIT_INTERRUPTED",
+    "EXIT_NOT_CONVERGED",
+    "build_parser",
+    "main",
+]
+
+GROUPS = (topography, contact, friction, asperity, presliding, indentation, study)
+"""The command groups, in the order ``roughcontact --help`` lists them."""
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """Return the argument parser of the ``roughcontact`` command."""
+    parser = argparse.ArgumentParser(
+        prog="roughcontact",
+        description="Contact mechanics of rough surfaces from measured topographies.",
+    )
+    parser.add_argument("--version", action="version", version=f"roughcontact {__version__}")
+    parser.add_argument("-v", "--verbose", action="count", default=0, help="more log output (-vv for debug)")
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    for group in GROUPS:
+        group.add_commands(commands)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the ``roughcontact`` command; return its exit status."""
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    level = (logging.WARNING, logging.INFO, logging.DEBUG)[min(args.verbose, 2)]
+    logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")
+    try:
+        return args.handler(args)
+    except InputError as error:
+        print(f"roughcontact: error: {error}", file=sys.stderr)
+        return EXIT_INPUT_ERROR
+    except ConvergenceError as error:
+        print(f"roughcontact: error: {error}", file=sys.stderr)
+        return EXIT_NOT_CONVERGED

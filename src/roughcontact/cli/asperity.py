@@ -1,0 +1,156 @@
+"""The ``asperity`` command: asperity parameters, the statistical KKE load-unload, paper 002's island.
+
+A view of the study models ``asperity`` (:mod:`roughcontact.study.kinds.asperity`) and, with
+``--bem``, ``load_unload`` (:mod:`roughcontact.study.kinds.load_unload`). ``--paper002`` fills in
+the paper's printed moments, materials and loads (:mod:`roughcontact.models.paper002`) and adds
+the table of section IV (printed values against ours, in both readings of eq. 7).
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from ..errors import InputError
+from ..models import paper002
+from .options import CommandStudy, add_material_options, add_output_options, file_options
+from .output import run_command
+
+
+def _surface(command: CommandStudy, args: argparse.Namespace) -> dict:
+    """Return the keys that say which surface: a FILE, --moments, or paper 002's printed moments."""
+    if args.file is not None and args.moments is not None:
+        raise InputError("--moments", "both a FILE and --moments were given.", "give one of them.")
+    if args.file is not None:
+        return {"topography": (command.topography_file("surface", args), "FILE")}
+    if args.moments is not None:
+        return {
+            name: (value, f"--moments {name}")
+            for name, value in zip(("m0", "m2", "m4"), args.moments, strict=True)
+        }
+    if args.paper002:
+        moments = paper002.MOMENTS
+        return {
+            "m0": (f"{moments['m0'] * 1e12:.9g} um^2", "--paper002"),
+            "m2": (moments["m2"], "--paper002"),
+            "m4": (f"{moments['m4'] * 1e-12:.9g} 1/um^2", "--paper002"),
+        }
+    raise InputError("FILE", "no surface given.", "pass a topography FILE, --moments M0 M2 M4 or --paper002.")
+
+
+def _asperity(args: argparse.Namespace) -> int:
+    paper = args.paper002
+    command = CommandStudy("roughcontact asperity", "asperity parameters and the statistical load-unload")
+    surface = _surface(command, args)
+    material = command.material("material", args, required=not paper) or "SU-8"
+    counter = command.material("counter_body", args) or ("diamond flat tip" if paper else None)
+    max_force = args.max_force or (f"{paper002.PEAK_FORCE * 1e6:g} uN" if paper else None)
+    reference = args.reference_force or (f"{paper002.REFERENCE_FORCE * 1e6:g} uN" if paper else None)
+    area = args.area or (
+        f"{paper002.ISLAND_SIDE * 1e6:g} um x {paper002.ISLAND_SIDE * 1e6:g} um" if paper else None
+    )
+    index = command.analysis(
+        "asperity",
+        "asperity",
+        surface
+        | {
+            "material": (material, "--material"),
+            "counter_body": (counter, "--counter-body"),
+            "hardness": (args.hardness, "--hardness"),
+            "yield_strength": (args.yield_strength, "--yield-strength"),
+            "modulus_form": (args.modulus_form, "--modulus-form"),
+            "max_force": (max_force, "--max-force"),
+            "nominal_area": (area if max_force is not None else None, "--area"),
+            "reference_force": (reference if max_force is not None else None, "--reference-force"),
+            "law": (args.law, "--law"),
+            "distribution": (args.distribution, "--distribution"),
+            "steps": (args.steps, "--steps"),
+            "paper002": (paper or None, "--paper002"),
+        },
+    )
+    if args.bem:
+        index = _island(command, args, material, max_force, reference)
+    if args.measured is not None:
+        command.compare(index, {"measured_curve": (str(args.measured.resolve()), "--measured")})
+    return run_command(command, args)
+
+
+def _island(command: CommandStudy, args: argparse.Namespace, material, max_force, reference) -> int:
+    """Add the BEM compression of the island (FILE, or paper 002's synthetic one): model ``load_unload``."""
+    if args.file is not None:
+        topography = "surface"
+    elif args.paper002:
+        topography = command.topography(
+            "island", {"generate": "paper002_island", "shape": args.grid}, "--grid"
+        )
+    else:
+        raise InputError("--bem", "needs a topography FILE or --paper002.", "add one, or leave out --bem.")
+    if max_force is None:
+        raise InputError("--bem", "needs --max-force (and --reference-force).", "add them (or --paper002).")
+    substrate = args.substrate or ("silicon wafer" if args.paper002 else None)
+    return command.analysis(
+        "bem",
+        "load_unload",
+        {
+            "topography": (topography, "FILE"),
+            "material": (material, "--material"),
+            "substrate": (substrate, "--substrate"),
+            "film_thickness": (args.film_thickness if substrate else None, "--film-thickness"),
+            "peak_force": (max_force, "--max-force"),
+            "reference_force": (reference, "--reference-force"),
+            "hardness": (args.hardness, "--hardness"),
+        },
+    )
+
+
+def add_commands(commands) -> None:
+    """Add ``asperity`` to the subparsers ``commands``."""
+    from ..asperity import LOADING_LAWS
+
+    asperity = commands.add_parser(
+        "asperity",
+        parents=[file_options(required=False)],
+        help="statistical elastic-plastic asperity model (GW/McCool, CEB, Kogut-Etsion, KKE) and paper 002",
+        description="Asperity parameters (R_asp, sigma_s, E', K, omega_c, psi) from a topography FILE or "
+        "--moments, the statistical load-unload curve with --max-force and --area (study model "
+        "'asperity'), and the BEM island compression with --bem (model 'load_unload'). --paper002 fills in "
+        "the paper's moments, materials and loads and adds its section IV table (paper vs ours).",
+    )
+    asperity.add_argument(
+        "--moments", nargs=3, metavar=("M0", "M2", "M4"), help="e.g. '0.00213 um^2' 0.0023 '0.0171 1/um^2'"
+    )
+    asperity.add_argument(
+        "--paper002", action="store_true", help="seed paper 002's moments, materials, loads"
+    )
+    add_material_options(asperity, "material", "the rough body", "SU-8")
+    add_material_options(asperity, "counter_body", "the flat (default: rigid)", "'diamond flat tip'")
+    asperity.add_argument(
+        "--hardness", help="hardness of the rough body, e.g. '0.462 GPa' (default: material's)"
+    )
+    asperity.add_argument("--yield-strength", help="yield strength for --law jackson_green, e.g. '0.165 GPa'")
+    asperity.add_argument(
+        "--modulus-form", choices=("standard", "paper002_eq7_printed"), default="standard", help="E' of eq. 7"
+    )
+    asperity.add_argument(
+        "--law", choices=LOADING_LAWS, default="kogut_etsion", help="single-asperity loading"
+    )
+    asperity.add_argument("--distribution", choices=("gaussian", "measured"), default="gaussian")
+    asperity.add_argument("--max-force", help="peak load, e.g. '1000 uN'")
+    asperity.add_argument("--area", help="nominal area, e.g. '25 um x 25 um' or '625 um^2'")
+    asperity.add_argument(
+        "--reference-force",
+        help="load of zero interference, e.g. '25 uN' (default: interference = minus the separation "
+        "from the summits' mean plane)",
+    )
+    asperity.add_argument("--steps", type=int, default=40, help="points per branch of the statistical curve")
+    asperity.add_argument("--bem", action="store_true", help="also run the BEM island compression")
+    asperity.add_argument("--grid", type=int, default=128, help="grid of paper 002's synthetic island")
+    asperity.add_argument("--substrate", help="substrate of the film for --bem (paper 002: silicon wafer)")
+    asperity.add_argument(
+        "--film-thickness", default="6.3 um", help="film thickness for --bem with --substrate"
+    )
+    asperity.add_argument(
+        "--measured", type=Path, help="CSV of a measured load-interference curve: interference_m,force_N"
+    )
+    add_output_options(asperity)
+    asperity.set_defaults(handler=_asperity)

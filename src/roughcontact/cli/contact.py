@@ -1,0 +1,55 @@
+"""The ``contact`` command: normal contact of a file's surface against a flat (study model ``normal``)."""
+
+from __future__ import annotations
+
+import argparse
+
+from .options import CommandStudy, add_material_options, add_output_options, file_options
+from .output import run_command
+
+
+def _contact(args: argparse.Namespace) -> int:
+    command = CommandStudy("roughcontact contact", f"normal contact of {args.file.name} against a flat")
+    topography = command.topography_file("surface", args)
+    command.analysis(
+        "contact",
+        "normal",
+        {
+            "topography": (topography, "FILE"),
+            "material": (command.material("material", args, required=True), "--material"),
+            "counter_body": (command.material("counter_body", args), "--counter-body"),
+            "mean_pressure": (args.pressure, "--pressure"),
+            "force": (args.force, "--force"),
+            "approach": (args.approach, "--approach"),
+            "hardness": (args.hardness, "--hardness"),
+            "boundary": (args.boundary, "--boundary"),
+            "tolerance": (args.tolerance, "--tolerance"),
+            "stress_depths": (args.stress_depths, "--stress-depths"),
+        },
+    )
+    return run_command(command, args)
+
+
+def add_commands(commands) -> None:
+    """Add ``contact`` to the subparsers ``commands``."""
+    contact = commands.add_parser(
+        "contact",
+        parents=[file_options()],
+        help="solve the normal contact of a file's surface against a flat",
+        description="Elastic (or elastic-perfectly-plastic with --hardness) normal contact of the surface "
+        "against a flat (study model 'normal'). Give exactly one of --pressure, --force, --approach, with "
+        "units. -o writes the case, its figures and a report.",
+    )
+    add_material_options(contact, "material", "the surface's body", "SU-8, polysilicon, SiO2")
+    add_material_options(contact, "counter_body", "the flat (default: rigid)", "SiO2")
+    contact.add_argument("--pressure", help="nominal mean pressure, e.g. '20 MPa'")
+    contact.add_argument("--force", help="total force, e.g. '10 uN'")
+    contact.add_argument("--approach", help="rigid approach from the first touch, e.g. '5 nm'")
+    contact.add_argument("--hardness", help="cap the pressure (elastic-perfectly-plastic), e.g. '0.46 GPa'")
+    contact.add_argument("--boundary", choices=("periodic", "free"), help="default: free unless --periodic")
+    contact.add_argument("--tolerance", type=float, default=1e-8, help="scale-free residual (default 1e-8)")
+    contact.add_argument(
+        "--stress-depths", nargs="+", metavar="DEPTH", help="von Mises maps at these depths, e.g. '20 nm'"
+    )
+    add_output_options(contact)
+    contact.set_defaults(handler=_contact)

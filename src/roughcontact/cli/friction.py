@@ -1,0 +1,268 @@
+"""The ``friction`` and ``friction-compare`` commands: paper 000's Winkler-Lennard-Jones friction.
+
+Both are views of the study model ``friction`` (:mod:`roughcontact.study.kinds.friction`):
+``friction`` runs one surface (merged with a counter-surface) at one load or a sweep of loads;
+``friction-compare`` runs every scan of every sample at one load and compares the simulated mu
+with measured values (paper 000's validation: t-tests and the Pearson r of the means). Without
+scans it runs paper 000's own case on synthetic scans (:mod:`roughcontact.models.paper000`).
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from ..errors import InputError
+from ..models import paper000
+from .options import CommandStudy, add_material_options, add_output_options, file_options, size_argument
+from .output import run_command
+
+
+def _readings(texts: list[str]) -> dict[str, str]:
+    """Return ``--reading NAME=VALUE`` (repeated) as a study's ``readings`` table (checked by the model)."""
+    readings = {}
+    for text in texts:
+        name, separator, value = text.partition("=")
+        if not separator or not name.strip() or not value.strip():
+            raise InputError(
+                "--reading", f"cannot read {text!r}.", "write NAME=VALUE, e.g. contact=zero_gap."
+            )
+        readings[name.strip()] = value.strip()
+    return readings
+
+
+def _model_keys(args: argparse.Namespace) -> dict:
+    """Return the model's keys the two commands share, with the option of each."""
+    return {
+        "surface_energy": (args.surface_energy, "--surface-energy"),
+        "counter_surface_energy": (args.counter_surface_energy, "--counter-surface-energy"),
+        "layer_thickness": (args.layer_thickness, "--layer-thickness"),
+        "epsilon": (args.epsilon, "--epsilon"),
+        "readings": (_readings(args.reading) or None, "--reading"),
+    }
+
+
+def _friction(args: argparse.Namespace) -> int:
+    command = CommandStudy("roughcontact friction", f"friction of {args.file.name} (paper 000's model)")
+    counter = None
+    if args.counter_file is not None:
+        counter = command.topography_file("counter_surface", args, file=args.counter_file)
+    forces = args.normal_forces or [args.normal_force]
+    index = command.analysis(
+        "friction",
+        "friction",
+        {
+            "topography": (command.topography_file("surface", args), "FILE"),
+            "counter_topography": (counter, "COUNTER_FILE"),
+            "material": (command.material("material", args, required=True), "--material"),
+            "counter_body": (command.material("counter_body", args), "--counter-body"),
+            "normal_force": (forces[0], "--normal-forces" if args.normal_forces else "--normal-force"),
+            "crossover": (args.crossover or None, "--crossover"),
+            "resample": (args.resample or None, "--resample"),
+            "relaxed_modulus": (args.relaxed_modulus, "--relaxed-modulus"),
+            "relaxation_time": (args.relaxation_time if args.relaxed_modulus else None, "--relaxation-time"),
+            "hold_time": (args.hold_time if args.relaxed_modulus else None, "--hold-time"),
+            **_model_keys(args),
+        },
+    )
+    if len(forces) > 1:
+        command.sweep(index, "normal_force", forces, "--normal-forces")
+    return run_command(command, args)
+
+
+def _sample_argument(text: str) -> tuple[str, list[Path]]:
+    name, separator, files = text.partition("=")
+    if not separator or not files:
+        raise argparse.ArgumentTypeError(f"cannot read {text!r}; write NAME=scan1.di,scan2.di,...")
+    return name.strip(), [Path(f) for f in files.split(",") if f]
+
+
+def _paper000_scans(command: CommandStudy, args: argparse.Namespace) -> dict:
+    """Paper 000's synthetic scans and tip (:mod:`roughcontact.models.paper000`): the keys they set."""
+    side = f"{args.grid * paper000.PIXEL * 1e9:g} nm"
+    command.topography(
+        "scan",
+        {"generate": "self_affine", "shape": args.grid, "size": side, "hurst": 0.8, "rms_height": "1.5 nm"},
+        "--grid",
+    )
+    command.topography(
+        "tip",
+        {
+            "generate": "sphere_with_roughness",
+            "shape": args.grid,
+            "size": side,
+            "radius": "1 um",
+            "rms_height": "0.3 nm",
+            "seed": args.seed,
+        },
+        "--grid",
+    )
+    command.set(("study", "seed"), args.seed, "--seed")
+    return {"topography": ("scan", None), "counter_topography": ("tip", None)}
+
+
+def _friction_compare(args: argparse.Namespace) -> int:
+    command = CommandStudy(
+        "roughcontact friction-compare", f"simulated mu against the measured values of {args.measured.name}"
+    )
+    if args.sample:
+        names, samples, replicates = [], [], []
+        for sample, files in args.sample:
+            for number, path in enumerate(files):
+                names.append(command.topography_file(f"{sample}_{number}", args, file=path))
+                samples.append(sample)
+                replicates.append(number)
+        tip = None if args.tip is None else command.topography_file("tip", args, file=args.tip)
+        surfaces = {"topography": (names[0], None), "counter_topography": (tip, "--tip")}
+    else:
+        surfaces = _paper000_scans(command, args)
+    index = command.analysis(
+        "friction",
+        "friction",
+        surfaces
+        | {
+            "material": (args.material, "--material"),
+            "counter_body": (args.counter_body, "--counter-body"),
+            "normal_force": (args.normal_force, "--normal-force"),
+            **_model_keys(args),
+        },
+    )
+    if args.sample:
+        command.zipped(
+            index,
+            {
+                "sample": (samples, "--sample"),
+                "replicate": (replicates, "--sample"),
+                "topography": (names, "--sample"),
+            },
+        )
+    else:
+        command.sweep(index, "replicate", list(range(7)), "--seed")
+        samples = list(paper000.PAPER000_SAMPLES)
+        command.zipped(
+            index,
+            {
+                "sample": (samples, "--seed"),
+                "topographies.scan.ra": (
+                    [f"{ra * 1e9:g} nm" for ra in paper000.PAPER000_SAMPLES.values()],
+                    "--seed",
+                ),
+            },
+        )
+    command.compare(
+        index,
+        {
+            "measured": (str(args.measured.resolve()), "MEASURED"),
+            "alpha": (args.alpha, "--alpha"),
+            "equal_var": (args.equal_var, "--equal-var"),
+        },
+    )
+    return run_command(command, args)
+
+
+def _shared_options(parser: argparse.ArgumentParser, *, surface_energy: str | None) -> None:
+    parser.add_argument(
+        "--surface-energy",
+        default=surface_energy,
+        help="surface energy of the surface, e.g. '50 mJ/m^2'"
+        + (f" (paper 000 does not give it; default {surface_energy})" if surface_energy else ""),
+    )
+    parser.add_argument(
+        "--counter-surface-energy", help="surface energy of the counter-body (default: the library's)"
+    )
+    parser.add_argument("--layer-thickness", default="50 nm", help="Winkler layer height h (default 50 nm)")
+    parser.add_argument("--epsilon", default="2 nm", help="Lennard-Jones equilibrium distance (default 2 nm)")
+    parser.add_argument(
+        "--reading",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="reading of a disputed equation of paper 000, e.g. contact=zero_gap (see docs/winkler_lj.md)",
+    )
+    add_output_options(parser)
+
+
+def add_commands(commands) -> None:
+    """Add ``friction`` and ``friction-compare`` to the subparsers ``commands``."""
+    friction = commands.add_parser(
+        "friction",
+        parents=[file_options()],
+        help="adhesive + mechanical friction of a surface (Winkler layer + Lennard-Jones, paper 000)",
+        description="Friction of FILE (merged with COUNTER_FILE if given) against a flat at --normal-force, "
+        "or over --normal-forces, with the adhesive and mechanical parts and mu = F / N (study model "
+        "'friction').",
+    )
+    friction.add_argument("counter_file", nargs="?", type=Path, help="topography of the counter-body (tip)")
+    add_material_options(friction, "material", "the surface's body", "polysilicon, SiO2")
+    add_material_options(friction, "counter_body", "the counter-body (default: rigid)", "SiO2")
+    friction.add_argument(
+        "--normal-force", "--load", dest="normal_force", default="10 uN", help="normal load (default 10 uN)"
+    )
+    friction.add_argument(
+        "--normal-forces",
+        "--loads",
+        dest="normal_forces",
+        nargs="+",
+        help="several loads: a sweep, e.g. '1 uN' '10 uN' '100 uN'",
+    )
+    friction.add_argument(
+        "--crossover",
+        action="store_true",
+        help="find the load where mechanical friction overtakes adhesive friction",
+    )
+    friction.add_argument(
+        "--resample",
+        action="store_true",
+        help="bring two grids of different pixel size onto a common grid instead of refusing them",
+    )
+    friction.add_argument(
+        "--hold-time", default="0 s", help="time held in contact before sliding, e.g. '10 s'"
+    )
+    friction.add_argument(
+        "--relaxed-modulus",
+        help="long-time Young's modulus of the surface's body (standard linear solid from its modulus to "
+        "this one), e.g. '90 GPa'",
+    )
+    friction.add_argument(
+        "--relaxation-time", default="1 s", help="relaxation time of the standard linear solid"
+    )
+    _shared_options(friction, surface_energy=None)
+    friction.set_defaults(handler=_friction)
+
+    comparison = commands.add_parser(
+        "friction-compare",
+        help="simulated vs measured mu per sample: t-tests and Pearson r (paper 000's validation)",
+        description="Simulate mu for every scan of every sample (--sample NAME=a.di,b.di ...; without "
+        "--sample: paper 000's case, seven synthetic seeded scans per sample) and compare with MEASURED "
+        "(CSV sample,mu): per-sample t-tests and the Pearson r of the means.",
+    )
+    comparison.add_argument("measured", type=Path, help="CSV with columns sample,mu ('#' comments)")
+    comparison.add_argument(
+        "--sample",
+        action="append",
+        type=_sample_argument,
+        metavar="NAME=FILES",
+        help="scans of one sample, comma-separated; repeat per sample",
+    )
+    comparison.add_argument("--tip", type=Path, help="topography of the tip, on the scans' grid")
+    comparison.add_argument("--size", type=size_argument, help="scan size if the files lack it, e.g. '5 um'")
+    comparison.add_argument("--height-unit", help="height unit if the files lack it")
+    comparison.add_argument("--material", default="polysilicon", help="library material of the samples")
+    comparison.add_argument(
+        "--counter-body", "--counter", dest="counter_body", default="SiO2", help="library material of the tip"
+    )
+    comparison.add_argument(
+        "--normal-force", "--load", dest="normal_force", default="10 uN", help="normal load (default 10 uN)"
+    )
+    comparison.add_argument("--alpha", type=float, default=0.1, help="t-test threshold (paper: 0.1)")
+    comparison.add_argument(
+        "--equal-var", action="store_true", help="Student's pooled t-test instead of Welch's"
+    )
+    comparison.add_argument(
+        "--seed", type=int, default=0, help="without --sample: seed of the synthetic scans"
+    )
+    comparison.add_argument(
+        "--grid", type=int, default=256, help="without --sample: points per side of the 20 nm-pixel scans"
+    )
+    _shared_options(comparison, surface_energy="50 mJ/m^2")
+    comparison.set_defaults(handler=_friction_compare)

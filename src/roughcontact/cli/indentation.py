@@ -1,0 +1,84 @@
+"""The ``nanoindent`` command: a sample's modulus from a load-displacement CSV (paper 001 eqs. 5-8).
+
+A view of the study model ``nanoindentation`` (:mod:`roughcontact.study.kinds.nanoindentation`).
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from .options import CommandStudy, add_output_options
+from .output import run_command
+
+
+def _nanoindent(args: argparse.Namespace) -> int:
+    command = CommandStudy("roughcontact nanoindent", f"Oliver-Pharr analysis of {args.file.name}")
+    command.analysis(
+        "indentation",
+        "nanoindentation",
+        {
+            "curve": (str(args.file.resolve()), "FILE"),
+            "depth_column": (args.depth_column, "--depth-column"),
+            "load_column": (args.load_column, "--load-column"),
+            "time_column": (args.time_column, "--time-column"),
+            "depth_unit": (args.depth_unit, "--depth-unit"),
+            "load_unit": (args.load_unit, "--load-unit"),
+            "time_unit": (args.time_unit, "--time-unit"),
+            "indenter": (args.indenter, "--indenter"),
+            "poissons_ratio": (args.poissons_ratio, "--poissons-ratio"),
+            "epsilon": (args.epsilon, "--epsilon"),
+            "beta": (args.beta, "--beta"),
+            "fit_range": (list(args.fit_range), "--fit-range"),
+            "rate_sign": (args.rate_sign, "--rate-sign"),
+            "creep_fit": (args.creep_fit, "--creep-fit"),
+        },
+    )
+    return run_command(command, args)
+
+
+def add_commands(commands) -> None:
+    """Add ``nanoindent`` to the subparsers ``commands``."""
+    from ..experiment.nanoindentation import CREEP_FITS, RATE_SIGNS
+
+    nanoindent = commands.add_parser(
+        "nanoindent",
+        help="sample modulus from a load-displacement CSV: Oliver-Pharr with the hold-creep correction",
+        description="Oliver-Pharr analysis with Tang-Ngan's viscous correction as in seed paper 001 "
+        "eqs. 5-8 (study model 'nanoindentation'): power law fitted to the upper unloading curve, creep "
+        "rate from the hold at maximum load, unloading rate from the onset of unloading, ideal Berkovich "
+        "area 24.5 d_c^2. Columns are found by name (depth/displacement, load/force, time) with units in "
+        "the header, e.g. 'depth (nm)', or given with the options.",
+    )
+    nanoindent.add_argument("file", type=Path, help="CSV with depth, load and (optional) time columns")
+    nanoindent.add_argument("--depth-column", help="header of the depth column (default: auto-detect)")
+    nanoindent.add_argument("--load-column", help="header of the load column (default: auto-detect)")
+    nanoindent.add_argument("--time-column", help="header of the time column (default: auto-detect)")
+    nanoindent.add_argument("--depth-unit", help="unit of the depth column, e.g. nm (overrides the header)")
+    nanoindent.add_argument("--load-unit", help="unit of the load column, e.g. mN (overrides the header)")
+    nanoindent.add_argument("--time-unit", help="unit of the time column, e.g. s (overrides the header)")
+    nanoindent.add_argument(
+        "--indenter",
+        default="diamond berkovich",
+        help="library material of the tip (default: 1141 GPa, 0.07)",
+    )
+    nanoindent.add_argument(
+        "--poissons-ratio", "--poisson", dest="poissons_ratio", type=float, default=0.5,
+        help="sample Poisson's ratio (default 0.5)",
+    )  # fmt: skip
+    nanoindent.add_argument("--epsilon", type=float, default=0.75, help="eq. 7's geometric constant")
+    nanoindent.add_argument("--beta", type=float, default=1.0, help="tip-shape factor of eq. 6 (default 1)")
+    nanoindent.add_argument(
+        "--fit-range", type=float, nargs=2, default=(0.2, 0.95), metavar=("LOW", "HIGH"),
+        help="fractions of F_max between which the unloading power law is fitted (default 0.2 0.95)",
+    )  # fmt: skip
+    nanoindent.add_argument(
+        "--rate-sign", choices=RATE_SIGNS, default="magnitude",
+        help="eq. 5 with |F_dot| (default) or the paper's printed signed F_dot (raises the modulus)",
+    )  # fmt: skip
+    nanoindent.add_argument(
+        "--creep-fit", choices=CREEP_FITS, default="tang_ngan",
+        help="end-of-hold creep rate: t^(1/3) hold law (default), a line on the last 20%%, or none",
+    )  # fmt: skip
+    add_output_options(nanoindent)
+    nanoindent.set_defaults(handler=_nanoindent)

@@ -1,0 +1,347 @@
+"""What the commands share: reading a file's options, materials, outputs, and a command as a study.
+
+A command that computes is a *view* of a study model (:mod:`roughcontact.study.kinds`): it turns
+its options into the document a study file would hold (:class:`CommandStudy`), which is validated
+by the same schemas and run by the same code as ``roughcontact run``. So a model's parameters,
+checks, results, tables and figures exist once. :class:`CommandStudy` remembers which option set
+each value, so a problem is reported in the user's own terms: the option and the value as typed
+(``--material-youngs-modulus: '-70 GPa' ...``), not a study key and an SI float.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+from collections.abc import Iterable
+from pathlib import Path
+from typing import Any
+
+from ..errors import InputError
+
+EXIT_INPUT_ERROR = 2
+EXIT_NOT_CONVERGED = 3
+EXIT_CASES_FAILED = 4
+EXIT_INTERRUPTED = 130
+
+
+def size_argument(text: str) -> tuple[str, ...]:
+    """Split ``"10 um"``, ``"10 um x 20 um"`` or ``"10um,20um"`` into one string per axis."""
+    parts = [p.strip() for p in text.replace(",", " x ").split(" x ") if p.strip()]
+    if not 1 <= len(parts) <= 2:
+        raise argparse.ArgumentTypeError(f"cannot read size {text!r}; write '10 um' or '10 um x 20 um'")
+    return tuple(parts)
+
+
+def channel_argument(text: str) -> int | str:
+    """Return a channel by index (digits) or by name."""
+    return int(text) if text.isdigit() else text
+
+
+def file_options(*, required: bool = True) -> argparse.ArgumentParser:
+    """Return a parent parser with FILE and the options that say how to read it."""
+    parent = argparse.ArgumentParser(add_help=False)
+    group = parent.add_argument_group("reading the file")
+    group.add_argument(
+        "file",
+        type=Path,
+        nargs=None if required else "?",
+        help="instrument file (any format SurfaceTopography reads) or .nc",
+    )
+    group.add_argument("--channel", type=channel_argument, help="channel name or index (default: the file's)")
+    group.add_argument(
+        "--size",
+        type=size_argument,
+        help="physical scan size where the file lacks it, e.g. '5 um' or '5 um x 10 um'",
+    )
+    group.add_argument("--height-unit", help="unit of the stored heights where the file lacks it, e.g. nm")
+    group.add_argument(
+        "--fill-undefined",
+        action="store_true",
+        help="interpolate undefined (missing) points instead of refusing the file",
+    )
+    group.add_argument("--periodic", action="store_true", help="treat the surface as periodic")
+    return parent
+
+
+def read_file(args: argparse.Namespace):
+    """Read FILE as the file options say (for the commands that describe a file, not a model)."""
+    from ..topography.io import read_topography
+
+    size = args.size if args.size is None or len(args.size) > 1 else args.size[0]
+    return read_topography(
+        args.file,
+        channel=args.channel,
+        size=size,
+        height_unit=args.height_unit,
+        undefined="interpolate" if args.fill_undefined else "refuse",
+        periodic=args.periodic,
+    )
+
+
+def add_material_options(parser: argparse.ArgumentParser, prefix: str, what: str, names: str) -> None:
+    """Add ``--PREFIX`` (a library material) and ``--PREFIX-youngs-modulus``/``--PREFIX-poissons-ratio``.
+
+    With a library name the two are overrides of its values; without one they define the material.
+    """
+    flag = f"--{prefix.replace('_', '-')}"
+    aliases = [f"--{alias}" for alias in _FLAG_ALIASES.get(prefix, ())]
+    parser.add_argument(flag, *aliases, dest=prefix, help=f"library material of {what}, e.g. {names}")
+    parser.add_argument(
+        f"{flag}-youngs-modulus",
+        *[f"{a}-youngs-modulus" for a in aliases],
+        dest=f"{prefix}_youngs_modulus",
+        help=f"Young's modulus of {what}, e.g. '70 GPa'",
+    )
+    parser.add_argument(
+        f"{flag}-poissons-ratio",
+        *[f"{a}-poissons-ratio" for a in aliases],
+        dest=f"{prefix}_poissons_ratio",
+        type=float,
+        help=f"Poisson's ratio of {what}",
+    )
+
+
+_FLAG_ALIASES = {"counter_body": ("counter",)}
+"""Option spellings of release 0.1 still accepted (``--counter`` for ``--counter-body``)."""
+
+
+def add_output_options(parser: argparse.ArgumentParser, *, figures: bool = True) -> None:
+    """Add ``-o/--output``, ``--json`` and (for commands that draw) ``--dpi``."""
+    parser.add_argument(
+        "-o",
+        "--output",
+        type=Path,
+        help="folder for the results: each case, results.csv, tables, figures and report.html",
+    )
+    parser.add_argument("--json", action="store_true", help="print the results as one JSON document (SI)")
+    if figures:
+        parser.add_argument("--dpi", type=int, default=150, help="resolution of the figures (default 150)")
+
+
+def _flag(name: str) -> str:
+    return f"--{name.replace('_', '-')}"
+
+
+class CommandStudy:
+    """The study a command builds from its options, and which option gave each value.
+
+    Parameters
+    ----------
+    name : str
+        The study's name (``"roughcontact contact"``): a later run of the same command into the
+        same ``-o`` folder reuses its finished cases.
+    description : str
+        One line for the report.
+    """
+
+    def __init__(self, name: str, description: str = ""):
+        self.name = name
+        self.document: dict[str, Any] = {
+            "study": {"name": name, "description": description, "seed": 0},
+            "topographies": {},
+            "materials": {},
+            "analysis": [],
+        }
+        self.flags: dict[tuple, str] = {}
+        self.words: dict[str, str] = {}
+        self.table_words: dict[tuple, dict[str, str]] = {}
+
+    # --- building the document ---------------------------------------------------------------
+
+    def set(self, path: tuple, value: Any, flag: str | None = None) -> None:
+        """Set ``value`` at ``path`` of the document; ``flag`` is the option the user typed it as."""
+        node = self.document
+        for key in path[:-1]:
+            node = node[key]
+        node[path[-1]] = value
+        if flag is not None:
+            self.name_flag(path, flag)
+
+    def name_flag(self, path: tuple, flag: str) -> None:
+        """Say that the value at ``path`` (and a key of that name in messages) came from ``flag``."""
+        self.flags[path] = flag
+        key = str(path[-1])
+        if key not in ("file", "material", "counter_body", "topography") or flag.startswith("-"):
+            self.words.setdefault(key, flag)
+
+    def topography_file(self, name: str, args: argparse.Namespace, *, file: Path | None = None) -> str:
+        """Add FILE (or ``file``) as the topography ``name``, read as the file options say; return it."""
+        table: dict[str, Any] = {"file": str(Path(file if file is not None else args.file).resolve())}
+        where = ("topographies", name)
+        self.document["topographies"][name] = table
+        for key in ("size", "height_unit", "channel", "fill_undefined"):  # named in fixes even when not given
+            self.words.setdefault(key, _flag(key))
+        self.name_flag((*where, "file"), "FILE" if file is None else str(file))
+        self.flags[where] = "FILE" if file is None else str(file)
+        if file is None:
+            for key in ("channel", "height_unit"):
+                if getattr(args, key, None) is not None:
+                    self.set((*where, key), getattr(args, key), _flag(key))
+            if getattr(args, "size", None) is not None:
+                self.set((*where, "size"), list(args.size) if len(args.size) > 1 else args.size[0], "--size")
+            for key in ("fill_undefined", "periodic"):
+                if getattr(args, key, False):
+                    self.set((*where, key), True, _flag(key))
+        elif getattr(args, "size", None) is not None or getattr(args, "height_unit", None) is not None:
+            for key in ("height_unit",):
+                if getattr(args, key, None) is not None:
+                    self.set((*where, key), getattr(args, key), _flag(key))
+            if getattr(args, "size", None) is not None:
+                self.set((*where, "size"), list(args.size) if len(args.size) > 1 else args.size[0], "--size")
+        return name
+
+    def topography(self, name: str, table: dict[str, Any], flag: str) -> str:
+        """Add a generated topography (a ``generate = ...`` table); return ``name``."""
+        self.document["topographies"][name] = table
+        self.flags[("topographies", name)] = flag
+        return name
+
+    def material(self, prefix: str, args: argparse.Namespace, *, required: bool = False) -> str | None:
+        """Return the study name of the material of ``--PREFIX`` options (None where none is given).
+
+        A library name alone is used as it is; Young's modulus and Poisson's ratio make a
+        ``[materials.PREFIX]`` table (overrides of the library entry when a name is also given).
+        """
+        name = getattr(args, prefix)
+        overrides = {
+            key: getattr(args, f"{prefix}_{key}")
+            for key in ("youngs_modulus", "poissons_ratio")
+            if getattr(args, f"{prefix}_{key}") is not None
+        }
+        flag = _flag(prefix)
+        self.table_words[("materials", prefix)] = {"library": flag} | {
+            key: f"{flag}-{key.replace('_', '-')}" for key in ("youngs_modulus", "poissons_ratio")
+        }
+        if name is None and not overrides:
+            if required:
+                raise InputError(flag, "no material given.", f"pass {flag} NAME or {flag}-youngs-modulus.")
+            return None
+        if not overrides:
+            return name
+        table = ({"library": name} if name is not None else {}) | overrides
+        self.document["materials"][prefix] = table
+        self.flags[("materials", prefix)] = flag
+        for key in overrides:
+            self.name_flag(("materials", prefix, key), f"{flag}-{key.replace('_', '-')}")
+        self.words.setdefault("library", flag)
+        return prefix
+
+    def analysis(self, name: str, model: str, keys: dict[str, tuple[Any, str | None]]) -> int:
+        """Add an analysis of ``model``; ``keys`` maps each key to (value, the option that gave it).
+
+        A value of None is left out (the model's default). Returns the analysis' index.
+        """
+        index = len(self.document["analysis"])
+        self.document["analysis"].append({"name": name, "model": model})
+        self.flags[("analysis", index)] = name
+        for key, (value, flag) in keys.items():
+            if value is not None:
+                self.set(("analysis", index, key), value, flag)
+            elif flag is not None and flag.startswith("-"):
+                self.words.setdefault(key, flag)  # named in messages even when not given
+        return index
+
+    def sweep(self, index: int, key: str, values: list, flag: str) -> None:
+        """Sweep ``key`` of analysis ``index`` over ``values`` (one case each), given as ``flag``."""
+        self.document["analysis"][index].setdefault("sweep", {})[key] = values
+        self.name_flag(("analysis", index, "sweep", key), flag)
+        self.name_flag(("analysis", index, key), flag)
+
+    def zipped(self, index: int, axes: dict[str, tuple[list, str]]) -> None:
+        """Take the lists of ``axes`` (key -> (values, option)) together: one case per position."""
+        table = self.document["analysis"][index].setdefault("zip", {})
+        for key, (values, flag) in axes.items():
+            table[key] = values
+            self.name_flag(("analysis", index, "zip", key), flag)
+            self.name_flag(("analysis", index, key), flag)
+
+    def compare(self, index: int, keys: dict[str, tuple[Any, str | None]]) -> None:
+        """Add the ``[analysis.compare]`` table (measured data) to analysis ``index``."""
+        table = self.document["analysis"][index].setdefault("compare", {})
+        for key, (value, flag) in keys.items():
+            if value is not None:
+                table[key] = value
+                if flag is not None:
+                    self.name_flag(("analysis", index, "compare", key), flag)
+
+    # --- validating and reporting problems in the command's terms ------------------------------
+
+    def text(self) -> str:
+        """Return the document as a study file (TOML), kept with the results (``run`` reruns it)."""
+        import tomli_w
+
+        return "# written by: roughcontact " + " ".join(sys.argv[1:]) + "\n" + tomli_w.dumps(self.document)
+
+    def build(self):
+        """Validate the document and build its cases (:func:`roughcontact.study.config.build_study`).
+
+        Raises
+        ------
+        InputError
+            Every problem, each naming the option and the value as typed.
+        """
+        from ..study.config import StudyError, build_study
+
+        try:
+            return build_study(self.document, folder=Path.cwd(), text=self.text(), source=self.name)
+        except StudyError as error:
+            found = self.explain(error.problems)
+            if len(found) == 1:
+                raise InputError(*found[0]) from None
+            lines = [
+                f"{option}: {problem}" + (f" Fix: {fix}" if fix else "") for option, problem, fix in found
+            ]
+            raise InputError(self.name, f"{len(found)} problems:\n  " + "\n  ".join(lines)) from None
+
+    def option_of(self, path: tuple) -> str | None:
+        """Return the option that set the value at ``path`` (or at the nearest place above it)."""
+        for end in range(len(path), 0, -1):
+            if path[:end] in self.flags:
+                return self.flags[path[:end]]
+        return None
+
+    def translate(self, text: str | None, path: tuple = ()) -> str | None:
+        """Say a study file's keys in ``text`` as this command's options (``film_thickness = '1 um'``).
+
+        Keys with an underscore are replaced wherever they stand, the others only as ``key =``
+        or in a list of keys (``one of mean_pressure, force``), so that words of the prose stay.
+        ``path`` (a problem's place) adds the words of its table (a material's own options).
+        """
+        if not text:
+            return text
+        words = dict(self.words)
+        for end in range(len(path), 0, -1):
+            if path[:end] in self.table_words:
+                words |= self.table_words[path[:end]]
+                break
+
+        def listed(match: re.Match) -> str:
+            items = [words.get(item.strip(), item.strip()) for item in match.group(2).split(",")]
+            return match.group(1) + ", ".join(items)
+
+        text = re.sub(r"(one of |found )([\w]+(?:, [\w]+)+)", listed, text)
+        for key, flag in sorted(words.items(), key=lambda item: -len(item[0])):
+            text = re.sub(rf"\b{re.escape(key)} = true\b", flag, text)
+            text = re.sub(rf"\b{re.escape(key)} = ", f"{flag} ", text)
+            if "_" in key:
+                text = re.sub(rf"(?<![-\w]){re.escape(key)}\b", flag, text)
+        return text
+
+    def explain(self, problems: Iterable) -> list[tuple[str, str, str | None]]:
+        """Return (option, problem, fix) per problem, in the command's terms and the values as typed."""
+        return [
+            (
+                self.option_of(p.path) or p.field,
+                self.translate(p.problem, p.path),
+                self.translate(p.fix, p.path),
+            )
+            for p in problems
+        ]
+
+    def input_error(self, error: InputError) -> InputError:
+        """Return a model's refusal (named by its Python parameter) named by the option instead."""
+        flag = self.words.get(error.field)
+        if flag is None:
+            return error
+        return InputError(flag, self.translate(error.problem), self.translate(error.fix))

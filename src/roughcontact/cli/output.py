@@ -1,0 +1,175 @@
+"""Running a command's study and showing its results: summaries, tables, JSON, the output folder.
+
+A command runs its cases in-process with the study runner (:mod:`roughcontact.study.run`): with
+``-o OUT`` each case, ``results.csv``, the tables, the figures and ``report.html`` are written as
+for ``roughcontact run``; without it nothing is written. Either way it prints the same summary
+(or, with ``--json``, one JSON document) derived from the results' scalars and units.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+from pathlib import Path
+from typing import Any
+
+from .._json import json_ready
+from ..errors import InputError
+from ..units import format_si
+from .options import CommandStudy
+
+
+def _output_folder(folder: Path, name: str) -> bool:
+    """Check ``-o`` for a command's study; return True to reuse its finished cases (same command)."""
+    if not folder.exists() or not any(folder.iterdir()):
+        return False
+    marker = folder / "study.json"
+    if marker.is_file():
+        held = json.loads(marker.read_text()).get("name")
+        if held == name:
+            return True
+        raise InputError(
+            "-o/--output",
+            f"{folder} holds the results of {held!r}.",
+            "choose another folder (a command reuses only its own results).",
+        )
+    raise InputError("-o/--output", f"{folder} is not empty.", "choose a new or empty folder.")
+
+
+def _run(study, command: CommandStudy, output: Path | None, dpi: int):
+    """Run every case; return the analyses with their records and the report path (None without -o)."""
+    from ..study.kind import CaseRecord
+    from ..study.outputs import in_memory, read_study
+    from ..study.report import write_report
+    from ..study.run import execute, make_task, run_study
+
+    try:
+        if output is None:
+            records: dict[str, list] = {}
+            for case in study.cases:
+                record, _ = execute(make_task(study, case, raise_errors=True))
+                records.setdefault(case.analysis, []).append(CaseRecord(record, Path.cwd()))
+            return in_memory(study, records), None
+        folder = output.expanduser().resolve()
+        resume = _output_folder(folder, study.name)
+        run_study(study, folder, resume=resume, progress=sys.stderr.isatty(), raise_errors=True)
+        report = write_report(folder, dpi=dpi)
+        return read_study(folder)[1], report
+    except InputError as error:
+        raise command.input_error(error) from None
+
+
+def run_command(command: CommandStudy, args) -> int:
+    """Validate and run a command's study, then print its summary (or ``--json``); return the exit status.
+
+    Parameters
+    ----------
+    command : CommandStudy
+        The study the command built from its options.
+    args : argparse.Namespace
+        The command's options (``output``, ``json``, ``dpi``).
+    """
+    from ..study.outputs import produce
+
+    study = command.build()
+    for note in study.notes:
+        print(f"roughcontact: note: {command.translate(note)}", file=sys.stderr)
+    output = getattr(args, "output", None)
+    analyses, report = _run(study, command, output, getattr(args, "dpi", 150))
+    tables, problems = produce(analyses, "table")
+    if args.json:
+        document = {
+            "command": study.name,
+            "analyses": [_analysis_document(analysis, tables) for analysis in analyses],
+            "output": None if output is None else str(output.expanduser().resolve()),
+        }
+        print(json.dumps(json_ready(document), indent=2))
+        return 0
+    for analysis in analyses:
+        print("\n".join(summary_lines(analysis, study.analysis(analysis.name).kind)))
+        for name, rows in ((n, r) for a, n, r in tables if a == analysis.name):
+            print(f"  table {name}:")
+            print("\n".join("    " + line for line in table_lines(rows)))
+    for problem in problems:
+        print(f"roughcontact: table not made: {problem}", file=sys.stderr)
+    if report is not None:
+        print(f"wrote {report.parent}: results.csv, cases/, tables/, figures/ and {report.name}")
+    return 0
+
+
+def _analysis_document(analysis, tables) -> dict[str, Any]:
+    return {
+        "name": analysis.name,
+        "model": analysis.kind.name,
+        "units": dict(analysis.kind.units),
+        "cases": [
+            {
+                "case": record["case"],
+                "status": record["status"],
+                "axes": record.data.get("axes") or {},
+                "parameters": record.parameters,
+                "scalars": record.scalars,
+            }
+            for record in analysis.records
+            if record is not None
+        ],
+        "tables": {name: rows for a, name, rows in tables if a == analysis.name},
+    }
+
+
+def shown(value: Any, unit: str | None) -> str:
+    """Return a scalar as text: with its SI prefix and unit where it has one, labels as they are."""
+    if isinstance(value, bool) or value is None or isinstance(value, str):
+        return "-" if value is None or value == "" else str(value)
+    if isinstance(value, int) and not unit:
+        return str(value)
+    if isinstance(value, list):
+        return ", ".join(shown(v, unit) for v in value)
+    number = float(value)
+    if not math.isfinite(number):
+        return "-"
+    return format_si(number, unit) if unit else f"{number:.4g}"
+
+
+def summary_lines(analysis, kind) -> list[str]:
+    """Return an analysis' finished cases as lines: every scalar of one, or a table of the headline ones."""
+    records = [r for r in analysis.records if r is not None]
+    units = dict(kind.units)
+    lines = [f"{analysis.name} ({kind.name}): {kind.summary}"]
+    if len(records) == 1:
+        width = max(len(name) for name in records[0].scalars) if records[0].scalars else 0
+        lines += [
+            f"  {name:<{width}}  {shown(value, units.get(name))}"
+            for name, value in records[0].scalars.items()
+        ]
+        return lines
+    names = [name for name in kind.headline if any(name in r.scalars for r in records)]
+    rows = []
+    for record in records:
+        row = {axis.rsplit(".", 1)[-1]: str(value) for axis, value in (record.data.get("axes") or {}).items()}
+        row |= {name: shown(record.scalars.get(name), units.get(name)) for name in names}
+        rows.append(row)
+    return lines + ["  " + line for line in table_lines(rows, formatted=True)]
+
+
+def table_lines(rows: list[dict[str, Any]], *, formatted: bool = False) -> list[str]:
+    """Rows as aligned text columns; numbers with 4 significant digits (with SI prefixes by a row's unit)."""
+    if not rows:
+        return []
+    columns = list(dict.fromkeys(key for row in rows for key in row))
+    cells = []
+    for row in rows:
+        unit = row.get("unit") if isinstance(row.get("unit"), str) else None
+        cells.append([_cell(row.get(c), unit, c, formatted) for c in columns])
+    widths = [max(len(c), *(len(r[i]) for r in cells)) for i, c in enumerate(columns)]
+    header = "  ".join(f"{c:>{w}}" for c, w in zip(columns, widths, strict=True))
+    return [header] + ["  ".join(f"{v:>{w}}" for v, w in zip(r, widths, strict=True)) for r in cells]
+
+
+def _cell(value: Any, unit: str | None, column: str, formatted: bool) -> str:
+    if formatted or isinstance(value, str | bool) or value is None:
+        return "" if value is None else str(value)
+    if column in ("paper", "this_case") or column.startswith(("printed_inputs", "ours")):
+        return shown(value, unit)
+    return shown(value, None)

@@ -1,0 +1,229 @@
+"""The ``presliding`` and ``loop-analysis`` commands (paper 001: partial slip, friction loops, K_L).
+
+``presliding`` is a view of the study model ``presliding`` (:mod:`roughcontact.study.kinds.presliding`):
+a ball FILE under paper 001's programme (``--stroke``) or your own (``--path`` CSV), or the paper's
+own cases with ``--paper001`` (generated balls, Table 1 loads, strokes and mu,
+:mod:`roughcontact.models.paper001`). ``loop-analysis`` is a view of the model ``loop_analysis``:
+a measured loop's stroke, mu, eq. 9 fit and K_L at A, B, C.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from ..errors import InputError
+from ..models import paper001
+from ..units import quantity
+from .options import CommandStudy, add_material_options, add_output_options, file_options
+from .output import run_command
+
+
+def _paper001(command: CommandStudy, args: argparse.Namespace) -> tuple[dict, dict]:
+    """Paper 001's balls (generated, Table 2 roughness) and their cases (Table 1): keys and zipped axes."""
+    if args.file is not None:
+        raise InputError("FILE", "--paper001 generates the balls.", "drop FILE, or drop --paper001.")
+    loads = args.normal_forces or ["25 mN", "50 mN", "75 mN"]
+    size = f"{paper001.FIELD * 1e3:g} mm"
+    zipped: dict[str, list] = {key: [] for key in ("sample", "topography", "material", "normal_force")}
+    zipped |= {"stroke": [], "friction_coefficient": []}
+    for ball in args.ball:
+        try:
+            name = paper001.ball_name(ball)
+        except InputError as error:
+            raise InputError("--ball", error.problem, error.fix) from None
+        command.topography(
+            name.lower(),
+            {
+                "generate": "sphere_with_roughness",
+                "shape": args.pixels,
+                "size": size,
+                "radius": f"{paper001.RADIUS * 1e3:g} mm",
+                "rms_height": f"{paper001.ROUGHNESS[name] * 1e6:g} um",
+                "hurst": 0.8,
+                "seed": args.seed,
+            },
+            "--ball",
+        )
+        for load in loads:
+            try:
+                stroke, mu = paper001.table1(name, quantity(load, "force", field="--normal-forces"))
+            except InputError as error:
+                raise InputError("--normal-forces", error.problem, error.fix) from None
+            zipped["sample"].append(name)
+            zipped["topography"].append(name.lower())
+            zipped["material"].append(name)
+            zipped["normal_force"].append(load)
+            zipped["stroke"].append(f"{stroke * 1e6:g} um")
+            zipped["friction_coefficient"].append(mu)
+    keys = {
+        "topography": (zipped["topography"][0], None),
+        "material": (zipped["material"][0], None),
+        "counter_body": ("silicon wafer", None),
+        "normal_force": (zipped["normal_force"][0], None),
+        "stroke": (zipped["stroke"][0], None),
+        "friction_coefficient": (zipped["friction_coefficient"][0], None),
+        "window": (args.window or 160, "--window"),
+    }
+    flags = {"normal_force": "--normal-forces", "sample": "--ball", "topography": "--ball"}
+    return keys, {key: (values, flags.get(key, "--paper001")) for key, values in zipped.items()}
+
+
+def _ball(command: CommandStudy, args: argparse.Namespace) -> dict:
+    """Return the model's keys of a ball FILE under the programme of --stroke or --path."""
+    if args.file is None:
+        raise InputError("FILE", "no ball topography given.", "pass a FILE, or --paper001.")
+    if args.path is not None and args.stroke is not None:
+        raise InputError("--path", "give --stroke (paper 001's cycles) or --path, not both.", None)
+    if args.path is None and args.stroke is None:
+        raise InputError(
+            "--stroke", "missing.", "give --stroke (paper 001's cycles) or --path (your programme)."
+        )
+    return {
+        "topography": (command.topography_file("ball", args), "FILE"),
+        "sample": (args.file.stem, None),
+        "material": (command.material("material", args, required=True), "--material"),
+        "counter_body": (command.material("counter_body", args), "--counter-body"),
+        "normal_force": (args.normal_force, "--normal-force"),
+        "friction_coefficient": (args.friction_coefficient, "--friction-coefficient"),
+        "stroke": (args.stroke, "--stroke"),
+        "path": (None if args.path is None else str(args.path.resolve()), "--path"),
+        "maps": (args.maps, "--maps"),
+        "window": (args.window, "--window"),
+    }
+
+
+def _presliding(args: argparse.Namespace) -> int:
+    command = CommandStudy(
+        "roughcontact presliding", "partial-slip friction loops of a rough ball (paper 001)"
+    )
+    zipped = {}
+    if args.paper001:
+        keys, zipped = _paper001(command, args)
+    else:
+        keys = _ball(command, args)
+    keys |= {
+        "radius": (args.radius, "--radius"),
+        "cycles": (args.cycles, "--cycles"),
+        "steps_per_stroke": (args.steps_per_stroke, "--steps-per-stroke"),
+        "coupling": (False if args.no_coupling else None, "--no-coupling"),
+        "tolerance": (args.tolerance, "--tolerance"),
+    }
+    index = command.analysis("presliding", "presliding", keys)
+    if zipped:
+        command.zipped(index, zipped)
+    if args.measured is not None:
+        command.compare(
+            index,
+            {
+                "measured_loop": (str(args.measured.resolve()), "--measured"),
+                "displacement_unit": (args.measured_displacement_unit, "--measured-displacement-unit"),
+                "force_unit": (args.measured_force_unit, "--measured-force-unit"),
+                "normal_force": (
+                    args.measured_normal_force or keys["normal_force"][0],
+                    "--measured-normal-force",
+                ),
+            },
+        )
+    return run_command(command, args)
+
+
+def _loop_analysis(args: argparse.Namespace) -> int:
+    command = CommandStudy("roughcontact loop-analysis", f"analysis of the friction loop {args.file.name}")
+    command.analysis(
+        "loop",
+        "loop_analysis",
+        {
+            "loop": (str(args.file.resolve()), "FILE"),
+            "displacement_unit": (args.displacement_unit, "--displacement-unit"),
+            "force_unit": (args.force_unit, "--force-unit"),
+            "normal_force": (args.normal_force, "--normal-force"),
+            "branch": (args.branch, "--branch"),
+        },
+    )
+    return run_command(command, args)
+
+
+def add_commands(commands) -> None:
+    """Add ``presliding`` and ``loop-analysis`` to the subparsers ``commands``."""
+    presliding = commands.add_parser(
+        "presliding",
+        parents=[file_options(required=False)],
+        help="partial-slip friction loops of a rough ball on a flat, K_L vs Mindlin (paper 001)",
+        description="Press the ball FILE (heights with its spherical shape) on a flat with --normal-force, "
+        "move the flat 0 -> --stroke -> 0 for --cycles cycles, and analyse the last loop; or drive it along "
+        "your own displacement or force programme (--path CSV); or run paper 001's HDPE/POM cases with "
+        "--paper001 (generated balls, Table 1 loads, strokes and mu). Study model 'presliding'.",
+    )
+    add_material_options(presliding, "material", "the ball", "HDPE, POM")
+    add_material_options(presliding, "counter_body", "the flat (default: rigid)", "'silicon wafer'")
+    presliding.add_argument("--paper001", action="store_true", help="paper 001's balls and Table 1")
+    presliding.add_argument(
+        "--ball", nargs="+", default=["HDPE", "POM"], help="with --paper001: HDPE and/or POM"
+    )
+    presliding.add_argument(
+        "--normal-forces",
+        "--loads",
+        dest="normal_forces",
+        nargs="+",
+        help="with --paper001: loads (default 25 mN 50 mN 75 mN)",
+    )
+    presliding.add_argument(
+        "--normal-force", "--force", dest="normal_force", help="normal force F0, e.g. '25 mN'"
+    )
+    presliding.add_argument(
+        "--friction-coefficient",
+        "--mu",
+        dest="friction_coefficient",
+        type=float,
+        help="friction coefficient mu_f",
+    )
+    presliding.add_argument("--stroke", help="stroke d_s of paper 001's programme, e.g. '2.8 um'")
+    presliding.add_argument(
+        "--path",
+        type=Path,
+        help="instead of --stroke: your tangential programme, a CSV with one row per step and units "
+        "in the header: 'x [um]' or 'x [um],y [um]' (displacement control), 'Q_x [mN],Q_y [mN]' "
+        "(force control)",
+    )
+    presliding.add_argument("--maps", type=int, help="with --path: shear maps kept (last reversals and step)")
+    presliding.add_argument("--radius", default="5 mm", help="ball radius for Mindlin's K_L (default 5 mm)")
+    presliding.add_argument(
+        "--cycles", type=int, default=4, help="with --stroke: cycles of the path (default 4, as Fig. 6)"
+    )
+    presliding.add_argument(
+        "--steps-per-stroke", type=int, default=20, help="with --stroke: steps per branch (default 20)"
+    )
+    presliding.add_argument(
+        "--window",
+        type=int,
+        help="pixels of the solved central window (default 160 with --paper001, else the whole scan)",
+    )
+    presliding.add_argument(
+        "--pixels", type=int, default=512, help="with --paper001: pixels of the 1.1 mm scan"
+    )
+    presliding.add_argument("--seed", type=int, default=1, help="with --paper001: seed of the roughness")
+    presliding.add_argument("--no-coupling", action="store_true", help="uncoupled (Goodman) solution")
+    presliding.add_argument("--tolerance", type=float, default=1e-8, help="solver tolerance (default 1e-8)")
+    presliding.add_argument("--measured", type=Path, help="a measured loop CSV to set beside the cases")
+    presliding.add_argument("--measured-displacement-unit", default="um")
+    presliding.add_argument("--measured-force-unit", default="mN")
+    presliding.add_argument("--measured-normal-force", help="F0 of the measured loop (default: the cases')")
+    add_output_options(presliding)
+    presliding.set_defaults(handler=_presliding)
+
+    analysis = commands.add_parser(
+        "loop-analysis",
+        help="stroke, mu, eq. 9 fit and K_L at A, B, C of a measured friction loop (paper 001)",
+        description="Analyse the last loop of a friction record (CSV of displacement and force) as paper 001 "
+        "does (study model 'loop_analysis'); -o writes the figure of the loop, its fits and points.",
+    )
+    analysis.add_argument("file", type=Path, help="CSV with displacement and force columns")
+    analysis.add_argument("--normal-force", required=True, help="F0, e.g. '25 mN'")
+    analysis.add_argument("--displacement-unit", default="um")
+    analysis.add_argument("--force-unit", default="mN")
+    analysis.add_argument(
+        "--branch", choices=("increasing", "decreasing"), default="increasing", help="branch of the points"
+    )
+    add_output_options(analysis)
+    analysis.set_defaults(handler=_loop_analysis)

@@ -1,0 +1,146 @@
+"""The ``inspect`` and ``plot`` commands: what a topography file holds, and its height map and PSD.
+
+``plot`` given a study's output folder re-draws the study's figures instead (:mod:`.study`).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from .._json import json_ready
+from ..errors import InputError
+from ..topography import Topography
+from ..units import format_si
+from .options import file_options, read_file
+
+# statistic -> (SI unit for display, description)
+_STATISTICS = {
+    "Ra": ("m", "arithmetic mean deviation"),
+    "Rq": ("m", "root mean square height"),
+    "Rsk": ("", "skewness"),
+    "Rku": ("", "kurtosis"),
+    "Rz": ("m", "peak-to-valley height"),
+    "rms_slope": ("", "rms slope"),
+    "rms_curvature": ("1/m", "rms curvature"),
+    "m0": ("m^2", "spectral moment m0 (paper 002 eq. 1)"),
+    "m2": ("", "spectral moment m2 (eq. 2)"),
+    "m4": ("1/m^2", "spectral moment m4 (eq. 3)"),
+    "bandwidth": ("", "bandwidth parameter alpha = m0 m4 / m2^2"),
+    "summit_density": ("1/m^2", "summit density eta (McCool)"),
+    "summit_radius": ("m", "summit radius R_asp (eq. 4)"),
+    "summit_height_std": ("m", "summit height deviation sigma_s (eq. 5)"),
+}
+
+
+def describe(topography: Topography) -> dict:
+    """Return grid, size, units and statistics of a topography as a JSON-ready dictionary (SI)."""
+    from ..topography.statistics import summary
+
+    return {
+        "name": topography.info.get("name") or topography.info.get("source"),
+        "grid": list(topography.shape),
+        "size_m": list(topography.size),
+        "spacing_m": list(topography.spacing),
+        "periodic": topography.periodic,
+        "height_unit_in_file": topography.info.get("height_unit"),
+        "undefined_points_filled": topography.info.get("undefined_points_filled", 0),
+        "statistics": summary(topography),
+    }
+
+
+def format_description(description: dict) -> str:
+    """Render :func:`describe` output as an aligned text table with SI-prefixed units."""
+    size = " x ".join(format_si(s, "m") for s in description["size_m"])
+    spacing = " x ".join(format_si(s, "m") for s in description["spacing_m"])
+    lines = [
+        f"surface        {description['name']}",
+        f"grid           {' x '.join(str(n) for n in description['grid'])} points",
+        f"physical size  {size}  (pixel {spacing})",
+        f"periodic       {description['periodic']}",
+    ]
+    if description["height_unit_in_file"]:
+        lines.append(f"height unit    {description['height_unit_in_file']} in the file, metres here")
+    if description["undefined_points_filled"]:
+        lines.append(
+            f"undefined      {description['undefined_points_filled']} points filled by interpolation"
+        )
+    lines.append("statistics")
+    for key, value in description["statistics"].items():
+        unit, meaning = _STATISTICS.get(key, ("", ""))
+        shown = format_si(value, unit) if unit in ("m",) else f"{value:.4g} {unit}".rstrip()
+        lines.append(f"  {key:<18} {shown:<16} {meaning}")
+    return "\n".join(lines)
+
+
+def _inspect(args: argparse.Namespace) -> int:
+    from ..topography.io import list_channels
+
+    channels = list_channels(args.file)
+    topography = read_file(args)
+    description = describe(topography)
+    description["file"] = str(args.file)
+    description["format"] = topography.info.get("file_format")
+    description["channels"] = [
+        {
+            "index": c.index,
+            "name": c.name,
+            "grid": list(c.shape),
+            "size_m": None if c.size is None else list(c.size),
+            "height_unit": c.height_unit,
+            "default": c.is_default,
+        }
+        for c in channels
+    ]
+    if args.json:
+        print(json.dumps(json_ready(description), indent=2))
+        return 0
+    print(f"file           {args.file}  ({description['format']})")
+    print("channels")
+    for c in channels:
+        size = "size not in file" if c.size is None else " x ".join(format_si(s, "m") for s in c.size)
+        marker = "*" if c.is_default else " "
+        grid = " x ".join(str(n) for n in c.shape)
+        print(f" {marker}{c.index:>2}  {c.name:<24} {grid:<12} {size:<24} heights in {c.height_unit or '?'}")
+    print(format_description(description))
+    return 0
+
+
+def _plot(args: argparse.Namespace) -> int:
+    from ..plotting import plot_overview
+
+    if args.file.is_dir():
+        from .study import plot_study
+
+        return plot_study(args.file)
+    if args.output is None:
+        raise InputError("-o/--output", "no figure file given.", "add -o FIGURE.png.")
+    topography = read_file(args)
+    figure = plot_overview(topography)
+    args.output.parent.mkdir(parents=True, exist_ok=True)
+    figure.savefig(args.output, dpi=args.dpi)
+    print(f"wrote {args.output}")
+    return 0
+
+
+def add_commands(commands) -> None:
+    """Add ``inspect`` and ``plot`` to the subparsers ``commands``."""
+    inspect = commands.add_parser(
+        "inspect",
+        parents=[file_options()],
+        help="print channels, grid, physical size, units and statistics of a file",
+    )
+    inspect.add_argument("--json", action="store_true", help="print one JSON document (SI units)")
+    inspect.set_defaults(handler=_inspect)
+
+    plot = commands.add_parser(
+        "plot",
+        parents=[file_options()],
+        help="draw the height map and PSD of a file, or re-draw a study's figures (plot OUT/)",
+        description="FILE a topography: draw its height map and PSD into -o. FILE a study's output "
+        "folder: re-draw its figures and tables from the stored results (nothing is solved again).",
+    )
+    plot.add_argument("-o", "--output", type=Path, help="figure file (.png, .pdf, .svg) for a topography")
+    plot.add_argument("--dpi", type=int, default=150)
+    plot.set_defaults(handler=_plot)

@@ -1,0 +1,209 @@
+"""Load-displacement curves as text files: reading any instrument's CSV export, writing one.
+
+:func:`read_indentation_csv` tokenises the file with the shared text-table reader
+(:func:`roughcontact._text_table.read_text_table`: comma, semicolon, tab or whitespace
+separated, ``#`` comment lines), finds the depth, load and optional time columns by their
+header names and converts their units to SI once, through :mod:`roughcontact.units`.
+The header gives the units as ``depth (nm)``, ``load [mN]`` or ``time/s``; the ``*_unit``
+arguments override it, the ``*_column`` arguments name columns the auto-detection misses.
+
+:func:`write_indentation_csv` writes a curve back with ``time (s)``, ``depth (nm)``,
+``load (mN)`` columns (units to choose) and ``#`` comment lines, in a form
+:func:`read_indentation_csv` reads.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+from ..._text_table import read_text_table
+from ...errors import InputError
+from ...units import quantity
+from .curve import IndentationCurve
+
+# header names recognised for each column (lower case, units stripped, "_" and "-" read as spaces)
+_COLUMN_NAMES = {
+    "depth": (
+        "depth", "displacement", "indentation depth", "penetration", "penetration depth", "disp",
+        "pd", "h", "d", "z",
+    ),
+    "load": ("load", "force", "normal load", "normal force", "indentation load", "fn", "pn", "p", "f"),
+    "time": ("time", "t", "elapsed time", "time on sample"),
+}  # fmt: skip
+_DIMENSIONS = {"depth": "length", "load": "force", "time": "time"}
+_EXAMPLE_UNITS = {"depth": "nm", "load": "mN", "time": "s"}
+
+
+def _clean_name(name: str) -> str:
+    """Return a column name lower case, with runs of spaces, ``_`` and ``-`` as one space."""
+    return " ".join(name.lower().replace("_", " ").replace("-", " ").split())
+
+
+def read_indentation_csv(
+    path: str | Path,
+    *,
+    depth_column: str | None = None,
+    load_column: str | None = None,
+    time_column: str | None = None,
+    depth_unit: str | None = None,
+    load_unit: str | None = None,
+    time_unit: str | None = None,
+) -> IndentationCurve:
+    """Read a load-displacement CSV into SI units.
+
+    Lines starting with ``#`` are comments. The first other line is the header; columns are
+    found by their names (depth/displacement/h, load/force/P, time/t; case, spaces, ``_`` and
+    ``-`` ignored) unless named explicitly. Units come from the header, as in ``depth (nm)``,
+    ``load [mN]`` or ``time/s``, and a ``*_unit`` argument overrides them. Comma, semicolon and
+    tab delimiters are recognised, else whitespace (then no spaces inside a column name).
+
+    Parameters
+    ----------
+    path : str or Path
+        The file.
+    depth_column, load_column, time_column : str, optional
+        Header of the column (without its unit) where auto-detection does not find it.
+    depth_unit, load_unit, time_unit : str, optional
+        Unit strings (``"nm"``, ``"mN"``, ``"s"``), overriding the header's.
+
+    Returns
+    -------
+    IndentationCurve
+        Depth [m], load [N], time [s] or None.
+
+    Raises
+    ------
+    InputError
+        Missing file, no header, a depth or load column that cannot be found, a column without
+        a unit, a cell that is not a number.
+    UnitError
+        An unknown unit, or one of the wrong dimension.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise InputError(str(path), "file not found.", "check the path.")
+    no_rows = InputError(
+        str(path), "has no header and data rows.", "give a header line, then one row per point."
+    )
+    try:
+        table = read_text_table(path, expected="a header line, then one row per point")
+    except InputError:  # only comments and blank lines
+        raise no_rows from None
+    if table.names is None:
+        raise InputError(
+            str(path),
+            "has no header line: its first line holds only numbers.",
+            "give a header line naming the columns with their units, e.g. 'depth (nm),load (mN)'.",
+        )
+    if not table.rows:
+        raise no_rows
+    if table.width < 2:
+        raise InputError(
+            str(path), "has a single column.", "separate the columns by commas, semicolons or tabs."
+        )
+    header = table.header
+    if table.delimiter is None and len(table.rows[0]) != table.width:
+        raise InputError(
+            str(path),
+            f"the space-separated header {header} has {table.width} columns but the first data row "
+            f"has {len(table.rows[0])}.",
+            "join the words of each column name (e.g. 'indentation_depth (nm)'), or separate the "
+            "columns by commas, semicolons or tabs.",
+        )
+    names = [_clean_name(name) for name in table.names]
+    wanted = {"depth": depth_column, "load": load_column, "time": time_column}
+    overrides = {"depth": depth_unit, "load": load_unit, "time": time_unit}
+    columns: dict[str, np.ndarray | None] = {}
+    for quantity_name, explicit in wanted.items():
+        option = f"{quantity_name}_column"
+        if explicit is not None:
+            key = _clean_name(explicit)
+            if key not in names:
+                raise InputError(
+                    option, f"no column {explicit!r} in {path.name} (columns: {names}).", "name one of them."
+                )
+            index = names.index(key)
+        else:
+            found = [i for i, name in enumerate(names) if name in _COLUMN_NAMES[quantity_name]]
+            if not found:
+                if quantity_name == "time":
+                    columns["time"] = None
+                    continue
+                raise InputError(
+                    option,
+                    f"no {quantity_name} column recognised in {path.name} (columns: {names}).",
+                    f"name it with {option}= (CLI: --{quantity_name}-column).",
+                )
+            index = found[0]
+        unit = overrides[quantity_name] or table.units[index]
+        if not unit:
+            raise InputError(
+                f"{quantity_name}_unit",
+                f"column {header[index]!r} of {path.name} has no unit.",
+                f"give it in the header, e.g. '{quantity_name} ({_EXAMPLE_UNITS[quantity_name]})', or pass "
+                f"{quantity_name}_unit= (CLI: --{quantity_name}-unit).",
+            )
+        factor = quantity(f"1 {unit}", _DIMENSIONS[quantity_name], field=f"{quantity_name}_unit")
+        values = []
+        for number, row in enumerate(table.rows, start=1):
+            try:
+                values.append(float(row[index]))
+            except (ValueError, IndexError):
+                raise InputError(
+                    str(path),
+                    f"data row {number}, column {header[index]!r}: {row[index : index + 1]} is not a number.",
+                    "remove text rows below the header, or mark them as comments with '#'.",
+                ) from None
+        columns[quantity_name] = np.asarray(values) * factor
+    return IndentationCurve(columns["depth"], columns["load"], columns["time"], source=path.name)
+
+
+def write_indentation_csv(
+    path: str | Path, curve: IndentationCurve, *, comments: Sequence[str] = (), depth_unit: str = "nm",
+    load_unit: str = "mN", time_unit: str = "s", digits: int = 8,
+) -> Path:  # fmt: skip
+    """Write a curve as CSV with ``time (s)``, ``depth (nm)``, ``load (mN)`` columns and ``#`` comments.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file (overwritten).
+    curve : IndentationCurve
+        The record (SI); its time column is written when it has one.
+    comments : sequence of str
+        Lines written first, each after ``# ``.
+    depth_unit, load_unit, time_unit : str
+        Units of the columns, written in the header.
+    digits : int
+        Significant digits of the values.
+
+    Returns
+    -------
+    Path
+        ``path``.
+
+    Raises
+    ------
+    UnitError
+        An unknown unit, or one of the wrong dimension.
+    """
+    path = Path(path)
+    scale = {
+        "depth": 1.0 / quantity(f"1 {depth_unit}", "length", field="depth_unit"),
+        "load": 1.0 / quantity(f"1 {load_unit}", "force", field="load_unit"),
+        "time": 1.0 / quantity(f"1 {time_unit}", "time", field="time_unit"),
+    }
+    lines = [f"# {c}" for c in comments]
+    header = [f"depth ({depth_unit})", f"load ({load_unit})"]
+    columns = [curve.depth * scale["depth"], curve.load * scale["load"]]
+    if curve.time is not None:
+        header.insert(0, f"time ({time_unit})")
+        columns.insert(0, curve.time * scale["time"])
+    lines.append(",".join(header))
+    for row in zip(*columns, strict=True):
+        lines.append(",".join(f"{v:.{digits}g}" for v in row))
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path

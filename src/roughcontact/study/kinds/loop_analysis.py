@@ -1,0 +1,163 @@
+r"""Study kind ``loop_analysis``: a measured friction loop analysed as paper 001 does (stroke, mu, K_L).
+
+One case is one record of tangential displacement and friction force at a constant normal force
+F0 (a CSV file, :func:`roughcontact.experiment.friction_loop.read_loop_csv`: columns found by name,
+``#`` comments, units from the header or ``displacement_unit`` / ``force_unit``). It wraps
+:func:`roughcontact.experiment.friction_loop.analyse_loop`:
+
+* the record is split into monotonic branches at its reversals, and the last complete loop (the
+  converged cycle, paper 001 sec. 4) is kept; its stroke d_s = max - min of the displacement;
+* mu = mean |F| on the gross-sliding plateaus / F0 (sec. 4);
+* paper 001 eq. 9, F = c1 (1 - (1 - c2 delta)^n), fitted to the pre-sliding part of each branch
+  from its reversal, and K_L = c1 c2 n (1 - c2 delta)^(n - 1) at the points A, B, C where the
+  fitted force change reaches ``fractions`` (0.25, 0.5, 0.75) of the branch's span (Fig. 10);
+* the energy dissipated per cycle, the area of the last loop.
+
+The rules where the paper is silent (reversal force, plateau, point D) are those of
+:mod:`roughcontact.experiment.friction_loop`. The file is read when the study is validated.
+
+Scalars: :meth:`~roughcontact.experiment.friction_loop.LoopAnalysis.scalars` (stroke, mu,
+normal_force, energy, c1, c2, n, span, direction, fraction_X, K_L_X, delta_X, distance_X for the
+points X, and distance_D). Dataset: the record, its last loop, the eq. 9 fits and the points.
+Figure: ``loop`` (the record, the last loop, both fits, the points A, B, C with their K_L).
+
+References
+----------
+Seed paper 001, sec. 4, sec. 5 eq. 9 and Fig. 10. doi:10.1115/1.4045900
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+from pydantic import Field, field_validator, model_validator
+from pydantic_core import PydanticCustomError
+
+from ...experiment.friction_loop import LoopAnalysis
+from ..kind import CaseOutput, CaseParameters, Kind
+from ..schema import Force
+
+
+class LoopAnalysisParameters(CaseParameters):
+    """Keys of a ``model = "loop_analysis"`` analysis (SI after validation).
+
+    Attributes
+    ----------
+    loop : Path
+        The record: a CSV of displacement and force (and optionally time), relative to the study file.
+    displacement_unit, force_unit : str
+        Units of its columns where the header gives none (default um and mN); a header unit that
+        contradicts them is refused.
+    normal_force : float
+        F0 of the record [N] (mu = plateau force / F0).
+    fractions : list of float
+        Fractions of the pre-sliding span at the points A, B, C (paper 001 marks them on Fig. 10
+        only; default 0.25, 0.5, 0.75).
+    branch : {"increasing", "decreasing"}
+        The branch of the last loop whose points are reported (default: along increasing
+        displacement, as the paper's Fig. 10).
+    """
+
+    loop: Path
+    displacement_unit: str = "um"
+    force_unit: str = "mN"
+    normal_force: Annotated[Force, Field(gt=0.0, allow_inf_nan=False)]
+    fractions: list[float] = Field(default_factory=lambda: [0.25, 0.5, 0.75], min_length=1, max_length=9)
+    branch: str = "increasing"
+
+    @field_validator("displacement_unit", "force_unit")
+    @classmethod
+    def _known_unit(cls, value: str, info) -> str:
+        from ...errors import InputError
+        from ...units import quantity
+
+        dimension = "length" if info.field_name == "displacement_unit" else "force"
+        try:
+            quantity(f"1 {value}", dimension, field=info.field_name)
+        except InputError as error:
+            raise PydanticCustomError(
+                "quantity",
+                "{problem}",
+                {
+                    "problem": f"{value!r} is not a unit of {dimension} ({error.problem.rstrip('.')})",
+                    "fix": "give one, e.g. 'um' or 'mN'.",
+                },
+            ) from None
+        return value
+
+    @model_validator(mode="after")
+    def _points(self) -> LoopAnalysisParameters:
+        if any(not 0.0 < f < 1.0 for f in self.fractions):
+            raise PydanticCustomError(
+                "quantity",
+                "fractions {fractions} must each lie in (0, 1)",
+                {"fractions": self.fractions, "fix": "e.g. fractions = [0.25, 0.5, 0.75]"},
+            )
+        if self.branch not in ("increasing", "decreasing"):
+            raise PydanticCustomError(
+                "quantity",
+                "unknown branch {branch!r}",
+                {"branch": self.branch, "fix": "use 'increasing' or 'decreasing'"},
+            )
+        return self
+
+
+def _read(parameters: LoopAnalysisParameters):
+    from ...experiment.friction_loop import read_loop_csv
+
+    return read_loop_csv(parameters.loop, parameters.displacement_unit, parameters.force_unit)
+
+
+def check(parameters: LoopAnalysisParameters) -> None:
+    """Read the record at validation time (its errors name the file, row or column)."""
+    _read(parameters)
+
+
+def run(parameters: LoopAnalysisParameters, inputs) -> CaseOutput:
+    """Analyse the last loop of the record; scalars and dataset of :class:`LoopAnalysis`."""
+    from ...experiment.friction_loop import analyse_loop
+
+    loop = _read(parameters)
+    analysis = analyse_loop(
+        loop.displacement,
+        loop.force,
+        parameters.normal_force,
+        fractions=tuple(parameters.fractions),
+        branch=parameters.branch,
+    )
+    return CaseOutput(analysis.scalars(), analysis.to_xarray())
+
+
+def _loop(records, context):
+    """Draw the record (grey), its last loop, the eq. 9 fits and the points with their K_L (Fig. 10)."""
+    import numpy as np
+
+    from ...plotting.presliding import plot_loop_analysis
+    from ...plotting.study import new_figure
+
+    chosen = [r for r in records if r.fields_path is not None][:4]
+    if not chosen:
+        return None
+    figure, axes = new_figure(1, len(chosen), width=5.5, height=4.4)
+    for ax, record in zip(axes[0], chosen, strict=True):
+        data = record.dataset()
+        plot_loop_analysis(
+            {name: np.asarray(data[name]) for name in data.variables},
+            record.scalars,
+            title=f"{Path(record.parameters['loop']).name}, F0 = {record.scalars['normal_force'] * 1e3:g} mN",
+            ax=ax,
+        )
+    return figure
+
+
+KIND = Kind(
+    name="loop_analysis",
+    summary="a measured friction loop as paper 001 analyses it: stroke, mu, eq. 9 fit, K_L at A, B, C",
+    parameters=LoopAnalysisParameters,
+    run=run,
+    units=LoopAnalysis.UNITS,
+    figures={"loop": _loop},
+    check=check,
+    headline=("stroke", "mu", "energy", "K_L_A", "K_L_B", "K_L_C"),
+)

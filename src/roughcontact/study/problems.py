@@ -1,0 +1,153 @@
+"""Problems found in a study document: where each sits, what is wrong, how to fix it.
+
+A study is validated whole before anything is computed, and every problem is collected rather
+than the first one raised. Each :class:`Problem` keeps both how its place is *shown*
+(``analysis[0] (contact) case 2 {'load': '1 kN'}.load``) and where it *is* in the document (the
+path ``("analysis", 0, "load")``), so a front end that built the document from its own options
+(the command line) can name the option the user typed instead of the study key.
+"""
+
+from __future__ import annotations
+
+import difflib
+from dataclasses import dataclass
+from typing import Any
+
+from pydantic import BaseModel, ValidationError
+
+from ..errors import InputError
+
+Path = tuple[str | int, ...]
+"""Where a value sits in a study document: section, table or analysis index, key, ..."""
+
+
+@dataclass(frozen=True)
+class Where:
+    """A place in the study document: its path and its label in messages."""
+
+    path: Path
+    label: str
+
+    def child(self, key: str | int, label: str | None = None) -> Where:
+        """Return the place of ``key`` inside this one (shown as ``label``, default ``LABEL.key``)."""
+        return Where((*self.path, key), label if label is not None else f"{self.label}.{key}")
+
+
+class Problem(tuple):
+    """One problem of a study document: a ``(field, problem, fix)`` triple that knows its place.
+
+    It iterates, indexes and compares as the triple (two cases meeting the same problem of a shared
+    table report it once); ``path`` says where the value sits in the document.
+
+    Attributes
+    ----------
+    field : str
+        The place as shown to the user.
+    problem : str
+        What is wrong, with the value where it helps.
+    fix : str or None
+        How to fix it.
+    path : tuple
+        Where the value sits in the document (``("materials", "film", "youngs_modulus")``).
+    """
+
+    path: Path
+
+    def __new__(cls, field: str, problem: str, fix: str | None, path: Path = ()):
+        """Make the triple, with its ``path`` in the document."""
+        self = super().__new__(cls, (field, problem, fix))
+        self.path = tuple(path)
+        return self
+
+    @property
+    def field(self) -> str:
+        """The place as shown to the user."""
+        return self[0]
+
+    @property
+    def problem(self) -> str:
+        """What is wrong."""
+        return self[1]
+
+    @property
+    def fix(self) -> str | None:
+        """How to fix it."""
+        return self[2]
+
+
+def _label(where: Where, loc: tuple) -> str:
+    parts = [where.label] if where.label else []
+    for item in loc:
+        if isinstance(item, int):
+            parts[-1] = f"{parts[-1]}[{item}]" if parts else f"[{item}]"
+        elif "[" not in str(item) and "(" not in str(item):  # skip pydantic's union branch tags
+            parts.append(str(item))
+    return ".".join(parts)
+
+
+def _path(where: Where, loc: tuple) -> Path:
+    return (*where.path, *(item for item in loc if "[" not in str(item) and "(" not in str(item)))
+
+
+def from_validation_error(
+    error: ValidationError, where: Where, schema: type[BaseModel] | None
+) -> list[Problem]:
+    """Turn a pydantic error into problems that show the bad value and say how to fix it."""
+    problems = []
+    for item in error.errors(include_url=False):
+        context = item.get("ctx") or {}
+        value = item.get("input")
+        whole_table = not item["loc"]  # a model-level check: the value is the whole table
+        if whole_table and context.get("field"):  # ... that names the key it is about
+            item = item | {"loc": (context["field"],)}
+        shown = "" if item["type"] == "missing" or whole_table else f" (got {value!r})"
+        fix = context.get("fix")
+        if item["type"] == "missing":
+            problem, fix = "is required but missing.", f"add {item['loc'][-1]} = ... to the table."
+        elif item["type"] == "extra_forbidden":
+            known = list(schema.model_fields) if schema is not None else []
+            close = difflib.get_close_matches(str(item["loc"][-1]), known, n=1)
+            problem = "is not a known key."
+            fix = (
+                f"did you mean {close[0]!r}?" if close else f"use one of {known}." if known else "remove it."
+            )
+            shown = ""
+        elif item["type"] in ("quantity", "shape", "topography", "material"):
+            problem = context.get("problem") or item["msg"]
+            problem = problem.rstrip(".") + "."
+            shown = "" if repr(value) in problem else shown
+        else:
+            problem = item["msg"].removeprefix("Value error, ").rstrip(".") + "."
+            fix = fix or _generic_fix(item["type"], context)
+        problems.append(Problem(_label(where, item["loc"]), problem + shown, fix, _path(where, item["loc"])))
+    return problems
+
+
+def _generic_fix(kind: str, context: dict) -> str | None:
+    """Return a fix for pydantic's own checks (bounds, choices, types), which carry none."""
+    bounds = {"greater_than": "gt", "greater_than_equal": "ge", "less_than": "lt", "less_than_equal": "le"}
+    if kind in bounds:
+        words = {"gt": "above", "ge": "at least", "lt": "below", "le": "at most"}[bounds[kind]]
+        return f"give a value {words} {context.get(bounds[kind])}."
+    if kind == "literal_error":
+        return f"use one of {context.get('expected')}."
+    if kind in ("int_parsing", "int_type", "int_from_float"):
+        return "give a whole number, e.g. 3."
+    if kind in ("float_parsing", "float_type", "finite_number"):
+        return "give a finite number, e.g. 0.3."
+    if kind in ("bool_parsing", "bool_type"):
+        return "write true or false."
+    if kind in ("string_type", "list_type", "tuple_type", "dict_type"):
+        return "see roughcontact models NAME for the key's type."
+    return None
+
+
+def collect(problems: list[Problem], where: Where, schema: type[BaseModel], raw: Any):
+    """Validate ``raw`` with ``schema``; on failure append its problems and return None."""
+    try:
+        return schema.model_validate(raw)
+    except ValidationError as error:
+        problems.extend(from_validation_error(error, where, schema))
+    except InputError as error:
+        problems.append(Problem(where.label, error.problem, error.fix, where.path))
+    return None
