@@ -1,20 +1,56 @@
 """roughcontact: contact mechanics of rough surfaces from measured topographies.
 
-The public API is curated here; everything is in SI units (m, Pa, N, J/m^2).
-Importing the package has no side effects (no logging set-up, no files touched).
+The names of the common jobs, all in SI units (m, Pa, N, J/m^2)::
+
+    import roughcontact as rc
+
+    scan = rc.read_topography("scan.di")                       # heights and size in metres
+    ball = rc.generate.sphere_with_roughness(256, 1.1e-3, radius=5e-3, rms_height=3e-6, seed=1)
+    pressure = rc.quantity("20 MPa", "pressure")
+    contact = rc.solve_normal(scan, rc.get_material("polysilicon"), mean_pressure=pressure)
+    contact.scalars(), contact.UNITS, contact.to_xarray()      # every result speaks this one protocol
+
+* surfaces: :class:`Topography`, :func:`read_topography`, :func:`save_topography`,
+  :func:`load_topography`, :mod:`generate`, :func:`spectral_moments`;
+* materials: :class:`Material`, :func:`get_material`, :func:`contact_modulus`;
+* models: :func:`solve_normal`, :func:`solve_tangential`, :func:`load_unload`,
+  :func:`solve_winkler_lj` (paper 000), :func:`statistical_load_unload` (paper 002),
+  :func:`presliding` (paper 001), :func:`analyse_loop`, :func:`oliver_pharr`;
+* studies: :func:`load_study`, :func:`run_study`;
+* units and errors: :func:`quantity`, :class:`InputError`, :class:`UnitError`,
+  :class:`UnsupportedFormatError`, :class:`ConvergenceError`.
+
+Everything else is in the subpackages, each with its own ``__all__``. Importing the package is
+cheap and has no side effects: the names are loaded when first used.
 """
 
-from importlib.metadata import PackageNotFoundError, version
+from importlib import import_module
 
+from ._version import __version__
 from .errors import ConvergenceError, InputError, UnitError, UnsupportedFormatError
-from .materials import Material, contact_modulus, get_material
-from .topography import Topography, load_topography, read_topography, save_topography
 from .units import quantity
 
-try:
-    __version__ = version("roughcontact")
-except PackageNotFoundError:  # running from a source tree that is not installed
-    __version__ = "0+unknown"
+_HOMES = {
+    "Topography": "roughcontact.topography",
+    "read_topography": "roughcontact.topography",
+    "save_topography": "roughcontact.topography",
+    "load_topography": "roughcontact.topography",
+    "spectral_moments": "roughcontact.topography",
+    "Material": "roughcontact.materials",
+    "get_material": "roughcontact.materials",
+    "contact_modulus": "roughcontact.materials",
+    "solve_normal": "roughcontact.contact",
+    "solve_tangential": "roughcontact.contact",
+    "load_unload": "roughcontact.contact",
+    "solve_winkler_lj": "roughcontact.friction",
+    "statistical_load_unload": "roughcontact.asperity",
+    "presliding": "roughcontact.models.paper001",
+    "analyse_loop": "roughcontact.experiment.friction_loop",
+    "oliver_pharr": "roughcontact.experiment.nanoindentation",
+    "load_study": "roughcontact.study",
+    "run_study": "roughcontact.study",
+}
+"""Public name -> the module that defines it (imported on first use)."""
 
 __all__ = [
     "ConvergenceError",
@@ -23,10 +59,38 @@ __all__ = [
     "Topography",
     "UnitError",
     "UnsupportedFormatError",
+    "__version__",
+    "analyse_loop",
     "contact_modulus",
+    "generate",
     "get_material",
+    "load_study",
     "load_topography",
+    "load_unload",
+    "oliver_pharr",
+    "presliding",
     "quantity",
     "read_topography",
+    "run_study",
     "save_topography",
+    "solve_normal",
+    "solve_tangential",
+    "solve_winkler_lj",
+    "spectral_moments",
+    "statistical_load_unload",
 ]
+
+
+def __getattr__(name: str):
+    """Load a public name from its module on first use (keeps ``import roughcontact`` light)."""
+    if name == "generate":
+        return import_module("roughcontact.topography.generate")
+    if name in _HOMES:
+        value = getattr(import_module(_HOMES[name]), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'roughcontact' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))

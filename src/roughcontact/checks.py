@@ -127,3 +127,27 @@ def finite_array(values, field: str) -> np.ndarray:
             "remove or interpolate the missing samples.",
         )
     return array
+
+
+def poissons_ratio_checked(value: float, field: str = "poissons_ratio") -> float:
+    """Return ``value`` as a float after checking that it is a Poisson's ratio, -1 < nu <= 0.5.
+
+    Parameters
+    ----------
+    value : float
+        The ratio (0.5 is incompressible, e.g. rubber).
+    field : str
+        The name of the input, for the error.
+
+    Raises
+    ------
+    InputError
+        A bool, a non-number, or a value outside (-1, 0.5].
+    """
+    if isinstance(value, bool) or not isinstance(value, Real) or not (-1.0 < value <= 0.5):
+        raise InputError(
+            field,
+            f"{value!r} is outside (-1, 0.5].",
+            "give a Poisson's ratio with -1 < nu <= 0.5 (0.5 = incompressible, e.g. rubber).",
+        )
+    return float(value)

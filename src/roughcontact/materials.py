@@ -37,21 +37,11 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from numbers import Real
 from types import MappingProxyType
 
-from .checks import positive
+from .checks import poissons_ratio_checked, positive
 from .errors import InputError
 from .units import quantity
-
-
-def _check_poissons_ratio(value: float, field: str = "poissons_ratio") -> None:
-    if isinstance(value, bool) or not isinstance(value, Real) or not (-1.0 < value <= 0.5):
-        raise InputError(
-            field,
-            f"{value!r} is outside (-1, 0.5].",
-            "give a Poisson's ratio with -1 < nu <= 0.5 (0.5 = incompressible, e.g. rubber).",
-        )
 
 
 @dataclass(frozen=True)
@@ -92,7 +82,7 @@ class Material:
 
     def __post_init__(self):
         positive(self.youngs_modulus, "youngs_modulus", example="70e9", unit="Pa")
-        _check_poissons_ratio(self.poissons_ratio)
+        poissons_ratio_checked(self.poissons_ratio)
         if self.hardness is not None:
             positive(self.hardness, "hardness", example="0.462e9", unit="Pa")
         if self.yield_strength is not None:
@@ -438,7 +428,7 @@ def winkler_factor(
     """
     for number, value in ((1, poissons_ratio_1), (2, poissons_ratio_2)):
         field = f"poissons_ratio_{number}"
-        _check_poissons_ratio(value, field)
+        poissons_ratio_checked(value, field)
         if value < 0:
             raise InputError(
                 field,
@@ -486,7 +476,7 @@ def reduced_modulus_to_youngs(reduced_modulus: float, indenter: Material, poisso
     Seed paper 001, eq. 8. doi:10.1115/1.4045900
     """
     positive(reduced_modulus, "reduced_modulus", example="3e9", unit="Pa")
-    _check_poissons_ratio(poissons_ratio)
+    poissons_ratio_checked(poissons_ratio)
     sample_compliance = 1.0 / reduced_modulus - _sum_over_bodies(indenter, None, _hertz_compliance)
     if sample_compliance <= 0:
         raise InputError(

@@ -1,9 +1,10 @@
 """roughcontact asperity: paper 002's table, moments with units, curves and figures, clear errors."""
 
-import csv
 import json
 
+import numpy as np
 import pytest
+import xarray as xr
 
 from roughcontact.cli import EXIT_INPUT_ERROR, main
 
@@ -14,28 +15,28 @@ def run(capsys, *argv):
     return status, captured.out, captured.err
 
 
-def test_paper002_json_reproduces_section_iv(capsys):
+def test_paper002_json_reproduces_section_iv(capsys, scalars, table):
     status, out, _ = run(capsys, "asperity", "--paper002", "--json", "--steps", "10")
     assert status == 0
-    document = json.loads(out)
-    parameters = document["parameters"]
+    parameters = scalars(out)
     assert parameters["summit_radius"] == pytest.approx(5.08e-6, rel=5e-3, abs=0)
     assert parameters["critical_interference"] == pytest.approx(0.0125e-6, rel=5e-3, abs=0)
     assert parameters["plasticity_index"] == pytest.approx(1.86, rel=5e-3, abs=0)
-    rows = {row["quantity"]: row for row in document["paper002_comparison"]}
-    assert rows["contact_modulus"]["ours_eq7_printed"] == pytest.approx(9.717e9, rel=1e-3, abs=0)
+    rows = {row["quantity"]: row for row in table(out, "paper002")}
+    assert rows["contact_modulus"]["printed_inputs_eq7_printed"] == pytest.approx(9.717e9, rel=1e-3, abs=0)
     # the statistical curve ran at the paper's 1000 uN peak, zero at 25 uN
-    assert document["statistical"]["peak_interference"] > document["statistical"]["residual_interference"] > 0
+    assert parameters["peak_force"] == pytest.approx(1e-3, rel=1e-9)
+    assert parameters["peak_interference"] > parameters["residual_interference"] > 0
 
 
 def test_text_table_names_paper_and_both_readings(capsys):
     status, out, _ = run(capsys, "asperity", "--paper002", "--steps", "5")
     assert status == 0
-    assert "paper vs ours" in out
+    assert "table paper002" in out
     assert "8.31 GPa" in out and "7.973 GPa" in out and "9.717 GPa" in out
 
 
-def test_moments_with_units_equal_the_paper_run(capsys):
+def test_moments_with_units_equal_the_paper_run(capsys, scalars):
     moments = ["0.00213279 um^2", "0.00230023", "0.0171036 1/um^2"]
     status, out, _ = run(
         capsys,
@@ -44,58 +45,46 @@ def test_moments_with_units_equal_the_paper_run(capsys):
         *moments,
         "--material",
         "SU-8",
-        "--counter",
+        "--counter-body",
         "diamond flat tip",
         "--json",
     )
     assert status == 0
-    parameters = json.loads(out)["parameters"]
+    parameters = scalars(out)
     assert parameters["m4"] == pytest.approx(0.0171036e12, rel=1e-12, abs=0)
     assert parameters["summit_height_std"] == pytest.approx(0.0431e-6, rel=5e-3, abs=0)
-    assert "statistical" not in json.loads(out)  # no --max-force: parameters only
+    assert "peak_interference" not in parameters  # no --max-force: parameters only
 
 
-def test_output_folder_gets_curves_netcdf_and_figures(capsys, tmp_path):
-    status, out, err = run(
-        capsys,
-        "asperity",
-        "--paper002",
-        "--bem",
-        "--grid",
-        "24",
-        "--steps",
-        "6",
-        "-o",
-        tmp_path,
-        "--dpi",
-        "40",
+def test_output_folder_gets_curves_and_figures(capsys, tmp_path):
+    out = tmp_path / "out"
+    status, _, err = run(
+        capsys, "asperity", "--paper002", "--bem", "--grid", "24", "--steps", "6", "-o", out, "--dpi", "40"
     )
     assert status == 0, err
     for name in (
-        "load_unload.csv",
-        "bem_island.csv",
-        "load_unload.nc",
-        "fig7_load_interference.png",
-        "contact_area.png",
-        "von_mises.png",
-        "asperity.json",
+        "asperity_load_interference",
+        "asperity_contact_area",
+        "bem_load_interference",
+        "bem_von_mises",
     ):
-        assert (tmp_path / name).stat().st_size > 0
-    with open(tmp_path / "load_unload.csv") as handle:
-        rows = list(csv.DictReader(handle))
-    assert len(rows) == 11  # 6 loading + 5 unloading
-    assert float(rows[0]["force_N"]) == pytest.approx(25e-6, rel=1e-8, abs=0)
-    assert float(rows[5]["force_N"]) == pytest.approx(1e-3, rel=1e-8, abs=0)
+        assert (out / "figures" / f"{name}.png").stat().st_size > 0
+    (curve,) = (out / "cases" / "asperity").glob("*.nc")
+    with xr.open_dataset(curve) as data:
+        force = np.asarray(data["force"])
+        assert force.size == 11  # 6 loading + 5 unloading
+        assert force[0] == pytest.approx(25e-6, rel=1e-8, abs=0)
+        assert force[5] == pytest.approx(1e-3, rel=1e-8, abs=0)
+    assert (out / "cases" / "bem").is_dir() and (out / "report.html").is_file()
 
 
 def test_measured_curve_csv_is_drawn(capsys, tmp_path):
     measured = tmp_path / "measured.csv"
     measured.write_text("interference_m,force_N\n0,25e-6\n2e-8,3e-4\n5e-8,1e-3\n")
-    status, _, err = run(
-        capsys, "asperity", "--paper002", "--steps", "4", "--measured", measured, "-o", tmp_path
-    )
+    out = tmp_path / "out"
+    status, _, err = run(capsys, "asperity", "--paper002", "--steps", "4", "--measured", measured, "-o", out)
     assert status == 0, err
-    assert (tmp_path / "fig7_load_interference.png").exists()
+    assert (out / "figures" / "asperity_load_interference.png").exists()
 
 
 def test_bad_input_gives_one_clear_line(capsys):
@@ -118,14 +107,14 @@ def test_bad_input_gives_one_clear_line(capsys):
         "--material-poissons-ratio",
         "0.6",
     )
-    assert status == EXIT_INPUT_ERROR and "poissons_ratio" in err
+    assert status == EXIT_INPUT_ERROR and "--material-poissons-ratio" in err
     status, _, err = run(
         capsys, "asperity", "--moments", "1 um", "0.002", "0.017 1/um^2", "--material", "SU-8"
     )
     assert status == EXIT_INPUT_ERROR and "--moments m0" in err
 
 
-def test_file_with_measured_summit_heights(capsys, shared_topographies):
+def test_file_with_measured_summit_heights(capsys, shared_topographies, scalars):
     argv = [
         "asperity",
         shared_topographies / "top-1.top",
@@ -148,6 +137,7 @@ def test_file_with_measured_summit_heights(capsys, shared_topographies):
         "5",
     )
     assert status == 0, err
-    document = json.loads(out)
-    assert document["parameters"]["summit_radius"] > 0
-    assert document["statistical"]["peak_interference"] > 0
+    parameters = scalars(out)
+    assert parameters["summit_radius"] > 0
+    assert parameters["peak_interference"] > 0
+    assert json.loads(out)["analyses"][0]["cases"][0]["parameters"]["nominal_area"] == pytest.approx(1e-10)

@@ -161,32 +161,38 @@ def test_console_script_runs_as_module():
     assert done.stdout.startswith("roughcontact ")
 
 
-def test_contact_solves_a_real_scan_and_writes_results(capsys, shared_topographies, tmp_path):
+def test_contact_solves_a_real_scan_and_writes_results(capsys, shared_topographies, tmp_path, scalars):
     import xarray as xr
 
-    status, out, err = run(
+    out = tmp_path / "out"
+    status, stdout, err = run(
         capsys,
         "contact",
         shared_topographies / "top-1.top",
         "--material",
         "polysilicon",
-        "--counter",
+        "--counter-body",
         "SiO2",
         "--pressure",
         "50 MPa",
         "-o",
-        tmp_path,
+        out,
         "--json",
     )
     assert status == 0, err
-    scalars = json.loads(out)
-    assert scalars["mean_pressure"] == pytest.approx(50e6, rel=1e-12, abs=0)
-    assert 0 < scalars["contact_fraction"] < 1
-    assert scalars["residual"] <= 1e-8
-    assert (tmp_path / "contact.png").read_bytes().startswith(PNG_MAGIC)
-    with xr.open_dataset(tmp_path / "contact.nc", engine="h5netcdf") as stored:
-        assert stored["pressure"].attrs["units"] == "Pa"
-        assert float(stored["pressure"].mean()) == pytest.approx(50e6, rel=1e-12, abs=0)
+    values = scalars(stdout)
+    assert values["mean_pressure"] == pytest.approx(50e6, rel=1e-12, abs=0)
+    assert 0 < values["contact_fraction"] < 1
+    assert values["residual"] <= 1e-8
+    assert (out / "figures" / "contact_contact.png").read_bytes().startswith(PNG_MAGIC)
+    assert (out / "report.html").is_file() and (out / "results.csv").is_file()
+    (stored,) = (out / "cases" / "contact").glob("*.nc")
+    with xr.open_dataset(stored) as data:
+        assert data["pressure"].attrs["units"] == "Pa"
+        assert float(data["pressure"].mean()) == pytest.approx(50e6, rel=1e-12, abs=0)
+    # the command's study, written beside its results, reruns as a study file
+    status, stdout, err = run(capsys, "validate", out / "study.toml")
+    assert status == 0, err
 
 
 def test_contact_with_user_material_and_bad_inputs(capsys, shared_topographies):

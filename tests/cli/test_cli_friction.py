@@ -1,6 +1,5 @@
 """The friction and friction-compare subcommands end to end, on small generated grids."""
 
-import json
 from pathlib import Path
 
 import pytest
@@ -35,10 +34,11 @@ def files(tmp_path_factory):
     return {name: folder / f"{name}.nc" for name in paths}
 
 
-def test_friction_text_json_and_outputs(capsys, files, tmp_path):
+def test_friction_text_json_and_outputs(capsys, files, tmp_path, cases):
     status, out, err = run(capsys, "friction", files["scan"], files["tip"], *COMMON, "--load", "10 uN")
     assert status == 0, err
-    assert "mu" in out and "adhesive_friction" in out and "readings: defaults" in out
+    assert "mu" in out and "adhesive_friction" in out and "readings" in out and "defaults" in out
+    folder = tmp_path / "out"
     status, out, _ = run(
         capsys,
         "friction",
@@ -54,20 +54,21 @@ def test_friction_text_json_and_outputs(capsys, files, tmp_path):
         "100 uN",
         "--crossover",
         "-o",
-        tmp_path,
+        folder,
     )
     assert status == 0
-    document = json.loads(out)
-    assert document["readings"]["contact"] == "zero_gap"
-    assert len(document["sweep"]["mu"]) == 3 and document["scalars"]["load"] == pytest.approx(1e-6, rel=1e-12)
-    assert "crossover_load" in document
-    assert (tmp_path / "friction.nc").is_file() and (tmp_path / "friction_sweep.nc").is_file()
-    assert (tmp_path / "friction_vs_load.png").read_bytes()[:8] == PNG_MAGIC
+    found = cases(out)
+    assert found[0]["parameters"]["readings"]["contact"] == "zero_gap"
+    assert found[0]["scalars"]["readings"] == "contact=zero_gap"
+    assert len(found) == 3 and found[0]["scalars"]["normal_force"] == pytest.approx(1e-6, rel=1e-12)
+    assert all("crossover_load" in case["scalars"] for case in found)
+    assert len(list((folder / "cases" / "friction").glob("*.nc"))) == 3
+    assert (folder / "figures" / "friction_friction_vs_load.png").read_bytes()[:8] == PNG_MAGIC
 
 
-def test_friction_hold_time_changes_mu(capsys, files):
+def test_friction_hold_time_changes_mu(capsys, files, scalars):
     _, out, _ = run(capsys, "friction", files["scan"], files["tip"], *COMMON, "--json")
-    fresh = json.loads(out)["scalars"]["mu"]
+    fresh = scalars(out)["mu"]
     _, out, _ = run(
         capsys,
         "friction",
@@ -82,22 +83,22 @@ def test_friction_hold_time_changes_mu(capsys, files):
         "--hold-time",
         "100 s",
     )
-    assert json.loads(out)["scalars"]["mu"] != fresh
+    assert scalars(out)["mu"] != fresh
 
 
 @pytest.mark.parametrize(
-    "extra, field",
+    "extra, option",
     [
-        (["--surface-energy", "-5 mJ/m^2"], "surface_energy"),
-        (["--epsilon", "0 nm"], "epsilon"),
-        (["--load", "1 N"], "load"),
-        (["--reading", "contact=glued"], "readings.contact"),
+        (["--surface-energy", "-5 mJ/m^2"], "--surface-energy"),
+        (["--epsilon", "0 nm"], "--epsilon"),
+        (["--load", "1 N"], "--normal-force"),
+        (["--reading", "contact=glued"], "--reading"),
     ],
 )
-def test_friction_bad_input_exits_with_the_field(capsys, files, extra, field):
+def test_friction_bad_input_exits_naming_the_option(capsys, files, extra, option):
     status, _, err = run(capsys, "friction", files["scan"], files["tip"], *COMMON, *extra)
     assert status == EXIT_INPUT_ERROR
-    assert field in err
+    assert f"error: {option}" in err, err
 
 
 def test_friction_mismatched_grids_refused_then_resampled(capsys, files):
@@ -107,21 +108,21 @@ def test_friction_mismatched_grids_refused_then_resampled(capsys, files):
     assert status == 0, err
 
 
-def test_friction_compare_with_scans_and_synthetic(capsys, files, tmp_path):
+def test_friction_compare_with_scans_and_synthetic(capsys, files, tmp_path, table):
     measured = tmp_path / "measured.csv"
     measured.write_text("# test values\nsample,mu\nA,3.0\nA,3.2\nB,3.1\nB,3.3\nC,2.9\nC,3.0\n")
     samples = [f"{name}={files['scan']},{files['scan2']}" for name in "ABC"]
-    argv = ["friction-compare", measured, "--tip", files["tip"], "--json", "-o", tmp_path]
+    folder = tmp_path / "out"
+    argv = ["friction-compare", measured, "--tip", files["tip"], "--json", "-o", folder]
     for sample in samples:
         argv += ["--sample", sample]
     status, out, err = run(capsys, *argv)
     assert status == 0, err
-    document = json.loads(out)
-    assert [row["sample"] for row in document["samples"]] == ["A", "B", "C"]
-    assert (tmp_path / "mu_boxes.png").read_bytes()[:8] == PNG_MAGIC
+    assert [row["sample"] for row in table(out, "comparison")] == ["A", "B", "C"]
+    assert (folder / "figures" / "friction_mu_boxes.png").read_bytes()[:8] == PNG_MAGIC
 
 
 def test_friction_compare_paper000_synthetic_case_runs(capsys):
-    status, out, err = run(capsys, "friction-compare", EXAMPLE)
+    status, out, err = run(capsys, "friction-compare", EXAMPLE, "--grid", "64")
     assert status == 0, err
-    assert "Pearson r" in out and "Ra 1.7 nm" in out
+    assert "pearson_r" in out and "Ra 1.7 nm" in out

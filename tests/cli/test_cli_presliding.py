@@ -1,6 +1,5 @@
 """roughcontact presliding and loop-analysis: outputs, JSON, units and clear errors (small grids)."""
 
-import json
 from pathlib import Path
 
 import numpy as np
@@ -32,18 +31,19 @@ def ball_file(tmp_path_factory):
     return path
 
 
-def test_presliding_on_a_file_writes_loops_table_and_figures(capsys, tmp_path, ball_file):
-    status, out, err = run(
+def test_presliding_on_a_file_writes_loops_table_and_figures(capsys, tmp_path, ball_file, scalars):
+    out = tmp_path / "out"
+    status, stdout, err = run(
         capsys,
         "presliding",
         ball_file,
         "--material",
         "POM",
-        "--counter",
+        "--counter-body",
         "silicon wafer",
-        "--force",
+        "--normal-force",
         "5 mN",
-        "--mu",
+        "--friction-coefficient",
         "0.1",
         "--stroke",
         "0.4 um",
@@ -54,24 +54,25 @@ def test_presliding_on_a_file_writes_loops_table_and_figures(capsys, tmp_path, b
         "--measured",
         MEASURED,
         "-o",
-        tmp_path,
+        out,
         "--json",
     )
     assert status == 0, err
-    (row,) = json.loads(out)
-    assert row["mu"] == 0.1 and row["F0 [N]"] == pytest.approx(5e-3)
+    row = scalars(stdout)
+    assert row["friction_coefficient"] == 0.1 and row["normal_force"] == pytest.approx(5e-3)
     assert row["mu_from_loop"] == pytest.approx(0.1, rel=1e-3)  # the loop slides at mu F0
-    assert 0 < row["K_L_C [N/m]"] < row["K_L_B [N/m]"] < row["K_L_A [N/m]"]
-    assert row["K_L_A_mindlin_printed [N/m]"] == pytest.approx(4 * row["K_L_A_mindlin_johnson [N/m]"])
-    for name in ("presliding.json", "loops.png", "stick_slip.png", "loop_ball_5_mN.csv"):
-        assert (tmp_path / name).stat().st_size > 0
+    assert 0 < row["K_L_C"] < row["K_L_B"] < row["K_L_A"]
+    assert row["K_L_A_mindlin_printed"] == pytest.approx(4 * row["K_L_A_mindlin_johnson"])
+    for name in ("loops", "stick_slip", "lateral_stiffness"):
+        assert (out / "figures" / f"presliding_{name}.png").stat().st_size > 0
+    assert (out / "tables" / "presliding_measured_loop.csv").stat().st_size > 0
 
 
-def test_presliding_errors_name_the_field(capsys, tmp_path, ball_file):
+def test_presliding_errors_name_the_option(capsys, tmp_path, ball_file):
     status, _, err = run(
-        capsys, "presliding", ball_file, "--material", "POM", "--force", "5 mN", "-o", tmp_path
+        capsys, "presliding", ball_file, "--material", "POM", "--normal-force", "5 mN", "--stroke", "1 um"
     )
-    assert status == EXIT_INPUT_ERROR and "--mu" in err
+    assert status == EXIT_INPUT_ERROR and "--friction-coefficient" in err
     status, _, err = run(
         capsys,
         "presliding",
@@ -84,8 +85,6 @@ def test_presliding_errors_name_the_field(capsys, tmp_path, ball_file):
         "0.1",
         "--stroke",
         "1 kg",
-        "-o",
-        tmp_path,
     )
     assert status == EXIT_INPUT_ERROR and "--stroke" in err
     status, _, err = run(capsys, "presliding", "-o", tmp_path)
@@ -105,26 +104,36 @@ def test_paper001_case_uses_table_1_and_2():
         paper001.run_case("POM", 0.03)
 
 
-def test_loop_analysis_of_the_measured_example(capsys):
+def test_loop_analysis_of_the_measured_example(capsys, tmp_path, scalars):
     status, out, _ = run(capsys, "loop-analysis", MEASURED, "--normal-force", "25 mN", "--json")
     assert status == 0
-    scalars = json.loads(out)
-    assert scalars["mu"] == pytest.approx(0.153, rel=0.005)
-    status, out, _ = run(capsys, "loop-analysis", MEASURED, "--normal-force", "25 mN")
-    assert "K_L at A" in out and "stroke" in out
+    assert scalars(out)["mu"] == pytest.approx(0.153, rel=0.005)
+    status, out, _ = run(capsys, "loop-analysis", MEASURED, "--normal-force", "25 mN", "-o", tmp_path / "out")
+    assert "K_L_A" in out and "stroke" in out and "kN/m" in out
+    assert (tmp_path / "out" / "figures" / "loop_loop.png").stat().st_size > 0
 
 
-BALL_OPTIONS = ("--material", "POM", "--counter", "silicon wafer", "--force", "5 mN", "--mu", "0.1")
+BALL_OPTIONS = (
+    "--material",
+    "POM",
+    "--counter-body",
+    "silicon wafer",
+    "--normal-force",
+    "5 mN",
+    "--mu",
+    "0.1",
+)
 
 
-def _steps(path) -> list[dict]:
-    import csv
+def _steps(folder):
+    """The per-step series of the one case of a command's output folder (from the unloaded start)."""
+    import xarray as xr
 
-    with open(path, newline="") as handle:
-        return list(csv.DictReader(handle))
+    (stored,) = (folder / "cases" / "presliding").glob("*.nc")
+    return xr.load_dataset(stored)
 
 
-def test_a_path_file_reproduces_the_stroke_programme(capsys, tmp_path, ball_file):
+def test_a_path_file_reproduces_the_stroke_programme(capsys, tmp_path, ball_file, scalars):
     """The same steps written in a CSV (in um) give the --stroke run's forces, to round-off."""
     from roughcontact.contact.paths import stroke_path
 
@@ -137,21 +146,18 @@ def test_a_path_file_reproduces_the_stroke_programme(capsys, tmp_path, ball_file
     assert status == 0, err
     status, out, err = run(capsys, "presliding", *common, "--path", path, "-o", tmp_path / "path", "--json")
     assert status == 0, err
-    row = json.loads(out)
+    row = scalars(out)
     assert row["control"] == "displacement" and row["steps"] == len(steps)
-    expected = _steps(tmp_path / "stroke" / "loop_ball_5_mN.csv")
-    found = _steps(tmp_path / "path" / "path_result.csv")
-    for column in ("delta_x [m]", "F_x [N]", "stick_area [m^2]"):
-        np.testing.assert_allclose(
-            [float(r[column]) for r in found], [float(r[column]) for r in expected], rtol=1e-9, atol=1e-18
-        )
+    expected, found = _steps(tmp_path / "stroke"), _steps(tmp_path / "path")
+    for column in ("delta_x", "force_x", "stick_area"):
+        np.testing.assert_allclose(found[column], expected[column], rtol=1e-9, atol=1e-18)
     assert row["mu_from_loop"] == pytest.approx(0.1, rel=1e-3)
-    assert len(row["energy_per_loop [J]"]) == 1 and row["energy_per_loop [J]"][0] > 0
-    for name in ("presliding.json", "loops.png", "stick_slip.png", "path_result.csv"):
-        assert (tmp_path / "path" / name).stat().st_size > 0
+    assert row["loops"] == 1 and row["energy_last_loop"] > 0
+    for name in ("loops", "stick_slip"):
+        assert (tmp_path / "path" / "figures" / f"presliding_{name}.png").stat().st_size > 0
 
 
-def test_a_force_path_file_runs_under_force_control(capsys, tmp_path, ball_file):
+def test_a_force_path_file_runs_under_force_control(capsys, tmp_path, ball_file, scalars):
     """Q_x in mN (+-0.5 mu F0 cycles): the applied forces are met; the loop dissipates energy."""
     amplitude = 0.5 * 0.1 * 5.0  # mN
     up = np.linspace(0, amplitude, 6)[1:]
@@ -159,39 +165,43 @@ def test_a_force_path_file_runs_under_force_control(capsys, tmp_path, ball_file)
     steps = np.concatenate([up, down, down[::-1][1:], [amplitude]])
     path = tmp_path / "force.csv"
     path.write_text("Q_x [mN],Q_y [mN]\n" + "\n".join(f"{float(q)!r},0" for q in steps) + "\n")
-    status, out, err = run(
-        capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path, "-o", tmp_path, "--json"
+    out = tmp_path / "out"
+    status, stdout, err = run(
+        capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path, "-o", out, "--json"
     )
     assert status == 0, err
-    row = json.loads(out)
+    row = scalars(stdout)
     assert row["control"] == "force"
-    forces = [float(r["F_x [N]"]) for r in _steps(tmp_path / "path_result.csv")]
+    forces = _steps(out)["force_x"].values[1:]  # step 0 is the unloaded start
     np.testing.assert_allclose(forces, 1e-3 * steps, rtol=1e-9, atol=1e-15)
     assert row["last_stick_fraction"] > 0  # below mu F0 part of the contact sticks
-    assert "mu_from_loop" not in row and "K_L_A [N/m]" not in row  # no sliding plateau to analyse
-    assert len(row["energy_per_loop [J]"]) == 1 and row["energy_per_loop [J]"][0] > 0
+    assert row["mu_from_loop"] is None and row["K_L_A"] is None  # no sliding plateau to analyse (NaN)
+    energies = _steps(out)["loop_energy"].values
+    assert row["loops"] == energies.size == 1 and energies[0] > 0 and row["energy_last_loop"] == energies[0]
 
 
-def test_a_loop_too_coarse_for_the_eq9_fit_keeps_its_results_and_says_why(capsys, tmp_path, ball_file):
+def test_a_loop_too_coarse_for_the_eq9_fit_keeps_its_results_and_says_why(
+    capsys, tmp_path, ball_file, scalars
+):
     """Two steps per stroke slide at once: no pre-sliding samples to fit, yet the run and its loop stand."""
     path = tmp_path / "coarse.csv"
     path.write_text("x [um]\n0.4\n0\n-0.4\n0\n0.4\n0\n-0.4\n0\n0.4\n")
-    status, out, err = run(
-        capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path, "-o", tmp_path, "--json"
+    out = tmp_path / "out"
+    status, stdout, err = run(
+        capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path, "-o", out, "--json"
     )
     assert status == 0, err
-    row = json.loads(out)
-    assert row["analysis_note"].startswith("last loop not analysed") and "K_L_A [N/m]" not in row
-    assert len(row["energy_per_loop [J]"]) == 2 and min(row["energy_per_loop [J]"]) > 0
+    row = scalars(stdout)
+    assert row["analysis_note"].startswith("last loop not analysed") and row["K_L_A"] is None
+    energies = _steps(out)["loop_energy"].values
+    assert row["loops"] == energies.size == 2 and energies.min() > 0
 
 
 def test_path_and_stroke_together_are_refused(capsys, tmp_path, ball_file):
     path = tmp_path / "path.csv"
     path.write_text("x [um]\n0.1\n")
-    status, _, err = run(
-        capsys, "presliding", ball_file, *BALL_OPTIONS, "--stroke", "1 um", "--path", path, "-o", tmp_path
-    )
+    status, _, err = run(capsys, "presliding", ball_file, *BALL_OPTIONS, "--stroke", "1 um", "--path", path)
     assert status == EXIT_INPUT_ERROR and "--path" in err
     path.write_text("x\n0.1\n")
-    status, _, err = run(capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path, "-o", tmp_path)
+    status, _, err = run(capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path)
     assert status == EXIT_INPUT_ERROR and "has no unit" in err

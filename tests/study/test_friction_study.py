@@ -58,7 +58,13 @@ def _check_results_table(output):
     rows = _rows(output, "validation")
     assert len(rows) == 3 * 3
     assert {row["status"] for row in rows} == {"done"}
-    for column in ("mu", "friction [N]", "adhesive_friction [N]", "mechanical_friction [N]", "normal_force [N]"):
+    for column in (
+        "mu",
+        "friction [N]",
+        "adhesive_friction [N]",
+        "mechanical_friction [N]",
+        "normal_force [N]",
+    ):
         assert column in rows[0], column
     assert "crossover_load [N]" in rows[0] and "topographies.scan.ra [m]" in rows[0]
     for row in rows:
@@ -75,7 +81,9 @@ def _check_results_table(output):
     assert len({row["mu"] for row in rows}) == len(rows)
     sweep = _rows(output, "load_sweep")
     assert len(sweep) == 3 * 3 and {row["status"] for row in sweep} == {"done"}
-    assert sorted({float(row["normal_force [N]"]) for row in sweep}) == pytest.approx([1e-6, math.sqrt(1e-9), 1e-3])
+    assert sorted({float(row["normal_force [N]"]) for row in sweep}) == pytest.approx(
+        [1e-6, math.sqrt(1e-9), 1e-3]
+    )
 
 
 def _check_comparison(output, study):
@@ -193,7 +201,7 @@ def test_scalars_are_those_of_the_model_called_directly(tmp_path, extra, options
         scan,
         get_material("polysilicon"),
         get_material("SiO2"),
-        counter_surface=tip,
+        counter_topography=tip,
         layer_thickness=40e-9,
         epsilon=1.5e-9,
         surface_energy=0.045,
@@ -225,7 +233,7 @@ def test_a_case_runs_through_the_runner_with_the_same_numbers(tmp_path):
             scan,
             get_material("polysilicon"),
             get_material("SiO2"),
-            counter_surface=tip,
+            counter_topography=tip,
             layer_thickness=40e-9,
             epsilon=1.5e-9,
             surface_energy=0.045,
@@ -278,7 +286,9 @@ def test_a_bad_cutoff_unit_is_refused(tmp_path):
 def test_a_missing_load_is_refused_before_anything_runs(tmp_path):
     text = DIRECT.format(load="7 uN", extra="").replace('normal_force = "7 uN"\n', "")
     problems, _ = _problems(tmp_path, text)
-    assert [(f.rsplit(".", 1)[-1], p) for f, p, _ in problems] == [("normal_force", "is required but missing.")]
+    assert [(f.rsplit(".", 1)[-1], p) for f, p, _ in problems] == [
+        ("normal_force", "is required but missing.")
+    ]
 
 
 def test_a_load_that_is_not_a_force_is_refused(tmp_path):
@@ -455,7 +465,8 @@ def test_a_load_sweep_is_compared_at_the_load_of_the_measurements(tmp_path, capl
         at_10 = [
             float(r["mu"])
             for r in rows
-            if r["sample"] == row["sample"] and math.isclose(float(r["normal_force [N]"]), 1e-5, rel_tol=1e-12)
+            if r["sample"] == row["sample"]
+            and math.isclose(float(r["normal_force [N]"]), 1e-5, rel_tol=1e-12)
         ]
         assert len(at_10) == int(row["n_simulated"]) == 3
         expected = stats.ttest_ind(at_10, measured[row["sample"]], equal_var=False).pvalue

@@ -108,7 +108,13 @@ def test_result_fields_and_xarray(pair):
 def test_solve_winkler_lj_matches_the_model(pair):
     scan, tip = pair
     direct = solve_winkler_lj(
-        scan, POLY, SIO2, normal_force=1e-5, counter_topography=tip, layer_thickness=50e-9, surface_energy=0.05
+        scan,
+        POLY,
+        SIO2,
+        normal_force=1e-5,
+        counter_topography=tip,
+        layer_thickness=50e-9,
+        surface_energy=0.05,
     )
     assert direct.mu == model(pair).solve(1e-5).mu
 

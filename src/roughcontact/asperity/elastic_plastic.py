@@ -43,9 +43,8 @@ import math
 
 import numpy as np
 
-from ..checks import positive
+from ..checks import poissons_ratio_checked, positive
 from ..errors import InputError
-from ..materials import _check_poissons_ratio
 
 KOGUT_ETSION_MAX = 110.0
 """Upper end of the Kogut-Etsion fits in omega* (fully plastic beyond)."""
@@ -99,7 +98,7 @@ def contact_pressure_factor(poissons_ratio: float) -> float:
     Chang, Etsion and Bogy (1987), doi:10.1115/1.3261348; Kogut and Etsion (2002),
     doi:10.1115/1.1490373. Seed paper 002, eq. 8.
     """
-    _check_poissons_ratio(poissons_ratio)
+    poissons_ratio_checked(poissons_ratio)
     return 0.454 + 0.41 * poissons_ratio
 
 
@@ -303,7 +302,7 @@ def jackson_green_critical_interference(
     positive(yield_strength, "yield_strength", example="0.165e9", unit="Pa")
     positive(contact_modulus, "contact_modulus", example="7.97e9", unit="Pa")
     positive(radius, "radius", example="5.08e-6", unit="m")
-    _check_poissons_ratio(poissons_ratio)
+    poissons_ratio_checked(poissons_ratio)
     factor = 1.295 * math.exp(0.736 * poissons_ratio)
     return (math.pi * factor * yield_strength / (2.0 * contact_modulus)) ** 2 * radius
 

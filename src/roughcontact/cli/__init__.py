@@ -18,7 +18,7 @@ import logging
 import sys
 from collections.abc import Sequence
 
-from .. import __version__
+from .._version import __version__
 from ..errors import ConvergenceError, InputError
 from . import asperity, contact, friction, indentation, presliding, study, topography
 from .options import EXIT_CASES_FAILED, EXIT_INPUT_ERROR, EXIT_INTERRUPTED, EXIT_NOT_CONVERGED

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from ..errors import InputError
 from ..models import paper002
-from .options import CommandStudy, add_material_options, add_output_options, file_options
+from .options import CommandStudy, add_material_options, add_output_options, new_command, options
 from .output import run_command
 
 
@@ -56,17 +56,12 @@ def _asperity(args: argparse.Namespace) -> int:
         | {
             "material": (material, "--material"),
             "counter_body": (counter, "--counter-body"),
-            "hardness": (args.hardness, "--hardness"),
-            "yield_strength": (args.yield_strength, "--yield-strength"),
-            "modulus_form": (args.modulus_form, "--modulus-form"),
             "max_force": (max_force, "--max-force"),
             "nominal_area": (area if max_force is not None else None, "--area"),
             "reference_force": (reference if max_force is not None else None, "--reference-force"),
-            "law": (args.law, "--law"),
-            "distribution": (args.distribution, "--distribution"),
-            "steps": (args.steps, "--steps"),
             "paper002": (paper or None, "--paper002"),
-        },
+        }
+        | options(args, "hardness", "yield_strength", "modulus_form", "law", "distribution", "steps"),
     )
     if args.bem:
         index = _island(command, args, material, max_force, reference)
@@ -107,14 +102,16 @@ def add_commands(commands) -> None:
     """Add ``asperity`` to the subparsers ``commands``."""
     from ..asperity import LOADING_LAWS
 
-    asperity = commands.add_parser(
+    asperity = new_command(
+        commands,
         "asperity",
-        parents=[file_options(required=False)],
-        help="statistical elastic-plastic asperity model (GW/McCool, CEB, Kogut-Etsion, KKE) and paper 002",
-        description="Asperity parameters (R_asp, sigma_s, E', K, omega_c, psi) from a topography FILE or "
+        _asperity,
+        "statistical elastic-plastic asperity model (GW/McCool, CEB, Kogut-Etsion, KKE) and paper 002",
+        "Asperity parameters (R_asp, sigma_s, E', K, omega_c, psi) from a topography FILE or "
         "--moments, the statistical load-unload curve with --max-force and --area (study model "
         "'asperity'), and the BEM island compression with --bem (model 'load_unload'). --paper002 fills in "
         "the paper's moments, materials and loads and adds its section IV table (paper vs ours).",
+        file=False,
     )
     asperity.add_argument(
         "--moments", nargs=3, metavar=("M0", "M2", "M4"), help="e.g. '0.00213 um^2' 0.0023 '0.0171 1/um^2'"
@@ -153,4 +150,3 @@ def add_commands(commands) -> None:
         "--measured", type=Path, help="CSV of a measured load-interference curve: interference_m,force_N"
     )
     add_output_options(asperity)
-    asperity.set_defaults(handler=_asperity)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from .options import CommandStudy, add_material_options, add_output_options, file_options
+from .options import CommandStudy, add_material_options, add_output_options, new_command, options
 from .output import run_command
 
 
@@ -18,27 +18,32 @@ def _contact(args: argparse.Namespace) -> int:
             "topography": (topography, "FILE"),
             "material": (command.material("material", args, required=True), "--material"),
             "counter_body": (command.material("counter_body", args), "--counter-body"),
-            "mean_pressure": (args.pressure, "--pressure"),
-            "force": (args.force, "--force"),
-            "approach": (args.approach, "--approach"),
-            "hardness": (args.hardness, "--hardness"),
-            "boundary": (args.boundary, "--boundary"),
-            "tolerance": (args.tolerance, "--tolerance"),
-            "stress_depths": (args.stress_depths, "--stress-depths"),
-        },
+        }
+        | options(
+            args,
+            "force",
+            "approach",
+            "hardness",
+            "boundary",
+            "tolerance",
+            "stress_depths",
+            mean_pressure="--pressure",
+        ),
     )
     return run_command(command, args)
 
 
 def add_commands(commands) -> None:
     """Add ``contact`` to the subparsers ``commands``."""
-    contact = commands.add_parser(
+    contact = new_command(
+        commands,
         "contact",
-        parents=[file_options()],
-        help="solve the normal contact of a file's surface against a flat",
-        description="Elastic (or elastic-perfectly-plastic with --hardness) normal contact of the surface "
+        _contact,
+        "solve the normal contact of a file's surface against a flat",
+        "Elastic (or elastic-perfectly-plastic with --hardness) normal contact of the surface "
         "against a flat (study model 'normal'). Give exactly one of --pressure, --force, --approach, with "
         "units. -o writes the case, its figures and a report.",
+        file=True,
     )
     add_material_options(contact, "material", "the surface's body", "SU-8, polysilicon, SiO2")
     add_material_options(contact, "counter_body", "the flat (default: rigid)", "SiO2")
@@ -52,4 +57,3 @@ def add_commands(commands) -> None:
         "--stress-depths", nargs="+", metavar="DEPTH", help="von Mises maps at these depths, e.g. '20 nm'"
     )
     add_output_options(contact)
-    contact.set_defaults(handler=_contact)

@@ -14,7 +14,14 @@ from pathlib import Path
 
 from ..errors import InputError
 from ..models import paper000
-from .options import CommandStudy, add_material_options, add_output_options, file_options, size_argument
+from .options import (
+    CommandStudy,
+    add_material_options,
+    add_output_options,
+    new_command,
+    options,
+    size_argument,
+)
 from .output import run_command
 
 
@@ -33,13 +40,8 @@ def _readings(texts: list[str]) -> dict[str, str]:
 
 def _model_keys(args: argparse.Namespace) -> dict:
     """Return the model's keys the two commands share, with the option of each."""
-    return {
-        "surface_energy": (args.surface_energy, "--surface-energy"),
-        "counter_surface_energy": (args.counter_surface_energy, "--counter-surface-energy"),
-        "layer_thickness": (args.layer_thickness, "--layer-thickness"),
-        "epsilon": (args.epsilon, "--epsilon"),
-        "readings": (_readings(args.reading) or None, "--reading"),
-    }
+    keys = options(args, "surface_energy", "counter_surface_energy", "layer_thickness", "epsilon")
+    return keys | {"readings": (_readings(args.reading) or None, "--reading")}
 
 
 def _friction(args: argparse.Namespace) -> int:
@@ -59,9 +61,8 @@ def _friction(args: argparse.Namespace) -> int:
             "normal_force": (forces[0], "--normal-forces" if args.normal_forces else "--normal-force"),
             "crossover": (args.crossover or None, "--crossover"),
             "resample": (args.resample or None, "--resample"),
-            "relaxed_modulus": (args.relaxed_modulus, "--relaxed-modulus"),
-            "relaxation_time": (args.relaxation_time if args.relaxed_modulus else None, "--relaxation-time"),
-            "hold_time": (args.hold_time if args.relaxed_modulus else None, "--hold-time"),
+            **options(args, "relaxed_modulus"),
+            **(options(args, "relaxation_time", "hold_time") if args.relaxed_modulus else {}),
             **_model_keys(args),
         },
     )
@@ -184,13 +185,15 @@ def _shared_options(parser: argparse.ArgumentParser, *, surface_energy: str | No
 
 def add_commands(commands) -> None:
     """Add ``friction`` and ``friction-compare`` to the subparsers ``commands``."""
-    friction = commands.add_parser(
+    friction = new_command(
+        commands,
         "friction",
-        parents=[file_options()],
-        help="adhesive + mechanical friction of a surface (Winkler layer + Lennard-Jones, paper 000)",
-        description="Friction of FILE (merged with COUNTER_FILE if given) against a flat at --normal-force, "
+        _friction,
+        "adhesive + mechanical friction of a surface (Winkler layer + Lennard-Jones, paper 000)",
+        "Friction of FILE (merged with COUNTER_FILE if given) against a flat at --normal-force, "
         "or over --normal-forces, with the adhesive and mechanical parts and mu = F / N (study model "
         "'friction').",
+        file=True,
     )
     friction.add_argument("counter_file", nargs="?", type=Path, help="topography of the counter-body (tip)")
     add_material_options(friction, "material", "the surface's body", "polysilicon, SiO2")
@@ -227,12 +230,13 @@ def add_commands(commands) -> None:
         "--relaxation-time", default="1 s", help="relaxation time of the standard linear solid"
     )
     _shared_options(friction, surface_energy=None)
-    friction.set_defaults(handler=_friction)
 
-    comparison = commands.add_parser(
+    comparison = new_command(
+        commands,
         "friction-compare",
-        help="simulated vs measured mu per sample: t-tests and Pearson r (paper 000's validation)",
-        description="Simulate mu for every scan of every sample (--sample NAME=a.di,b.di ...; without "
+        _friction_compare,
+        "simulated vs measured mu per sample: t-tests and Pearson r (paper 000's validation)",
+        "Simulate mu for every scan of every sample (--sample NAME=a.di,b.di ...; without "
         "--sample: paper 000's case, seven synthetic seeded scans per sample) and compare with MEASURED "
         "(CSV sample,mu): per-sample t-tests and the Pearson r of the means.",
     )
@@ -265,4 +269,3 @@ def add_commands(commands) -> None:
         "--grid", type=int, default=256, help="without --sample: points per side of the 20 nm-pixel scans"
     )
     _shared_options(comparison, surface_energy="50 mJ/m^2")
-    comparison.set_defaults(handler=_friction_compare)

@@ -8,32 +8,16 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from .options import CommandStudy, add_output_options
+from .options import CommandStudy, add_output_options, new_command, options
 from .output import run_command
 
 
 def _nanoindent(args: argparse.Namespace) -> int:
     command = CommandStudy("roughcontact nanoindent", f"Oliver-Pharr analysis of {args.file.name}")
-    command.analysis(
-        "indentation",
-        "nanoindentation",
-        {
-            "curve": (str(args.file.resolve()), "FILE"),
-            "depth_column": (args.depth_column, "--depth-column"),
-            "load_column": (args.load_column, "--load-column"),
-            "time_column": (args.time_column, "--time-column"),
-            "depth_unit": (args.depth_unit, "--depth-unit"),
-            "load_unit": (args.load_unit, "--load-unit"),
-            "time_unit": (args.time_unit, "--time-unit"),
-            "indenter": (args.indenter, "--indenter"),
-            "poissons_ratio": (args.poissons_ratio, "--poissons-ratio"),
-            "epsilon": (args.epsilon, "--epsilon"),
-            "beta": (args.beta, "--beta"),
-            "fit_range": (list(args.fit_range), "--fit-range"),
-            "rate_sign": (args.rate_sign, "--rate-sign"),
-            "creep_fit": (args.creep_fit, "--creep-fit"),
-        },
-    )
+    keys = {"curve": (str(args.file.resolve()), "FILE"), "fit_range": (list(args.fit_range), "--fit-range")}
+    names = ("depth_column", "load_column", "time_column", "depth_unit", "load_unit", "time_unit")
+    names += ("indenter", "poissons_ratio", "epsilon", "beta", "rate_sign", "creep_fit")
+    command.analysis("indentation", "nanoindentation", keys | options(args, *names))
     return run_command(command, args)
 
 
@@ -41,10 +25,12 @@ def add_commands(commands) -> None:
     """Add ``nanoindent`` to the subparsers ``commands``."""
     from ..experiment.nanoindentation import CREEP_FITS, RATE_SIGNS
 
-    nanoindent = commands.add_parser(
+    nanoindent = new_command(
+        commands,
         "nanoindent",
-        help="sample modulus from a load-displacement CSV: Oliver-Pharr with the hold-creep correction",
-        description="Oliver-Pharr analysis with Tang-Ngan's viscous correction as in seed paper 001 "
+        _nanoindent,
+        "sample modulus from a load-displacement CSV: Oliver-Pharr with the hold-creep correction",
+        "Oliver-Pharr analysis with Tang-Ngan's viscous correction as in seed paper 001 "
         "eqs. 5-8 (study model 'nanoindentation'): power law fitted to the upper unloading curve, creep "
         "rate from the hold at maximum load, unloading rate from the onset of unloading, ideal Berkovich "
         "area 24.5 d_c^2. Columns are found by name (depth/displacement, load/force, time) with units in "
@@ -81,4 +67,3 @@ def add_commands(commands) -> None:
         help="end-of-hold creep rate: t^(1/3) hold law (default), a line on the last 20%%, or none",
     )  # fmt: skip
     add_output_options(nanoindent)
-    nanoindent.set_defaults(handler=_nanoindent)

@@ -64,6 +64,20 @@ def file_options(*, required: bool = True) -> argparse.ArgumentParser:
     return parent
 
 
+def new_command(
+    commands, name: str, handler, summary: str, description: str = "", *, file: bool | None = None
+):
+    """Add the command ``name`` to the subparsers ``commands``, run by ``handler(args)``; return its parser.
+
+    ``summary`` is its line in ``roughcontact --help``, ``description`` its ``--help`` text; ``file``
+    adds FILE and the options that say how to read it (True: required, False: optional).
+    """
+    parents = [] if file is None else [file_options(required=file)]
+    parser = commands.add_parser(name, parents=parents, help=summary, description=description or None)
+    parser.set_defaults(handler=handler)
+    return parser
+
+
 def read_file(args: argparse.Namespace):
     """Read FILE as the file options say (for the commands that describe a file, not a model)."""
     from ..topography.io import read_topography
@@ -119,8 +133,28 @@ def add_output_options(parser: argparse.ArgumentParser, *, figures: bool = True)
         parser.add_argument("--dpi", type=int, default=150, help="resolution of the figures (default 150)")
 
 
+_STUDY_PHRASES = (
+    ("; relative paths are relative to the study file", ""),
+    (r"define \[materials\.[^\]]+\] or use one of", "use a library material, one of"),
+    (r"to \[analysis\.compare\]", "to the command"),
+)
+"""What the study validation says that a command's user cannot act on, and what to say instead."""
+
+
 def _flag(name: str) -> str:
     return f"--{name.replace('_', '-')}"
+
+
+def options(args: argparse.Namespace, *names: str, **spelled: str) -> dict[str, tuple[Any, str]]:
+    """Return model keys as (value, option), the values read from ``args``.
+
+    ``names`` are keys whose option is spelled like them (``stress_depths``: ``--stress-depths``);
+    each ``key="--option"`` of ``spelled`` is a key that an option of another name sets.
+    """
+    keys = {name: (getattr(args, name), _flag(name)) for name in names}
+    for key, option in spelled.items():
+        keys[key] = (getattr(args, option.lstrip("-").replace("-", "_")), option)
+    return keys
 
 
 class CommandStudy:
@@ -310,6 +344,8 @@ class CommandStudy:
         """
         if not text:
             return text
+        for phrase, said in _STUDY_PHRASES:
+            text = re.sub(phrase, said, text)
         words = dict(self.words)
         for end in range(len(path), 0, -1):
             if path[:end] in self.table_words:

@@ -158,6 +158,8 @@ def table_lines(rows: list[dict[str, Any]], *, formatted: bool = False) -> list[
     if not rows:
         return []
     columns = list(dict.fromkeys(key for row in rows for key in row))
+    if len(rows) > 1 and len({str(row.get("case")) for row in rows}) == 1:
+        columns = [c for c in columns if c != "case"]  # one case: its id says nothing here
     cells = []
     for row in rows:
         unit = row.get("unit") if isinstance(row.get("unit"), str) else None

@@ -15,7 +15,7 @@ from pathlib import Path
 from ..errors import InputError
 from ..models import paper001
 from ..units import quantity
-from .options import CommandStudy, add_material_options, add_output_options, file_options
+from .options import CommandStudy, add_material_options, add_output_options, new_command, options
 from .output import run_command
 
 
@@ -84,13 +84,8 @@ def _ball(command: CommandStudy, args: argparse.Namespace) -> dict:
         "sample": (args.file.stem, None),
         "material": (command.material("material", args, required=True), "--material"),
         "counter_body": (command.material("counter_body", args), "--counter-body"),
-        "normal_force": (args.normal_force, "--normal-force"),
-        "friction_coefficient": (args.friction_coefficient, "--friction-coefficient"),
-        "stroke": (args.stroke, "--stroke"),
         "path": (None if args.path is None else str(args.path.resolve()), "--path"),
-        "maps": (args.maps, "--maps"),
-        "window": (args.window, "--window"),
-    }
+    } | options(args, "normal_force", "friction_coefficient", "stroke", "maps", "window")
 
 
 def _presliding(args: argparse.Namespace) -> int:
@@ -102,27 +97,23 @@ def _presliding(args: argparse.Namespace) -> int:
         keys, zipped = _paper001(command, args)
     else:
         keys = _ball(command, args)
-    keys |= {
-        "radius": (args.radius, "--radius"),
-        "cycles": (args.cycles, "--cycles"),
-        "steps_per_stroke": (args.steps_per_stroke, "--steps-per-stroke"),
-        "coupling": (False if args.no_coupling else None, "--no-coupling"),
-        "tolerance": (args.tolerance, "--tolerance"),
-    }
+    keys |= options(args, "radius", "cycles", "steps_per_stroke", "tolerance")
+    keys["coupling"] = (False if args.no_coupling else None, "--no-coupling")
     index = command.analysis("presliding", "presliding", keys)
     if zipped:
         command.zipped(index, zipped)
     if args.measured is not None:
         command.compare(
             index,
-            {
-                "measured_loop": (str(args.measured.resolve()), "--measured"),
-                "displacement_unit": (args.measured_displacement_unit, "--measured-displacement-unit"),
-                "force_unit": (args.measured_force_unit, "--measured-force-unit"),
+            {"measured_loop": (str(args.measured.resolve()), "--measured")}
+            | options(
+                args, displacement_unit="--measured-displacement-unit", force_unit="--measured-force-unit"
+            )
+            | {
                 "normal_force": (
                     args.measured_normal_force or keys["normal_force"][0],
                     "--measured-normal-force",
-                ),
+                )
             },
         )
     return run_command(command, args)
@@ -133,27 +124,24 @@ def _loop_analysis(args: argparse.Namespace) -> int:
     command.analysis(
         "loop",
         "loop_analysis",
-        {
-            "loop": (str(args.file.resolve()), "FILE"),
-            "displacement_unit": (args.displacement_unit, "--displacement-unit"),
-            "force_unit": (args.force_unit, "--force-unit"),
-            "normal_force": (args.normal_force, "--normal-force"),
-            "branch": (args.branch, "--branch"),
-        },
+        {"loop": (str(args.file.resolve()), "FILE")}
+        | options(args, "displacement_unit", "force_unit", "normal_force", "branch"),
     )
     return run_command(command, args)
 
 
 def add_commands(commands) -> None:
     """Add ``presliding`` and ``loop-analysis`` to the subparsers ``commands``."""
-    presliding = commands.add_parser(
+    presliding = new_command(
+        commands,
         "presliding",
-        parents=[file_options(required=False)],
-        help="partial-slip friction loops of a rough ball on a flat, K_L vs Mindlin (paper 001)",
-        description="Press the ball FILE (heights with its spherical shape) on a flat with --normal-force, "
+        _presliding,
+        "partial-slip friction loops of a rough ball on a flat, K_L vs Mindlin (paper 001)",
+        "Press the ball FILE (heights with its spherical shape) on a flat with --normal-force, "
         "move the flat 0 -> --stroke -> 0 for --cycles cycles, and analyse the last loop; or drive it along "
         "your own displacement or force programme (--path CSV); or run paper 001's HDPE/POM cases with "
         "--paper001 (generated balls, Table 1 loads, strokes and mu). Study model 'presliding'.",
+        file=False,
     )
     add_material_options(presliding, "material", "the ball", "HDPE, POM")
     add_material_options(presliding, "counter_body", "the flat (default: rigid)", "'silicon wafer'")
@@ -210,12 +198,13 @@ def add_commands(commands) -> None:
     presliding.add_argument("--measured-force-unit", default="mN")
     presliding.add_argument("--measured-normal-force", help="F0 of the measured loop (default: the cases')")
     add_output_options(presliding)
-    presliding.set_defaults(handler=_presliding)
 
-    analysis = commands.add_parser(
+    analysis = new_command(
+        commands,
         "loop-analysis",
-        help="stroke, mu, eq. 9 fit and K_L at A, B, C of a measured friction loop (paper 001)",
-        description="Analyse the last loop of a friction record (CSV of displacement and force) as paper 001 "
+        _loop_analysis,
+        "stroke, mu, eq. 9 fit and K_L at A, B, C of a measured friction loop (paper 001)",
+        "Analyse the last loop of a friction record (CSV of displacement and force) as paper 001 "
         "does (study model 'loop_analysis'); -o writes the figure of the loop, its fits and points.",
     )
     analysis.add_argument("file", type=Path, help="CSV with displacement and force columns")
@@ -226,4 +215,3 @@ def add_commands(commands) -> None:
         "--branch", choices=("increasing", "decreasing"), default="increasing", help="branch of the points"
     )
     add_output_options(analysis)
-    analysis.set_defaults(handler=_loop_analysis)

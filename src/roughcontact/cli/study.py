@@ -12,7 +12,7 @@ import sys
 from pathlib import Path
 
 from ..errors import InputError
-from .options import EXIT_CASES_FAILED, EXIT_INTERRUPTED
+from .options import EXIT_CASES_FAILED, EXIT_INTERRUPTED, new_command
 
 
 def _describe(study) -> list[str]:
@@ -208,10 +208,12 @@ def _demo(args: argparse.Namespace) -> int:
 
 def add_commands(commands) -> None:
     """Add ``run``, ``validate``, ``report``, ``models`` and ``demo`` to the subparsers ``commands``."""
-    run = commands.add_parser(
+    run = new_command(
+        commands,
         "run",
-        help="run a study file (TOML): every case, the results table, figures and an HTML report",
-        description="Validate STUDY (all problems at once, nothing computed), run its cases in-process, on a "
+        _run,
+        "run a study file (TOML): every case, the results table, figures and an HTML report",
+        "Validate STUDY (all problems at once, nothing computed), run its cases in-process, on a "
         "local Dask cluster (--workers) or on a running one (--scheduler), and write OUT/results.csv, "
         "OUT/cases/, OUT/figures/, OUT/tables/, OUT/provenance.json and OUT/report.html.",
     )
@@ -227,26 +229,35 @@ def add_commands(commands) -> None:
         "--worker-storage", type=Path, help="folder the workers write the fields to (only scalars come back)"
     )
     run.add_argument("--no-progress", action="store_true", help="no progress bar")
-    run.set_defaults(handler=_run)
 
-    validate = commands.add_parser(
-        "validate", help="check a study file and list its cases without computing anything"
+    validate = new_command(
+        commands,
+        "validate",
+        _validate,
+        "check a study file and list its cases without computing anything",
     )
     validate.add_argument("study", type=Path, help="study file (TOML)")
-    validate.set_defaults(handler=_validate)
 
-    models = commands.add_parser("models", help="list the models a study can name, or one model's keys")
+    models = new_command(
+        commands,
+        "models",
+        _models,
+        "list the models a study can name, or one model's keys",
+    )
     models.add_argument("name", nargs="?", help="a model, e.g. normal")
-    models.set_defaults(handler=_models)
 
-    report = commands.add_parser(
-        "report", help="write OUT/report.html: the tables and figures of a study on one offline page"
+    report = new_command(
+        commands,
+        "report",
+        _report,
+        "write OUT/report.html: the tables and figures of a study on one offline page",
     )
     report.add_argument("folder", type=Path, help="the output folder of 'roughcontact run'")
-    report.set_defaults(handler=_report)
 
-    demo = commands.add_parser(
-        "demo", help="run the embedded demo study (examples/demo.toml) and write its report"
+    demo = new_command(
+        commands,
+        "demo",
+        _demo,
+        "run the embedded demo study (examples/demo.toml) and write its report",
     )
     demo.add_argument("-o", "--output", type=Path, default=Path("demo-output"), help="output folder")
-    demo.set_defaults(handler=_demo)

@@ -12,26 +12,9 @@ from pathlib import Path
 from .._json import json_ready
 from ..errors import InputError
 from ..topography import Topography
+from ..topography.statistics import SUMMARY
 from ..units import format_si
-from .options import file_options, read_file
-
-# statistic -> (SI unit for display, description)
-_STATISTICS = {
-    "Ra": ("m", "arithmetic mean deviation"),
-    "Rq": ("m", "root mean square height"),
-    "Rsk": ("", "skewness"),
-    "Rku": ("", "kurtosis"),
-    "Rz": ("m", "peak-to-valley height"),
-    "rms_slope": ("", "rms slope"),
-    "rms_curvature": ("1/m", "rms curvature"),
-    "m0": ("m^2", "spectral moment m0 (paper 002 eq. 1)"),
-    "m2": ("", "spectral moment m2 (eq. 2)"),
-    "m4": ("1/m^2", "spectral moment m4 (eq. 3)"),
-    "bandwidth": ("", "bandwidth parameter alpha = m0 m4 / m2^2"),
-    "summit_density": ("1/m^2", "summit density eta (McCool)"),
-    "summit_radius": ("m", "summit radius R_asp (eq. 4)"),
-    "summit_height_std": ("m", "summit height deviation sigma_s (eq. 5)"),
-}
+from .options import new_command, read_file
 
 
 def describe(topography: Topography) -> dict:
@@ -68,7 +51,7 @@ def format_description(description: dict) -> str:
         )
     lines.append("statistics")
     for key, value in description["statistics"].items():
-        unit, meaning = _STATISTICS.get(key, ("", ""))
+        unit, meaning = SUMMARY.get(key, ("", ""))
         shown = format_si(value, unit) if unit in ("m",) else f"{value:.4g} {unit}".rstrip()
         lines.append(f"  {key:<18} {shown:<16} {meaning}")
     return "\n".join(lines)
@@ -126,21 +109,23 @@ def _plot(args: argparse.Namespace) -> int:
 
 def add_commands(commands) -> None:
     """Add ``inspect`` and ``plot`` to the subparsers ``commands``."""
-    inspect = commands.add_parser(
+    inspect = new_command(
+        commands,
         "inspect",
-        parents=[file_options()],
-        help="print channels, grid, physical size, units and statistics of a file",
+        _inspect,
+        "print channels, grid, physical size, units and statistics of a file",
+        file=True,
     )
     inspect.add_argument("--json", action="store_true", help="print one JSON document (SI units)")
-    inspect.set_defaults(handler=_inspect)
 
-    plot = commands.add_parser(
+    plot = new_command(
+        commands,
         "plot",
-        parents=[file_options()],
-        help="draw the height map and PSD of a file, or re-draw a study's figures (plot OUT/)",
-        description="FILE a topography: draw its height map and PSD into -o. FILE a study's output "
+        _plot,
+        "draw the height map and PSD of a file, or re-draw a study's figures (plot OUT/)",
+        "FILE a topography: draw its height map and PSD into -o. FILE a study's output "
         "folder: re-draw its figures and tables from the stored results (nothing is solved again).",
+        file=True,
     )
     plot.add_argument("-o", "--output", type=Path, help="figure file (.png, .pdf, .svg) for a topography")
     plot.add_argument("--dpi", type=int, default=150)
-    plot.set_defaults(handler=_plot)

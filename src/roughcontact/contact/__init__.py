@@ -1,15 +1,32 @@
-"""Contact solvers: normal contact (elastic, elastic-plastic, layered), load paths and their results."""
+"""Contact solvers: normal contact (elastic, elastic-plastic, layered), tangential programmes, load paths.
+
+``normal`` (:func:`solve_normal`: FFT boundary elements, load or approach control, hardness, films),
+``tangential`` (:func:`solve_tangential`: partial slip under a displacement or force programme),
+``plastic`` (:func:`load_unload`: elastic-perfectly-plastic load-unload), ``sweep``
+(:func:`load_path`: warm-started sequences of normal solves), ``paths`` (tangential programmes:
+paper 001's stroke path, symmetric cycles, a CSV) and their results, each with ``scalars()``,
+``UNITS`` and ``to_xarray()`` (:mod:`roughcontact.results`).
+"""
 
 from .normal import compliance_for, solve_normal
+from .paths import read_path_csv, stroke_path, symmetric_path
 from .plastic import LoadUnloadResult, load_unload
 from .result import NormalContactResult
 from .sweep import load_path
+from .tangential import solve_tangential
+from .tangential_result import TangentialPathResult, TangentialState
 
 __all__ = [
     "LoadUnloadResult",
     "NormalContactResult",
+    "TangentialPathResult",
+    "TangentialState",
     "compliance_for",
     "load_path",
     "load_unload",
+    "read_path_csv",
     "solve_normal",
+    "solve_tangential",
+    "stroke_path",
+    "symmetric_path",
 ]

@@ -113,7 +113,7 @@ import numpy as np
 
 from ..errors import ConvergenceError, InputError
 from . import _shear_kernels as kernels
-from ._shear_cg import _RIM, ShearResult, check_below_sliding, optimality
+from ._shear_cg import RIM, ShearResult, check_below_sliding, optimality
 
 _JIT = dict(cache=True, nogil=True)
 
@@ -421,7 +421,7 @@ def solve_increment(
     residual = np.inf
     for iteration in range(max_iterations + 1):
         if load_control:
-            delta = kernels.interior_mean(qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), _RIM)
+            delta = kernels.interior_mean(qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), RIM)
         np.copyto(wx, sx)
         np.copyto(wy, sy)
         residual = optimality(qx, qy, c_flat, wx, wy, delta, state, flat).residual

@@ -64,7 +64,7 @@ from ..errors import ConvergenceError, InputError
 from . import _shear_kernels as kernels
 
 # |q| within this fraction of the bound counts as on the rim.
-_RIM = 1e-12
+RIM = 1e-12
 # Force-control redistribution passes per iteration.
 _REDISTRIBUTE = 50
 
@@ -103,7 +103,7 @@ def _give_back(qx, qy, bound, stick, target, pixel_area):
         scale = max(abs(target[0]), abs(target[1])) / pixel_area
         if abs(missing[0]) + abs(missing[1]) <= 1e-14 * max(scale, bound.sum()):
             return
-        room = stick & (np.hypot(qx, qy) < bound * (1 - _RIM))
+        room = stick & (np.hypot(qx, qy) < bound * (1 - RIM))
         if not room.any():
             room = bound > 0
         n = room.sum()
@@ -142,7 +142,7 @@ def optimality(qx, qy, c_flat, sx, sy, delta, state, flat) -> Optimality:
     increment solvers, so a tolerance means the same).
     """
     changed, violation, weight, ss, n_contact, n_stick, zsx, zsy, z_norm = kernels.classify(
-        qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), delta[0], delta[1], _RIM, state,
+        qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), delta[0], delta[1], RIM, state,
         flat["zx"], flat["zy"], flat["nx"], flat["ny"], flat["bend"],
     )  # fmt: skip
     scale = np.sqrt(ss / n_contact) + np.hypot(*delta) if n_contact else 0.0
@@ -226,7 +226,7 @@ def solve_increment(
         sx += ex
         sy += ey
         if load_control:
-            delta = kernels.interior_mean(qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), _RIM)
+            delta = kernels.interior_mean(qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), RIM)
         check = optimality(qx, qy, c_flat, sx, sy, delta, state, flat)
         residual, n_stick, (zsx, zsy), z_norm = check.residual, check.n_stick, check.stick_sum, check.z_norm
         if residual <= tolerance:

@@ -20,7 +20,7 @@ import dataclasses
 import numpy as np
 from scipy import optimize
 
-from .. import __version__
+from .._version import __version__
 from ..elasticity.halfspace import ElasticLayer, SurfaceCompliance
 from ..errors import InputError
 from ..materials import Material, contact_modulus

@@ -33,6 +33,7 @@ Seed paper 002 (SU-8 island load-unload, Figs. 7-9).
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import ClassVar
 
 import numpy as np
 
@@ -41,6 +42,26 @@ from ..materials import Material
 from ..topography import Topography
 from .normal import compliance_for, solve_normal
 from .result import NormalContactResult
+
+LOAD_UNLOAD_UNITS = {
+    "peak_force": "N",
+    "peak_interference": "m",
+    "residual_interference": "m",
+    "peak_contact_area": "m^2",
+    "max_pressure": "Pa",
+    "max_plastic_deformation": "m",
+    "hardness": "Pa",
+}
+"""SI units of the scalars of a load-unload result (:class:`LoadUnloadResult` and paper 002's island)."""
+
+CURVE_VARIABLES = {
+    "approach": ("m", "interference (approach of the flat)"),
+    "force": ("N", "load"),
+    "contact_area": ("m^2", "real contact area"),
+    "plastic_fraction": ("", "fraction of the real contact area at the hardness"),
+    "max_pressure": ("Pa", "largest contact pressure"),
+}
+"""Unit and meaning of each variable of a load-unload curve."""
 
 
 @dataclass(frozen=True)
@@ -66,16 +87,101 @@ class LoadUnloadResult:
     residual_interference: float
     hardness: float
 
+    UNITS: ClassVar[dict[str, str]] = LOAD_UNLOAD_UNITS
+    """SI unit of each dimensional scalar of :meth:`scalars`."""
+
+    @property
+    def converged(self) -> bool:
+        """True when every step met its tolerance (the solver raises rather than return otherwise)."""
+        return all(step.converged for step in self.loading + self.unloading)
+
+    @property
+    def iterations(self) -> int:
+        """Iterations of every step's solve together."""
+        return sum(step.iterations for step in self.loading + self.unloading)
+
+    @property
+    def residual(self) -> float:
+        """Largest residual of the steps."""
+        return max(step.residual for step in self.loading + self.unloading)
+
     def curve(self) -> dict[str, np.ndarray]:
-        """Return approach [m], force [N], contact area [m^2] and plastic area fraction per step, in order."""
+        """Return the path, one entry per step in order (:func:`load_unload_curve`)."""
         steps = self.loading + self.unloading
-        return {
-            "branch": np.array(["loading"] * len(self.loading) + ["unloading"] * len(self.unloading)),
-            "approach": np.array([s.approach for s in steps]),
-            "force": np.array([s.force for s in steps]),
-            "contact_area": np.array([s.contact_area for s in steps]),
-            "plastic_fraction": np.array([s.plastic_mask.mean() for s in steps]),
-        }
+        return load_unload_curve(steps, len(self.loading), [step.approach for step in steps])
+
+    def scalars(self) -> dict[str, float]:
+        """Return the peak, the residual interference and the plastic flow (SI; units in :attr:`UNITS`)."""
+        steps, peak = self.loading + self.unloading, len(self.loading) - 1
+        found = load_unload_scalars(
+            steps,
+            peak,
+            steps[peak].approach,
+            self.residual_interference,
+            self.plastic_deformation,
+            self.hardness,
+        )
+        return found | {"iterations": self.iterations, "residual": self.residual}
+
+    def to_xarray(self):
+        """Return the curve as an ``xarray.Dataset`` on the dimension ``point`` (SI, with units)."""
+        return load_unload_dataset(self.curve(), self.scalars())
+
+
+def plastic_fraction(step: NormalContactResult) -> float:
+    """Fraction of a step's real contact area where the pressure is at the hardness."""
+    return float(step.plastic_mask.sum() / max(np.count_nonzero(step.contact_mask), 1))
+
+
+def load_unload_curve(steps, loading: int, approach) -> dict[str, np.ndarray]:
+    """Return a load-unload path as arrays, one entry per step (the first ``loading`` steps load).
+
+    ``branch`` (loading/unloading), ``approach`` [m] (as given: the interference in the
+    caller's convention), ``force`` [N], ``contact_area`` [m^2], ``plastic_fraction`` (of the real
+    contact area at the hardness) and ``max_pressure`` [Pa].
+    """
+    return {
+        "branch": np.array(["loading"] * loading + ["unloading"] * (len(steps) - loading)),
+        "approach": np.asarray(approach, dtype=float),
+        "force": np.array([s.force for s in steps]),
+        "contact_area": np.array([s.contact_area for s in steps]),
+        "plastic_fraction": np.array([plastic_fraction(s) for s in steps]),
+        "max_pressure": np.array([float(s.pressure.max()) for s in steps]),
+    }
+
+
+def load_unload_scalars(
+    steps, peak: int, interference: float, residual: float, plastic: np.ndarray, hardness: float
+) -> dict[str, float]:
+    """Return the scalars of a load-unload path (units in :data:`LOAD_UNLOAD_UNITS`).
+
+    ``steps`` are the solutions in order, ``peak`` the index of the peak load, ``interference``
+    its interference and ``residual`` the residual interference [m] (both in the caller's
+    convention), ``plastic`` the plastic flow depth [m], ``hardness`` the cap [Pa].
+    """
+    top = steps[peak]
+    return {
+        "peak_force": top.force,
+        "peak_interference": float(interference),
+        "residual_interference": float(residual),
+        "peak_contact_area": top.contact_area,
+        "plastic_fraction_at_peak": float(
+            top.plastic_mask.sum() / max(np.count_nonzero(top.contact_mask), 1)
+        ),
+        "max_pressure": max(float(step.pressure.max()) for step in steps),
+        "max_plastic_deformation": float(np.max(plastic)),
+        "hardness": float(hardness),
+    }
+
+
+def load_unload_dataset(curve: dict[str, np.ndarray], attributes: dict):
+    """Return a load-unload curve as an ``xarray.Dataset`` on the dimension ``point`` (units attached)."""
+    import xarray as xr
+
+    data = {"branch": ("point", np.asarray(curve["branch"]).astype(str))}
+    for name, (unit, meaning) in CURVE_VARIABLES.items():
+        data[name] = ("point", np.asarray(curve[name], dtype=float), {"units": unit, "long_name": meaning})
+    return xr.Dataset(data, attrs={k: v for k, v in attributes.items() if v is not None})
 
 
 def load_unload(

@@ -102,7 +102,7 @@ class NormalContactResult:
     @property
     def converged(self) -> bool:
         """Always True: unconverged solves raise instead of returning."""
-        return self.residual <= self.tolerance
+        return bool(self.residual <= self.tolerance)
 
     @property
     def force(self) -> float:

@@ -44,7 +44,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import __version__
+from .._version import __version__
 from ..elasticity.halfspace import SurfaceCompliance
 from ..elasticity.tangential import TractionCompliance
 from ..errors import ConvergenceError, InputError

@@ -220,7 +220,7 @@ class TangentialPathResult:
             "stick_area": ("step", self.stick_area, {"units": "m^2"}),
             "slip_area": ("step", self.slip_area, {"units": "m^2"}),
             "iterations": ("step", self.iterations),
-            "residual": ("step", self.residual),
+            "residual": ("step", self.residual, {"units": "1", "long_name": "scale-free residual"}),
         }
         kept = sorted(self.states)
         units = {"shear_x": "Pa", "shear_y": "Pa", "pressure": "Pa", "slip_x": "m", "slip_y": "m"}

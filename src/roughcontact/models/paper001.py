@@ -281,30 +281,6 @@ def loop_from_start(result) -> tuple[np.ndarray, np.ndarray]:
     )
 
 
-def _mindlin_references(
-    normal_force: float,
-    friction_coefficient: float,
-    radius: float,
-    material: Material,
-    counter_body: Material | None,
-    names: tuple[str, ...],
-) -> dict[str, dict[str, float]]:
-    """K_L [N/m] of Mindlin's smooth ball at the points ``names`` (A, B, C), per reading of eqs. 10-12."""
-    references = {}
-    for reading in MINDLIN_READINGS:
-        reference = paper001_mindlin(
-            friction_coefficient=friction_coefficient,
-            normal_force=normal_force,
-            radius=radius,
-            material=material,
-            counter_body=counter_body,
-            normalisation=reading,
-        )
-        stiffness = map(float, reference.point_stiffness(POINTS[: len(names)]))
-        references[reading] = dict(zip(names, stiffness, strict=True))
-    return references
-
-
 @dataclass(frozen=True)
 class PreslidingResult:
     """A rough ball on a flat under a tangential programme, its last loop analysed, against Mindlin.
@@ -470,8 +446,9 @@ class PreslidingResult:
         ``force_y``, ``stick_area``, ``slip_area``; the normal-contact ``pressure`` map; the
         normalised shear sqrt(q_x^2 + q_y^2) / (mu_f p) (< 1 stick, 1 slip, NaN outside the
         contact; paper Figs. 11-12) at the kept steps (``normalised_shear`` along ``map``, with
-        ``map_step``, the step counted from the start); for an analysed loop the points' fitted
-        ``point_displacement`` and ``point_force``. Maps in single precision.
+        ``map_step``, the step counted from the start); the energy dissipated in each closed loop
+        (``loop_energy``); for an analysed loop the points' fitted ``point_displacement`` and
+        ``point_force``. Maps in single precision.
         """
         import xarray as xr
 
@@ -506,6 +483,11 @@ class PreslidingResult:
             {"units": "1", "long_name": "sqrt(q_x^2 + q_y^2) / (mu p)"},
         )
         data["map_step"] = ("map", np.array([k + 1 for k in steps], dtype=np.int32))
+        data["loop_energy"] = (
+            "loop",
+            result.dissipated_energy(),
+            {"units": "J", "long_name": "energy dissipated in each loop the x programme closes"},
+        )
         attrs: dict[str, Any] = {"control": self.control, "label": self.label}
         if self.analysis is not None:
             branch = self.analysis.branch
@@ -671,13 +653,18 @@ def presliding(
         }
     else:
         map_steps = {f"step {k + 1}": k for k in last_turns if k in kept}
-    mindlin = paper001_mindlin(
-        friction_coefficient=friction_coefficient,
-        normal_force=normal_force,
-        radius=radius,
-        material=material,
-        counter_body=counter_body,
-    )
+    references = {
+        reading: paper001_mindlin(
+            friction_coefficient=friction_coefficient,
+            normal_force=normal_force,
+            radius=radius,
+            material=material,
+            counter_body=counter_body,
+            normalisation=reading,
+        )
+        for reading in MINDLIN_READINGS
+    }
+    textbook = references["johnson"]
     return PreslidingResult(
         label=label,
         normal_force=float(normal_force),
@@ -688,11 +675,12 @@ def presliding(
         result=result,
         analysis=analysis,
         note=note,
-        mindlin=_mindlin_references(
-            normal_force, friction_coefficient, radius, material, counter_body, POINT_NAMES
-        ),
-        hertz_radius=mindlin.contact_radius,
-        sliding_distance_mindlin=2.0 * mindlin.sliding_distance,
+        mindlin={
+            reading: dict(zip(POINT_NAMES, map(float, reference.point_stiffness(POINTS)), strict=True))
+            for reading, reference in references.items()
+        },
+        hertz_radius=textbook.contact_radius,
+        sliding_distance_mindlin=2.0 * textbook.sliding_distance,
         map_steps=map_steps,
     )
 

@@ -15,10 +15,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from ..asperity.greenwood_williamson import gaussian_summits
 from ..asperity.load_unload import StatisticalLoadUnload, statistical_load_unload
 from ..asperity.parameters import AsperityParameters, asperity_parameters
+from ..errors import InputError
 from ..materials import get_material
+from ..topography import Topography
+from ..topography.generate import gaussian_random, raised_island
 from ..topography.statistics import mccool_parameters
 
 MOMENTS = {"m0": 0.00213279e-12, "m2": 0.00230023, "m4": 0.0171036e12}
@@ -178,3 +183,47 @@ def statistical_curve(law: str = "kogut_etsion") -> StatisticalLoadUnload:
         reference_force=REFERENCE_FORCE,
         law=law,
     )
+
+
+def paper002_island(
+    shape: int | tuple[int, int] = 64, *, seed: int = 1, margin: float = 2.5e-6
+) -> Topography:
+    """Return a synthetic stand-in for paper 002's measured island (the scan itself is not published).
+
+    A raised square of side 25 um and thickness 6.3 um
+    (:func:`~roughcontact.topography.generate.raised_island`) in a window ``margin`` wider on each
+    side. Its top carries Gaussian-correlated roughness with the paper's m0 exactly (Rq = 46.2 nm)
+    and the correlation length xi = sqrt(2 m0 / m2) = 1.36 um, which gives the paper's m2 for a
+    Gaussian autocorrelation (m2 = 2 m0 / xi^2). A Gaussian ACF has the bandwidth alpha = 3 (the
+    paper's surface: 6.9), so m4 and R_asp differ from the printed ones.
+
+    Parameters
+    ----------
+    shape : int or (int, int)
+        Grid points (64 runs in about a second per step; 128 resolves xi with 4 pixels).
+    seed : int
+        Seed of the roughness.
+    margin : float
+        Substrate margin around the island [m].
+
+    Returns
+    -------
+    Topography
+        Non-periodic heights [m], island top about 6.3 um above the substrate.
+    """
+    if not margin >= 0:
+        raise InputError("margin", f"must be >= 0, got {margin!r}.", "give a margin in m.")
+    shape = (shape, shape) if isinstance(shape, int) else tuple(shape)
+    size = ISLAND_SIDE + 2.0 * margin
+    flat = raised_island(shape, size, island_size=ISLAND_SIDE, thickness=FILM_THICKNESS)
+    moments = MOMENTS
+    correlation = math.sqrt(2.0 * moments["m0"] / moments["m2"])
+    roughness = gaussian_random(
+        shape, size, rms_height=1.0, correlation_length=correlation, seed=seed
+    ).heights
+    on_island = flat.heights > 0.5 * FILM_THICKNESS
+    top = roughness[on_island] - roughness[on_island].mean()
+    heights = flat.heights.copy()
+    heights[on_island] += top * math.sqrt(moments["m0"] / np.mean(top**2))
+    info = dict(flat.info, name="paper 002 island (synthetic)", correlation_length=correlation, seed=seed)
+    return flat.with_heights(heights, step="Gaussian-correlated roughness with paper 002's m0, m2", info=info)

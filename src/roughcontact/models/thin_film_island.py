@@ -30,63 +30,20 @@ Almqvist, A. et al. (2007), Tribol. Int. 40, 574-579. doi:10.1016/j.triboint.200
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 
+from .._deprecation import moved
 from ..contact import NormalContactResult, compliance_for, solve_normal
+from ..contact.plastic import LOAD_UNLOAD_UNITS, load_unload_curve, load_unload_dataset, load_unload_scalars
 from ..elasticity.halfspace import ElasticLayer
 from ..elasticity.stress import StressField, subsurface_stress
 from ..errors import InputError
 from ..materials import Material
 from ..topography import Topography
-from ..topography.generate import gaussian_random, raised_island
 from . import paper002
-
-
-def paper002_island(
-    shape: int | tuple[int, int] = 64, *, seed: int = 1, margin: float = 2.5e-6
-) -> Topography:
-    """Return a synthetic stand-in for paper 002's measured island (the scan itself is not published).
-
-    A raised square of side 25 um and thickness 6.3 um
-    (:func:`~roughcontact.topography.generate.raised_island`) in a window ``margin`` wider on each
-    side. Its top carries Gaussian-correlated roughness with the paper's m0 exactly (Rq = 46.2 nm)
-    and the correlation length xi = sqrt(2 m0 / m2) = 1.36 um, which gives the paper's m2 for a
-    Gaussian autocorrelation (m2 = 2 m0 / xi^2). A Gaussian ACF has the bandwidth alpha = 3 (the
-    paper's surface: 6.9), so m4 and R_asp differ from the printed ones.
-
-    Parameters
-    ----------
-    shape : int or (int, int)
-        Grid points (64 runs in about a second per step; 128 resolves xi with 4 pixels).
-    seed : int
-        Seed of the roughness.
-    margin : float
-        Substrate margin around the island [m].
-
-    Returns
-    -------
-    Topography
-        Non-periodic heights [m], island top about 6.3 um above the substrate.
-    """
-    if not margin >= 0:
-        raise InputError("margin", f"must be >= 0, got {margin!r}.", "give a margin in m.")
-    shape = (shape, shape) if isinstance(shape, int) else tuple(shape)
-    size = paper002.ISLAND_SIDE + 2.0 * margin
-    flat = raised_island(shape, size, island_size=paper002.ISLAND_SIDE, thickness=paper002.FILM_THICKNESS)
-    moments = paper002.MOMENTS
-    correlation = math.sqrt(2.0 * moments["m0"] / moments["m2"])
-    roughness = gaussian_random(
-        shape, size, rms_height=1.0, correlation_length=correlation, seed=seed
-    ).heights
-    on_island = flat.heights > 0.5 * paper002.FILM_THICKNESS
-    top = roughness[on_island] - roughness[on_island].mean()
-    heights = flat.heights.copy()
-    heights[on_island] += top * math.sqrt(moments["m0"] / np.mean(top**2))
-    info = dict(flat.info, name="paper 002 island (synthetic)", correlation_length=correlation, seed=seed)
-    return flat.with_heights(heights, step="Gaussian-correlated roughness with paper 002's m0, m2", info=info)
 
 
 @dataclass(frozen=True)
@@ -123,16 +80,53 @@ class IslandCompression:
     hardness: float
     poissons_ratio: float
 
+    UNITS: ClassVar[dict[str, str]] = LOAD_UNLOAD_UNITS
+    """SI unit of each dimensional scalar of :meth:`scalars`."""
+
+    @property
+    def peak(self) -> int:
+        """Index of the peak load: the last step of the loading branch."""
+        return int(np.flatnonzero(self.branch == "loading")[-1])
+
+    @property
+    def converged(self) -> bool:
+        """True when every step met its tolerance (the solver raises rather than return otherwise)."""
+        return all(step.converged for step in self.steps)
+
+    @property
+    def iterations(self) -> int:
+        """Iterations of every step's solve together."""
+        return sum(step.iterations for step in self.steps)
+
+    @property
+    def residual(self) -> float:
+        """Largest residual of the steps."""
+        return max(step.residual for step in self.steps)
+
     def curve(self) -> dict[str, np.ndarray]:
-        """Return branch, approach (interference) [m], force [N], area [m^2], plastic fraction, p_max."""
-        return {
-            "branch": self.branch,
-            "approach": self.interference,
-            "force": np.array([s.force for s in self.steps]),
-            "contact_area": np.array([s.contact_area for s in self.steps]),
-            "plastic_fraction": np.array([s.plastic_mask.mean() for s in self.steps]),
-            "max_pressure": np.array([float(s.pressure.max()) for s in self.steps]),
-        }
+        """Return the path, one entry per step (:func:`~roughcontact.contact.plastic.load_unload_curve`).
+
+        ``approach`` is the interference in the experiment's convention (zero at
+        ``reference_force`` on loading), ``plastic_fraction`` the fraction of the real contact
+        area at the hardness.
+        """
+        return load_unload_curve(self.steps, self.peak + 1, self.interference)
+
+    def scalars(self) -> dict[str, float]:
+        """Return the peak, the residual interference and the plastic flow (SI; units in :attr:`UNITS`)."""
+        found = load_unload_scalars(
+            self.steps,
+            self.peak,
+            self.interference[self.peak],
+            self.residual_interference,
+            self.plastic_deformation,
+            self.hardness,
+        )
+        return found | {"iterations": self.iterations, "residual": self.residual}
+
+    def to_xarray(self):
+        """Return the curve as an ``xarray.Dataset`` on the dimension ``point`` (SI, with units)."""
+        return load_unload_dataset(self.curve(), self.scalars() | {"reference_force": self.reference_force})
 
     def stress(self, index: int, depths=(0.0,), *, padding: int = 2) -> StressField:
         """Return the subsurface stress of step ``index`` on the planes ``depths`` [m] (``.von_mises()``)."""
@@ -169,7 +163,8 @@ def compress_island(
     Parameters
     ----------
     topography : Topography
-        Non-periodic heights [m] towards the punch (e.g. :func:`paper002_island` or a measured scan).
+        Non-periodic heights [m] towards the punch (e.g. :func:`~roughcontact.models.paper002.paper002_island`
+        or a measured scan).
     material : Material
         The film (paper 002: ``get_material("SU-8")``); its hardness is the cap unless ``hardness``.
     peak_force : float
@@ -249,3 +244,8 @@ def compress_island(
         hardness=float(hardness),
         poissons_ratio=material.poissons_ratio,
     )
+
+
+def __getattr__(name: str):
+    """Serve :func:`roughcontact.models.paper002.paper002_island`, which moved there, with a warning."""
+    return moved(__name__, name, {"paper002_island": "roughcontact.models.paper002"})

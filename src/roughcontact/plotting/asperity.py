@@ -8,7 +8,7 @@ from matplotlib.figure import Figure
 
 from ..units import unit_factor
 from .contact import plot_von_mises
-from .topography import _axes
+from .layout import axes_for
 
 _BRANCH_STYLES = {"loading": "-", "unloading": "--"}
 _LOAD_UNIT, _AREA_UNIT = "µN", "µm²"  # fixed, in the units of paper 002's figures
@@ -40,7 +40,7 @@ def plot_load_interference(
     -------
     (Figure, Axes)
     """
-    fig, ax = _axes(ax, figsize=(5.5, 4.2))
+    fig, ax = axes_for(ax, figsize=(5.5, 4.2))
     for number, (label, curve) in enumerate(curves.items()):
         color = f"C{number % 10}"
         branches = np.asarray(curve["branch"])
@@ -62,7 +62,7 @@ def plot_load_interference(
 
 def plot_area_load(curves: dict[str, dict], ax: Axes | None = None):
     """Draw the real contact area (um^2) against load (uN) on loading, for each labelled curve dict."""
-    fig, ax = _axes(ax)
+    fig, ax = axes_for(ax)
     for label, curve in curves.items():
         loading = np.asarray(curve["branch"]) == "loading"
         area = np.asarray(curve["contact_area"])[loading]

@@ -7,7 +7,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ..units import prefixed_scale
-from .topography import _axes
+from .layout import axes_for
 
 
 def _map(ax: Axes, result, values: np.ndarray, label: str, cmap: str):
@@ -24,7 +24,7 @@ def _map(ax: Axes, result, values: np.ndarray, label: str, cmap: str):
 
 def plot_pressure(result, ax: Axes | None = None, *, cmap: str = "magma"):
     """Draw the contact pressure map of a 2D NormalContactResult; returns ``(fig, ax)``."""
-    fig, ax = _axes(ax)
+    fig, ax = axes_for(ax)
     scale, unit = prefixed_scale(float(result.pressure.max()) or 1.0, "Pa")
     _map(ax, result, result.pressure / scale, f"pressure ({unit})", cmap)
     ax.set_title(f"contact pressure, {100 * result.contact_fraction:.2g} % in contact")
@@ -33,7 +33,7 @@ def plot_pressure(result, ax: Axes | None = None, *, cmap: str = "magma"):
 
 def plot_gap(result, ax: Axes | None = None, *, cmap: str = "viridis"):
     """Draw the gap map of a 2D NormalContactResult (contact where the gap is zero); returns ``(fig, ax)``."""
-    fig, ax = _axes(ax)
+    fig, ax = axes_for(ax)
     scale, unit = prefixed_scale(float(np.max(result.gap)) or 1e-9, "m")
     _map(ax, result, result.gap / scale, f"gap ({unit})", cmap)
     ax.set_title(f"gap, mean {result.mean_gap / scale:.3g} {unit}")
@@ -42,7 +42,7 @@ def plot_gap(result, ax: Axes | None = None, *, cmap: str = "viridis"):
 
 def plot_load_approach(curve: dict, ax: Axes | None = None, *, label: str | None = None):
     """Draw force against approach from ``LoadUnloadResult.curve()`` (or any dict with those keys)."""
-    fig, ax = _axes(ax)
+    fig, ax = axes_for(ax)
     approach, force = np.asarray(curve["approach"]), np.asarray(curve["force"])
     a_scale, a_unit = prefixed_scale(float(np.max(np.abs(approach))) or 1e-9, "m")
     f_scale, f_unit = prefixed_scale(float(np.max(np.abs(force))) or 1.0, "N")
@@ -61,7 +61,7 @@ def plot_load_approach(curve: dict, ax: Axes | None = None, *, label: str | None
 
 def plot_contact_area(curve: dict, ax: Axes | None = None):
     """Draw real contact area against force from a load curve dict; returns ``(fig, ax)``."""
-    fig, ax = _axes(ax)
+    fig, ax = axes_for(ax)
     ax.plot(np.asarray(curve["force"]), np.asarray(curve["contact_area"]), "-o", ms=3)
     ax.set_xlabel("force (N)")
     ax.set_ylabel("real contact area (m²)")
@@ -71,7 +71,7 @@ def plot_contact_area(curve: dict, ax: Axes | None = None):
 
 def plot_von_mises(stress, depth_index: int, ax: Axes | None = None, *, cmap: str = "inferno"):
     """Draw the von Mises stress on the plane ``stress.depths[depth_index]``; returns ``(fig, ax)``."""
-    fig, ax = _axes(ax)
+    fig, ax = axes_for(ax)
     vm = stress.von_mises()[depth_index]
     scale, unit = prefixed_scale(float(vm.max()) or 1.0, "Pa")
     size_scale, size_label = prefixed_scale(max(stress.size), "m")

@@ -6,7 +6,7 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import prefixed_scale
-from .topography import _axes
+from .layout import axes_for
 
 
 def plot_mu_boxes(comparison, ax: Axes | None = None):
@@ -25,7 +25,7 @@ def plot_mu_boxes(comparison, ax: Axes | None = None):
     -------
     (Figure, Axes)
     """
-    fig, ax = _axes(ax, figsize=(6.0, 4.0))
+    fig, ax = axes_for(ax, figsize=(6.0, 4.0))
     data, positions, colours = [], [], []
     for k, sample in enumerate(comparison.samples):
         data += [sample.simulated, sample.measured]
@@ -48,18 +48,10 @@ def plot_mu_boxes(comparison, ax: Axes | None = None):
 def plot_mu_means(comparison, ax: Axes | None = None):
     """Draw the mean mu per sample with one standard deviation, simulated beside measured (Fig. 8).
 
-    Parameters
-    ----------
-    comparison : Comparison
-        From :func:`roughcontact.experiment.compare`.
-    ax : matplotlib Axes, optional
-        Axes to draw on.
-
-    Returns
-    -------
-    (Figure, Axes)
+    Takes and returns what :func:`plot_mu_boxes` does: a ``Comparison`` and optional axes;
+    ``(fig, ax)``.
     """
-    fig, ax = _axes(ax, figsize=(6.0, 4.0))
+    fig, ax = axes_for(ax, figsize=(6.0, 4.0))
     x = np.arange(len(comparison.samples))
     for offset, kind, colour in ((-0.18, "simulated", "tab:blue"), (0.18, "measured", "tab:orange")):
         means = [getattr(s, f"{kind}_mean") for s in comparison.samples]
@@ -88,7 +80,7 @@ def plot_friction_vs_load(sweep, ax: Axes | None = None, *, crossover: float | N
     -------
     (Figure, Axes)
     """
-    fig, ax = _axes(ax)
+    fig, ax = axes_for(ax)
     scale, unit = prefixed_scale(float(np.max(sweep.normal_force)), "N")
     for name, style in (("friction", "k-"), ("adhesive_friction", "b--"), ("mechanical_friction", "r-.")):
         values = np.asarray(getattr(sweep, name))

@@ -6,7 +6,7 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import unit_factor
-from .topography import _axes
+from .layout import axes_for
 
 _SEGMENT_STYLES = {"loading": "C0", "hold": "C2", "unloading": "C1"}
 _DEPTH_UNIT, _LOAD_UNIT, _MODULUS_UNIT = "nm", "mN", "GPa"  # fixed, as in paper 001 (Fig. 7, Table 2)
@@ -58,7 +58,7 @@ def plot_indentation_record(data, scalars: dict, *, ax: Axes | None = None, titl
         where the creep correction changed it, "corrected S_e"; a marker "d_max, F_max" and a
         vertical line "contact depth d_c".
     """
-    fig, ax = _axes(ax, figsize=(5.5, 4.2))
+    fig, ax = axes_for(ax, figsize=(5.5, 4.2))
     depth, load = np.asarray(data["depth"]), np.asarray(data["load"])
     segment = np.asarray(data["segment"]).astype(str)
     nm, mn = _DEPTH_SCALE, _LOAD_SCALE  # SI values of one shown unit

@@ -22,7 +22,7 @@ from matplotlib.figure import Figure
 
 from ..errors import InputError
 from ..units import prefixed_scale, unit_factor
-from .topography import _axes
+from .layout import axes_for
 
 _LENGTH_UNIT, _FORCE_UNIT, _STIFFNESS_UNIT = "µm", "mN", "mN/µm"  # fixed, as in paper 001 Figs. 13-15
 _LENGTH_SCALE, _FORCE_SCALE, _STIFFNESS_SCALE = (
@@ -80,7 +80,7 @@ def plot_hysteresis_loops(
     -------
     Figure
     """
-    fig, ax = _axes(ax, figsize=(5.5, 4.0))
+    fig, ax = axes_for(ax, figsize=(5.5, 4.0))
     for delta, force, label in _curves(simulated, "simulated"):
         ax.plot(delta / _LENGTH_SCALE, force / _FORCE_SCALE, "-", linewidth=2.0, label=label)
     for delta, force, label in _curves(measured, "measured"):
@@ -224,7 +224,7 @@ def plot_lateral_stiffness(
         An array whose length differs from ``loads``, or an unknown normalisation.
     """
     load = np.asarray(loads, dtype=float).ravel()
-    fig, ax = _axes(ax, figsize=(5.5, 4.0))
+    fig, ax = axes_for(ax, figsize=(5.5, 4.0))
 
     def values(series, field, point):
         k = np.asarray(series, dtype=float).ravel()
@@ -302,7 +302,7 @@ def plot_loop_analysis(
     -------
     Figure
     """
-    fig, ax = _axes(ax, figsize=(5.5, 4.4))
+    fig, ax = axes_for(ax, figsize=(5.5, 4.4))
     um, mn = _LENGTH_SCALE, _FORCE_SCALE
     if "displacement" in data:
         displacement, force = np.asarray(data["displacement"]), np.asarray(data["force"])

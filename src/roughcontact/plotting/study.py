@@ -9,16 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 from matplotlib.axes import Axes
-from matplotlib.figure import Figure
 
 from ..units import prefixed_scale
-
-
-def new_figure(rows: int, columns: int, *, width: float = 5.0, height: float = 4.0) -> tuple[Figure, list]:
-    """Return a figure and its axes as a list of rows (each a list of axes)."""
-    figure = Figure(figsize=(width * columns, height * rows), layout="constrained")
-    axes = figure.subplots(rows, columns, squeeze=False)
-    return figure, [list(row) for row in axes]
 
 
 def map_axes(

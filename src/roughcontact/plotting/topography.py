@@ -13,13 +13,7 @@ from matplotlib.figure import Figure
 from ..topography import Topography
 from ..topography.statistics import psd_1d, psd_radial
 from ..units import prefixed_scale
-
-
-def _axes(ax: Axes | None, figsize=(5.0, 4.0)) -> tuple[Figure, Axes]:
-    if ax is not None:
-        return ax.figure, ax
-    fig = Figure(figsize=figsize, layout="constrained")
-    return fig, fig.add_subplot()
+from .layout import axes_for
 
 
 def _title(topography: Topography) -> str:
@@ -43,7 +37,7 @@ def plot_heights(topography: Topography, ax: Axes | None = None, *, cmap: str = 
     fig, ax
         The figure and the axes drawn into.
     """
-    fig, ax = _axes(ax)
+    fig, ax = axes_for(ax)
     heights = topography.heights - topography.heights.mean()
     size_scale, size_label = prefixed_scale(max(topography.size), "m")
     height_scale, height_label = prefixed_scale(float(np.ptp(heights)) or 1e-9, "m")
@@ -78,7 +72,7 @@ def plot_psd(topography: Topography, ax: Axes | None = None):
     fig, ax
         The figure and the axes drawn into.
     """
-    fig, ax = _axes(ax)
+    fig, ax = axes_for(ax)
     if topography.dim == 1:
         wavevector, psd = psd_1d(topography)
         ax.set_ylabel("PSD C¹ᴰ (m³)")

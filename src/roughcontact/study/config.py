@@ -595,21 +595,10 @@ def build_study(document: dict, *, folder: Path, text: str, source: str, path: P
 
 
 def load_study(path: str | Path) -> Study:
-    """Read and validate a study file, building every case; raise :class:`StudyError` listing all problems.
+    """Read a study file (TOML) and validate it with :func:`build_study`.
 
-    Parameters
-    ----------
-    path : str or Path
-        The TOML study file; relative file names inside it are relative to its folder.
-
-    Returns
-    -------
-    Study
-
-    Raises
-    ------
-    StudyError
-        The file is missing, is not TOML, or has problems (each named with its field, value and fix).
+    ``path``'s relative file names are relative to its folder. Raises :class:`StudyError` for a
+    missing file, a file that is not TOML, and every problem :func:`build_study` finds.
     """
     path = Path(path).expanduser().resolve()
     if not path.is_file():

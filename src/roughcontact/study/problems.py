@@ -100,6 +100,8 @@ def from_validation_error(
         whole_table = not item["loc"]  # a model-level check: the value is the whole table
         if whole_table and context.get("field"):  # ... that names the key it is about
             item = item | {"loc": (context["field"],)}
+            value = value.get(context["field"]) if isinstance(value, dict) else None
+            whole_table = value is None
         shown = "" if item["type"] == "missing" or whole_table else f" (got {value!r})"
         fix = context.get("fix")
         if item["type"] == "missing":

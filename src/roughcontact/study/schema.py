@@ -14,7 +14,7 @@ import typing
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, model_validator
+from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ..errors import InputError
@@ -93,6 +93,26 @@ def _grid_shape(value: Any) -> tuple[int, ...]:
     return tuple(values)
 
 
+def _unit_of(dimension: str, examples: str):
+    """Validate a unit name of ``dimension`` (``"um"``), kept as written; refuse a unit of another kind."""
+
+    def check(value: str) -> str:
+        try:
+            quantity(f"1 {value}", dimension)
+        except InputError as error:
+            raise PydanticCustomError(
+                "quantity",
+                "{problem}",
+                {
+                    "problem": f"{value!r} is not a unit of {dimension} ({error.problem.rstrip('.')})",
+                    "fix": f"give one, e.g. {examples}.",
+                },
+            ) from None
+        return value
+
+    return AfterValidator(check)
+
+
 Length = Annotated[float, _si("length")]
 Area = Annotated[float, _si("area")]
 InverseArea = Annotated[float, _si("inverse_area")]
@@ -102,6 +122,8 @@ Time = Annotated[float, _si("time")]
 SurfaceEnergy = Annotated[float, _si("surface_energy")]
 LengthPerAxis = Annotated[float | tuple[float, float], _si_per_axis("length")]
 GridShape = Annotated[tuple[int, ...], BeforeValidator(_grid_shape)]
+LengthUnit = Annotated[str, _unit_of("length", "'um', 'nm' or 'm'")]
+ForceUnit = Annotated[str, _unit_of("force", "'mN', 'uN' or 'N'")]
 
 
 def field_metadata(schema: type[BaseModel], name: str) -> list[Any]:
@@ -249,7 +271,7 @@ class RaisedIsland(_Seeded):
 
 
 class Paper002Island(Strict):
-    """:func:`~roughcontact.models.thin_film_island.paper002_island`: paper 002's island stand-in."""
+    """:func:`~roughcontact.models.paper002.paper002_island`: paper 002's island stand-in."""
 
     generate: Literal["paper002_island"]
     shape: GridShape = (64, 64)

@@ -707,12 +707,29 @@ def summits(topography: Topography) -> Summits:
 # --- summary ---------------------------------------------------------------------------------------
 
 
-def summary(topography: Topography) -> dict[str, float]:
-    """All scalar statistics of a surface, SI, for the CLI.
+SUMMARY = {
+    "Ra": ("m", "arithmetic mean deviation"),
+    "Rq": ("m", "root mean square height"),
+    "Rsk": ("", "skewness"),
+    "Rku": ("", "kurtosis"),
+    "Rz": ("m", "peak-to-valley height"),
+    "rms_slope": ("", "rms slope"),
+    "rms_curvature": ("1/m", "rms curvature"),
+    "m0": ("m^2", "spectral moment m0 (paper 002 eq. 1)"),
+    "m2": ("", "spectral moment m2 (eq. 2)"),
+    "m4": ("1/m^2", "spectral moment m4 (eq. 3)"),
+    "bandwidth": ("", "bandwidth parameter alpha = m0 m4 / m2^2"),
+    "summit_density": ("1/m^2", "summit density eta (McCool)"),
+    "summit_radius": ("m", "summit radius R_asp (eq. 4)"),
+    "summit_height_std": ("m", "summit height deviation sigma_s (eq. 5)"),
+}
+"""Each entry of :func:`summary`: its SI unit ("" for a dimensionless one) and what it is."""
 
-    Keys: "Ra", "Rq", "Rsk", "Rku", "Rz" [m or -], "rms_slope" [-], "rms_curvature" [1/m],
-    "m0" [m^2], "m2" [-], "m4" [1/m^2], "bandwidth" [-], "summit_density" [1/m^2],
-    "summit_radius" [m], "summit_height_std" [m]. Default (forward) first differences.
+
+def summary(topography: Topography) -> dict[str, float]:
+    """All scalar statistics of a surface, SI (the entries and units of :data:`SUMMARY`).
+
+    Default (forward) first differences.
     Entries that are undefined for this surface are left out rather than set to NaN: "Rsk" and
     "Rku" for a flat surface, and the McCool entries when the moments give alpha < 0.8968 or a
     zero moment.

@@ -18,13 +18,7 @@ Paper 001's protocol (10 mN, 20 mN/min loading and unloading, 60 s hold) is the 
 
 References
 ----------
-W. C. Oliver and G. M. Pharr, "An improved technique for determining hardness and elastic modulus
-using load and displacement sensing indentation experiments", J. Mater. Res. 7 (1992) 1564-1583.
-doi:10.1557/JMR.1992.1564.
-G. Feng and A. H. W. Ngan, "Effects of creep and thermal drift on modulus measurement using
-depth-sensing indentation", J. Mater. Res. 17 (2002) 660-668. doi:10.1557/JMR.2002.0094.
-B. Tang and A. H. W. Ngan, "Accurate measurement of tip-sample contact size during nanoindentation
-of viscoelastic materials", J. Mater. Res. 18 (2003) 1141-1148. doi:10.1557/JMR.2003.0156.
+Oliver and Pharr (1992), Feng and Ngan (2002), Tang and Ngan (2003): in full in :mod:`.fits`.
 Seed paper 001, eqs. 5-8 and Table 2. doi:10.1115/1.4045900
 """
 

@@ -170,8 +170,9 @@ class MeasuredCurve(Strict):
     """``[analysis.compare]``: a measured load-interference curve drawn with the models' curves.
 
     ``measured_curve`` is a CSV file of rows ``interference_m,force_N`` (SI; a header line is
-    skipped), read by :func:`roughcontact.models.asperity_report.read_measured_curve`; its zero of
-    interference should follow the analyses' (paper 002: zero at 25 uN).
+    allowed, units in it are converted), read by
+    :func:`roughcontact.experiment.load_curve.read_load_curve`; its zero of interference should
+    follow the analyses' (paper 002: zero at 25 uN).
     """
 
     measured_curve: Path
@@ -278,9 +279,9 @@ def measured_of(context) -> dict | None:
     compare = context.compare
     if compare is None or getattr(compare, "measured_curve", None) is None:
         return None
-    from ...models.asperity_report import read_measured_curve
+    from ...experiment.load_curve import read_load_curve
 
-    return read_measured_curve(Path(compare.measured_curve))
+    return read_load_curve(Path(compare.measured_curve))
 
 
 def _labelled_curves(records) -> dict[str, dict]:

@@ -32,32 +32,26 @@ def grid(topography) -> tuple[tuple[str, ...], dict]:
     return axes, coordinates
 
 
-def curve_dataset(curve: dict, variables: dict[str, tuple[str, str]], attrs: dict):
-    """Return a load-unload curve as an ``xarray.Dataset`` on the dimension ``point``.
-
-    Parameters
-    ----------
-    curve : dict
-        ``"branch"`` (loading/unloading per point) and the arrays named in ``variables``.
-    variables : dict
-        Name -> (SI unit, description) of the arrays to keep.
-    attrs : dict
-        Attributes of the dataset.
-    """
-    import xarray as xr
-
-    data = {"branch": ("point", np.asarray(curve["branch"]).astype(str))}
-    for name, (unit, description) in variables.items():
-        data[name] = (
-            "point",
-            np.asarray(curve[name], dtype=float),
-            {"units": unit, "long_name": description},
-        )
-    return xr.Dataset(data, attrs=attrs)
-
-
 def scalar_series(records: Sequence[CaseRecord], *names: str) -> tuple[np.ndarray, ...]:
     """Arrays of the scalars ``names`` over ``records``, ordered by the first of them."""
     values = np.array([[float(r.scalars[name]) for name in names] for r in records], dtype=float)
     values = values[np.argsort(values[:, 0], kind="stable")]
     return tuple(values.T)
+
+
+def panel_per_case(
+    records: Sequence[CaseRecord], draw, *, limit: int = 4, width: float = 5.5, height: float = 4.4
+):
+    """Return a figure of one panel per stored case (at most ``limit``), or None without any.
+
+    ``draw(record, data, ax)`` draws one case from its record and its loaded fields.
+    """
+    from ...plotting.layout import new_figure
+
+    chosen = [r for r in records if r.fields_path is not None][:limit]
+    if not chosen:
+        return None
+    figure, axes = new_figure(1, len(chosen), width=width, height=height)
+    for ax, record in zip(axes[0], chosen, strict=True):
+        draw(record, record.dataset(), ax)
+    return figure

@@ -36,7 +36,8 @@ Hold time (paper 000, end of section 2: "a time-dependent elastic modulus"): wit
 exp(-t / tau) replaces E0 in eq. 1 (as ``roughcontact friction --relaxed-modulus``).
 
 Scalars: those of :meth:`~roughcontact.friction.WinklerLJResult.scalars` (mu, friction, its
-adhesive and mechanical parts, separation, springs in each state, ...), the ratio of adhesive to
+adhesive and mechanical parts, separation, springs in each state, ...), the readings that differ
+from the defaults (``readings``, e.g. ``contact=zero_gap``, or ``defaults``), the ratio of adhesive to
 mechanical friction, the model's constants (contact modulus, Winkler factor, shear modulus, work
 of adhesion, spring stiffness and area), the load the layer can carry and, with ``crossover =
 true``, the load where mechanical friction overtakes adhesive friction (paper 000, section 6:
@@ -147,11 +148,11 @@ class FrictionParameters(CaseParameters):
         if bad:
             raise PydanticCustomError(
                 "quantity",
-                "{names} must be positive and finite, got {values}",
+                "{names} must be positive and finite",
                 {
                     "names": ", ".join(bad),
-                    "values": ", ".join(f"{getattr(self, name):g}" for name in bad),
                     "fix": "e.g. " + ", ".join(f"{name} = '{_EXAMPLES[name]}'" for name in bad),
+                    "field": bad[0],
                 },
             )
         if self.hold_time < 0 or (self.relaxed_modulus is not None and not self.relaxed_modulus > 0):
@@ -246,21 +247,9 @@ def readings_of(parameters: FrictionParameters):
 def build_model(parameters: FrictionParameters, inputs):
     """Return the :class:`~roughcontact.friction.WinklerLJModel` of a case (topographies merged).
 
-    Parameters
-    ----------
-    parameters : FrictionParameters
-    inputs : CaseInputs
-        The case's topographies and materials.
-
-    Returns
-    -------
-    WinklerLJModel
-
-    Raises
-    ------
-    InputError
-        A relaxed modulus above the surface material's Young's modulus, or any refusal of
-        :func:`~roughcontact.friction.winkler_lj_model`.
+    ``inputs`` holds the case's topographies and materials. Raises InputError for a relaxed modulus
+    above the surface material's Young's modulus, or any refusal of
+    :func:`~roughcontact.friction.winkler_lj_model`.
     """
     from ...friction import winkler_lj_model
     from ...friction.viscoelastic import standard_linear_solid
@@ -319,6 +308,8 @@ def run(parameters: FrictionParameters, inputs) -> CaseOutput:
     result = model.solve(parameters.normal_force)
     constants = model.parameters()
     scalars: dict[str, Any] = dict(result.scalars())
+    changed = model.readings.changed()
+    scalars["readings"] = ", ".join(f"{k}={v}" for k, v in changed.items()) or "defaults"
     mechanical = result.mechanical_friction
     scalars["adhesive_to_mechanical"] = result.adhesive_friction / mechanical if mechanical > 0 else None
     for name in (
@@ -471,7 +462,7 @@ def _mean_by_load(group: Sequence[CaseRecord], name: str) -> tuple[np.ndarray, n
 
 
 def _friction_vs_load(records, context):
-    from ...plotting.study import new_figure
+    from ...plotting.layout import new_figure
 
     loads = _loads(records)
     if len(loads) < 2:
@@ -512,7 +503,7 @@ def _simulated_only(records, context) -> dict[str, list[float]] | None:
 
 def _mu_boxes(records, context):
     from ...plotting.friction import plot_mu_boxes
-    from ...plotting.study import new_figure
+    from ...plotting.layout import new_figure
 
     figure, axes = new_figure(1, 1, width=6.0)
     ax = axes[0][0]
@@ -537,7 +528,7 @@ def _mu_boxes(records, context):
 
 def _mu_means(records, context):
     from ...plotting.friction import plot_mu_means
-    from ...plotting.study import new_figure
+    from ...plotting.layout import new_figure
 
     figure, axes = new_figure(1, 1, width=6.0)
     ax = axes[0][0]

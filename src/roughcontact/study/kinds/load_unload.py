@@ -43,10 +43,11 @@ import numpy as np
 from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
+from ...models.thin_film_island import IslandCompression
 from ..kind import CaseOutput, CaseParameters, Kind
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
 from .asperity import MeasuredCurve, common_omega_c, curve_of, draw_load_interference, measured_of
-from .common import curve_dataset, evenly_chosen
+from .common import evenly_chosen
 
 MAPS_PER_BRANCH = 6
 """Default number of von Mises maps on loading (evenly spread over the targets; unloading: the same loads)."""
@@ -200,37 +201,13 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
         tolerance=parameters.tolerance,
         **options,
     )
-    curve = compression.curve()
-    peak_index = loading.size - 1
-    peak = compression.steps[peak_index]
-    # Fraction of the real contact area at the hardness (compress_island's curve gives it per grid point).
-    curve["plastic_fraction"] = np.array(
-        [s.plastic_mask.sum() / max(np.count_nonzero(s.contact_mask), 1) for s in compression.steps]
-    )
+    peak_index = compression.peak
     depth = [parameters.stress_depth]
     chosen = _map_steps(parameters, loading, unloading)
     maps = {i: compression.stress(i, depths=depth).von_mises()[0] for i in sorted({*chosen, peak_index})}
-    peak_von_mises = maps[peak_index]
-    scalars = {
-        "peak_force": peak.force,
-        "peak_interference": float(compression.interference[peak_index]),
-        "residual_interference": compression.residual_interference,
-        "peak_contact_area": peak.contact_area,
-        "plastic_fraction_at_peak": float(curve["plastic_fraction"][peak_index]),
-        "max_pressure": float(np.max(curve["max_pressure"])),
-        "max_plastic_deformation": float(compression.plastic_deformation.max()),
-        "max_von_mises_at_peak": float(peak_von_mises.max()),
-        "hardness": compression.hardness,
-    }
-    units = {
-        "approach": ("m", "interference, zero at reference_force on loading"),
-        "force": ("N", "load"),
-        "contact_area": ("m^2", "real contact area"),
-        "plastic_fraction": ("", "fraction of the real contact area at the hardness"),
-        "max_pressure": ("Pa", "largest contact pressure"),
-    }
-    attributes = {"stress_depth": parameters.stress_depth, "reference_force": parameters.reference_force}
-    dataset = curve_dataset(curve, units, attributes)
+    scalars = compression.scalars() | {"max_von_mises_at_peak": float(maps[peak_index].max())}
+    dataset = compression.to_xarray()
+    dataset.attrs["stress_depth"] = parameters.stress_depth
     coarse = [_coarsened(maps[i], surface.coordinates(), parameters.map_points) for i in chosen]
     x, y = coarse[0][1]
     dataset["von_mises"] = xr.DataArray(
@@ -286,7 +263,8 @@ def _load_interference(records, context):
 
 def _von_mises(records, context):
     """Paper 002 Figs. 8-9: the stored von Mises maps of the first case, loading then unloading."""
-    from ...plotting.study import map_axes, new_figure
+    from ...plotting.layout import new_figure
+    from ...plotting.study import map_axes
 
     record = next((r for r in records if r.fields_path is not None), None)
     data = None if record is None else record.dataset()
@@ -328,20 +306,7 @@ KIND = Kind(
     "(FFT-BEM, force control, paper 002 Figs. 7-9)",
     parameters=LoadUnloadParameters,
     run=run,
-    units={
-        "peak_force": "N",
-        "peak_interference": "m",
-        "residual_interference": "m",
-        "peak_contact_area": "m^2",
-        "plastic_fraction_at_peak": "",
-        "max_pressure": "Pa",
-        "max_plastic_deformation": "m",
-        "max_von_mises_at_peak": "Pa",
-        "hardness": "Pa",
-        "reference_force": "N",
-        "film_thickness": "m",
-        "stress_depth": "m",
-    },
+    units=IslandCompression.UNITS | {"max_von_mises_at_peak": "Pa"},
     figures={"load_interference": _load_interference, "von_mises": _von_mises},
     compare=MeasuredCurve,
     headline=("peak_interference", "residual_interference", "peak_contact_area", "max_von_mises_at_peak"),

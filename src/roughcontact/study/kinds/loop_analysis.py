@@ -31,12 +31,13 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Annotated
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...experiment.friction_loop import LoopAnalysis
 from ..kind import CaseOutput, CaseParameters, Kind
-from ..schema import Force
+from ..schema import Force, ForceUnit, LengthUnit
+from .common import panel_per_case
 
 
 class LoopAnalysisParameters(CaseParameters):
@@ -60,31 +61,11 @@ class LoopAnalysisParameters(CaseParameters):
     """
 
     loop: Path
-    displacement_unit: str = "um"
-    force_unit: str = "mN"
+    displacement_unit: LengthUnit = "um"
+    force_unit: ForceUnit = "mN"
     normal_force: Annotated[Force, Field(gt=0.0, allow_inf_nan=False)]
     fractions: list[float] = Field(default_factory=lambda: [0.25, 0.5, 0.75], min_length=1, max_length=9)
     branch: str = "increasing"
-
-    @field_validator("displacement_unit", "force_unit")
-    @classmethod
-    def _known_unit(cls, value: str, info) -> str:
-        from ...errors import InputError
-        from ...units import quantity
-
-        dimension = "length" if info.field_name == "displacement_unit" else "force"
-        try:
-            quantity(f"1 {value}", dimension, field=info.field_name)
-        except InputError as error:
-            raise PydanticCustomError(
-                "quantity",
-                "{problem}",
-                {
-                    "problem": f"{value!r} is not a unit of {dimension} ({error.problem.rstrip('.')})",
-                    "fix": "give one, e.g. 'um' or 'mN'.",
-                },
-            ) from None
-        return value
 
     @model_validator(mode="after")
     def _points(self) -> LoopAnalysisParameters:
@@ -131,24 +112,16 @@ def run(parameters: LoopAnalysisParameters, inputs) -> CaseOutput:
 
 def _loop(records, context):
     """Draw the record (grey), its last loop, the eq. 9 fits and the points with their K_L (Fig. 10)."""
-    import numpy as np
-
     from ...plotting.presliding import plot_loop_analysis
-    from ...plotting.study import new_figure
 
-    chosen = [r for r in records if r.fields_path is not None][:4]
-    if not chosen:
-        return None
-    figure, axes = new_figure(1, len(chosen), width=5.5, height=4.4)
-    for ax, record in zip(axes[0], chosen, strict=True):
-        data = record.dataset()
+    def draw(record, data, ax):
+        force = record.scalars["normal_force"] * 1e3
+        title = f"{Path(record.parameters['loop']).name}, F0 = {force:g} mN"
         plot_loop_analysis(
-            {name: np.asarray(data[name]) for name in data.variables},
-            record.scalars,
-            title=f"{Path(record.parameters['loop']).name}, F0 = {record.scalars['normal_force'] * 1e3:g} mN",
-            ax=ax,
+            {name: data[name].values for name in data.variables}, record.scalars, title=title, ax=ax
         )
-    return figure
+
+    return panel_per_case(records, draw)
 
 
 KIND = Kind(

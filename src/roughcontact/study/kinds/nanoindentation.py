@@ -43,6 +43,7 @@ from pydantic_core import PydanticCustomError
 from ...experiment.nanoindentation import CREEP_FITS, RATE_SIGNS, IndentationResult
 from ..kind import CaseOutput, CaseParameters, Kind
 from ..schema import MaterialName
+from .common import panel_per_case
 
 
 class NanoindentationParameters(CaseParameters):
@@ -136,17 +137,11 @@ def run(parameters: NanoindentationParameters, inputs) -> CaseOutput:
 def _indentation(records, context):
     """Each curve (up to four) with its fitted unloading law and the tangent S_e (paper 001 Fig. 7)."""
     from ...plotting.indentation import plot_indentation_record
-    from ...plotting.study import new_figure
 
-    chosen = [r for r in records if r.fields_path is not None][:4]
-    if not chosen:
-        return None
-    figure, axes = new_figure(1, len(chosen), width=5.5, height=4.4)
-    for ax, record in zip(axes[0], chosen, strict=True):
-        plot_indentation_record(
-            record.dataset(), record.scalars, ax=ax, title=Path(record.parameters["curve"]).name
-        )
-    return figure
+    def draw(record, data, ax):
+        plot_indentation_record(data, record.scalars, ax=ax, title=Path(record.parameters["curve"]).name)
+
+    return panel_per_case(records, draw)
 
 
 KIND = Kind(

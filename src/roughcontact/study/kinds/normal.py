@@ -120,7 +120,8 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
 
 
 def _contact_maps(records, context):
-    from ...plotting.study import map_axes, new_figure
+    from ...plotting.layout import new_figure
+    from ...plotting.study import map_axes
 
     chosen = evenly_chosen([r for r in records if r.fields_path is not None], 4)
     fields = [record.dataset() for record in chosen]
@@ -139,7 +140,7 @@ def _contact_maps(records, context):
 
 def _curve_of_cases(records, x: str, y: str, scales: tuple[float, float], labels: tuple[str, str, str]):
     """One scalar against another over the cases, a line per sample (None for fewer than 2 cases)."""
-    from ...plotting.study import new_figure
+    from ...plotting.layout import new_figure
 
     if len(records) < 2:
         return None
@@ -172,7 +173,8 @@ def _load_approach(records, context):
 
 
 def _von_mises(records, context):
-    from ...plotting.study import map_axes, new_figure
+    from ...plotting.layout import new_figure
+    from ...plotting.study import map_axes
 
     chosen = evenly_chosen([r for r in records if "max_von_mises" in r.scalars], 4)
     if not chosen:

@@ -78,15 +78,14 @@ from pathlib import Path
 from typing import Annotated
 
 import numpy as np
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
-from ...errors import InputError
 from ...models.paper001 import MINDLIN_READINGS as READINGS
 from ...models.paper001 import POINT_NAMES as POINTS
 from ...models.paper001 import PreslidingResult
 from ..kind import CaseOutput, CaseParameters, Kind
-from ..schema import Force, Length, MaterialName, Strict, TopographyName
+from ..schema import Force, ForceUnit, Length, LengthUnit, MaterialName, Strict, TopographyName
 from .common import evenly_chosen, grouped
 
 _Positive = Field(gt=0.0, allow_inf_nan=False)
@@ -176,32 +175,10 @@ class PreslidingCompare(Strict):
     """
 
     measured_loop: Path
-    displacement_unit: str = "um"
-    force_unit: str = "mN"
+    displacement_unit: LengthUnit = "um"
+    force_unit: ForceUnit = "mN"
     normal_force: Annotated[Force, _Positive]
     sample: str | None = None
-
-    @field_validator("displacement_unit", "force_unit")
-    @classmethod
-    def _known_unit(cls, value: str, info) -> str:
-        from ...units import quantity
-
-        dimension, examples = {
-            "displacement_unit": ("length", "'um', 'nm' or 'm'"),
-            "force_unit": ("force", "'mN', 'uN' or 'N'"),
-        }[info.field_name]
-        try:
-            quantity(f"1 {value}", dimension, field=info.field_name)
-        except InputError as error:
-            raise PydanticCustomError(
-                "quantity",
-                "{problem}",
-                {
-                    "problem": f"{value!r} is not a unit of {dimension} ({error.problem.rstrip('.')})",
-                    "fix": f"give one, e.g. {examples}.",
-                },
-            ) from None
-        return value
 
 
 def check(parameters: PreslidingParameters) -> None:
@@ -281,8 +258,8 @@ def _compares_with(compare, sample: str) -> bool:
 
 def _loops(records, context):
     """Friction loops of every case, one panel per sample, with the measured loop (Figs. 13-14)."""
+    from ...plotting.layout import new_figure
     from ...plotting.presliding import plot_hysteresis_loops
-    from ...plotting.study import new_figure
 
     groups = grouped([r for r in records if r.fields_path is not None])
     if not groups:
@@ -387,8 +364,8 @@ def _mindlin_curves(group, loads: np.ndarray) -> dict[str, dict[str, np.ndarray]
 
 def _lateral_stiffness(records, context):
     """Draw K_L at A, B, C against F0 with Mindlin in both readings, one panel per sample (Fig. 15)."""
+    from ...plotting.layout import new_figure
     from ...plotting.presliding import POINT_COLOURS, plot_lateral_stiffness
-    from ...plotting.study import new_figure
 
     groups = grouped(records)
     measured = _measured(context)
@@ -433,18 +410,31 @@ def _ratio(numerator: float, denominator: float) -> float:
     return numerator / denominator if denominator and math.isfinite(denominator) else math.nan
 
 
+_INPUTS = {
+    "normal_force [N]": "normal_force",
+    "stroke [m]": "stroke",
+    "friction_coefficient": "friction_coefficient",
+    "mu_from_loop": "mu_from_loop",
+}
+_LOOP = {
+    "stroke [m]": "stroke_from_loop",
+    "mu": "mu_from_loop",
+    "energy_last_loop [J]": "energy_last_loop",
+    "presliding_distance [m]": "presliding_distance",
+}
+"""Table column -> stored scalar, of the cases' inputs and of their last loop."""
+
+
+def _columns(record, columns: dict[str, str]) -> dict[str, float]:
+    return {header: _number(record, name) for header, name in columns.items()}
+
+
 def _lateral_stiffness_table(records, context):
     """Per case: K_L at A, B, C simulated, Mindlin (Johnson and as printed) and their ratios [N/m]."""
     rows = []
     for record in records:
-        row = {
-            "case": record["case"],
-            "sample": record.parameters.get("sample", ""),
-            "normal_force [N]": _number(record, "normal_force"),
-            "stroke [m]": _number(record, "stroke"),
-            "friction_coefficient": _number(record, "friction_coefficient"),
-            "mu_from_loop": _number(record, "mu_from_loop"),
-        }
+        row = {"case": record["case"], "sample": record.parameters.get("sample", "")}
+        row |= _columns(record, _INPUTS)
         for point in POINTS:
             simulated = _number(record, f"K_L_{point}")
             row[f"K_L_{point} [N/m]"] = simulated
@@ -483,11 +473,8 @@ def _measured_loop_table(records, context):
             "source": f"simulated: case {record['case']}",
             "sample": sample,
             "normal_force [N]": force,
-            "stroke [m]": _number(record, "stroke_from_loop"),
-            "mu": _number(record, "mu_from_loop"),
-            "energy_last_loop [J]": _number(record, "energy_last_loop"),
-            "presliding_distance [m]": _number(record, "presliding_distance"),
         }
+        simulated |= _columns(record, _LOOP)
         for point in POINTS:
             value = _number(record, f"K_L_{point}")
             simulated[f"K_L_{point} [N/m]"] = value

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...topography.statistics import SUMMARY
 from ..kind import CaseOutput, CaseParameters, Kind
 from ..schema import TopographyName
 from .common import evenly_chosen, grid
@@ -50,7 +51,8 @@ def run(parameters: StatisticsParameters, inputs) -> CaseOutput:
 
 
 def _heights(records, context):
-    from ...plotting.study import map_axes, new_figure
+    from ...plotting.layout import new_figure
+    from ...plotting.study import map_axes
 
     chosen = evenly_chosen(records, 4)
     fields = [record.dataset() for record in chosen]
@@ -70,7 +72,7 @@ def _heights(records, context):
 
 
 def _psd(records, context):
-    from ...plotting.study import new_figure
+    from ...plotting.layout import new_figure
 
     figure, axes = new_figure(1, 1)
     ax = axes[0][0]
@@ -90,19 +92,7 @@ KIND = Kind(
     summary="roughness statistics, spectral moments (m0, m2, m4) and McCool summit parameters",
     parameters=StatisticsParameters,
     run=run,
-    units={
-        "size_x": "m",
-        "size_y": "m",
-        "Ra": "m",
-        "Rq": "m",
-        "Rz": "m",
-        "rms_curvature": "1/m",
-        "m0": "m^2",
-        "m4": "1/m^2",
-        "summit_density": "1/m^2",
-        "summit_radius": "m",
-        "summit_height_std": "m",
-    },
+    units={"size_x": "m", "size_y": "m"} | {name: unit for name, (unit, _) in SUMMARY.items() if unit},
     figures={"heights": _heights, "psd": _psd},
     headline=("Rq", "Ra", "rms_slope", "summit_radius"),
     renamed={"surface": "topography"},

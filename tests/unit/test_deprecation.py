@@ -1,0 +1,45 @@
+"""Release 0.1's names and spellings keep working one release, each with a DeprecationWarning."""
+
+import pytest
+
+from roughcontact.materials import get_material
+from roughcontact.models.paper001 import paper001_mindlin
+
+
+def test_an_old_keyword_warns_and_gives_the_same_answer():
+    new = paper001_mindlin(
+        friction_coefficient=0.153, normal_force=0.025, radius=5e-3, material=get_material("HDPE")
+    )
+    with pytest.warns(DeprecationWarning, match=r"\(mu=\.\.\.\) is now spelled friction_coefficient"):
+        old = paper001_mindlin(mu=0.153, normal_force=0.025, radius=5e-3, material=get_material("HDPE"))
+    assert old == new
+
+
+def test_old_and_new_spelling_together_is_an_error():
+    with pytest.raises(TypeError, match="both 'counter' and its new name 'counter_body'"):
+        paper001_mindlin(
+            friction_coefficient=0.153,
+            normal_force=0.025,
+            radius=5e-3,
+            material=get_material("HDPE"),
+            counter=None,
+            counter_body=None,
+        )
+
+
+@pytest.mark.parametrize(
+    ("old", "name", "new"),
+    [
+        ("roughcontact.analytic.mindlin", "paper001_mindlin", "roughcontact.models.paper001"),
+        ("roughcontact.experiment", "paper000_simulation", "roughcontact.models.paper000"),
+        ("roughcontact.models.thin_film_island", "paper002_island", "roughcontact.models.paper002"),
+    ],
+)
+def test_a_moved_name_is_found_at_its_old_place_with_a_warning(old, name, new):
+    from importlib import import_module
+
+    with pytest.warns(DeprecationWarning, match=f"has moved to {new}.{name}"):
+        found = getattr(import_module(old), name)
+    assert found is getattr(import_module(new), name)
+    with pytest.raises(AttributeError):
+        getattr(import_module(old), "no_such_name")

@@ -1,0 +1,204 @@
+"""Every public result speaks one vocabulary (roughcontact.results): scalars, UNITS, to_xarray, and how a
+solver ended. Built here on tiny problems; the physics of each is tested elsewhere."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from roughcontact._json import json_ready
+from roughcontact.materials import get_material
+from roughcontact.results import SCALAR_NAME, Result, SolverResult, units_of
+from roughcontact.units import unit_factor
+
+
+def _normal():
+    from roughcontact.contact import solve_normal
+    from roughcontact.topography.generate import self_affine
+
+    surface = self_affine((32, 32), 1e-6, hurst=0.8, rms_height=2e-9, seed=1)
+    return solve_normal(surface, get_material("polysilicon"), mean_pressure=50e6)
+
+
+def _ball():
+    from roughcontact.topography.generate import sphere_with_roughness
+
+    return sphere_with_roughness((32, 32), (32 * 2.148e-6,) * 2, radius=5e-3, rms_height=5e-8, seed=3)
+
+
+def _tangential():
+    from roughcontact.contact import solve_normal, solve_tangential
+    from roughcontact.contact.paths import stroke_path
+
+    normal = solve_normal(_ball(), get_material("POM"), force=2e-3)
+    path = stroke_path(0.2e-6, cycles=1, steps_per_stroke=6)
+    return solve_tangential(normal, get_material("POM"), friction_coefficient=0.1, displacement=path)
+
+
+def _presliding():
+    from roughcontact.models.paper001 import presliding
+
+    return presliding(
+        _ball(),
+        get_material("POM"),
+        get_material("silicon wafer"),
+        normal_force=2e-3,
+        friction_coefficient=0.1,
+        stroke=0.3e-6,
+        cycles=2,
+        steps_per_stroke=10,
+    )
+
+
+def _load_unload():
+    from roughcontact.contact import load_unload
+    from roughcontact.topography.generate import self_affine
+
+    surface = self_affine((32, 32), 1e-6, hurst=0.8, rms_height=5e-9, seed=2)
+    return load_unload(surface, get_material("SU-8"), max_force=2e-7, steps=3)
+
+
+def _island():
+    from roughcontact.models.paper002 import paper002_island
+    from roughcontact.models.thin_film_island import compress_island
+
+    return compress_island(paper002_island(16, seed=1), get_material("SU-8"))
+
+
+def _winkler():
+    from roughcontact.friction import solve_winkler_lj
+    from roughcontact.topography.generate import self_affine
+
+    surface = self_affine((32, 32), 0.64e-6, hurst=0.8, rms_height=1.5e-9, seed=1)
+    return solve_winkler_lj(
+        surface,
+        get_material("polysilicon"),
+        get_material("SiO2"),
+        normal_force=1e-6,
+        layer_thickness=50e-9,
+        surface_energy=0.05,
+    )
+
+
+def _statistical():
+    from roughcontact.models import paper002
+
+    return paper002.statistical_curve()
+
+
+def _asperity_parameters():
+    from roughcontact.models import paper002
+
+    return paper002.parameters()
+
+
+def _indentation():
+    from roughcontact.experiment.nanoindentation import oliver_pharr, synthetic_indentation_curve
+
+    return oliver_pharr(synthetic_indentation_curve(1e9, creep_rate=1e-9))
+
+
+def _loop():
+    from roughcontact.analytic.mindlin import masing_force
+    from roughcontact.experiment.friction_loop import analyse_loop
+
+    path = np.concatenate([np.linspace(0, 2e-6, 80), np.linspace(2e-6, 0, 80)[1:]] * 2)
+    force = masing_force(path, 0.15, 0.025, 6e-5, 1e8)
+    return analyse_loop(path, force, 0.025)
+
+
+BUILDERS = {
+    "normal contact": _normal,
+    "tangential path": _tangential,
+    "pre-sliding (paper 001)": _presliding,
+    "load-unload": _load_unload,
+    "island compression (paper 002)": _island,
+    "Winkler-Lennard-Jones": _winkler,
+    "statistical load-unload": _statistical,
+    "asperity parameters": _asperity_parameters,
+    "indentation": _indentation,
+    "loop analysis": _loop,
+}
+SOLVED = {
+    "normal contact",
+    "tangential path",
+    "pre-sliding (paper 001)",
+    "load-unload",
+    "island compression (paper 002)",
+}
+
+
+@pytest.fixture(scope="module", params=list(BUILDERS))
+def named_result(request):
+    return request.param, BUILDERS[request.param]()
+
+
+def test_scalars_have_plain_names_and_json_values(named_result):
+    name, result = named_result
+    assert isinstance(result, Result), name
+    scalars = result.scalars()
+    assert scalars, name
+    bad = [key for key in scalars if not SCALAR_NAME.match(key)]
+    assert not bad, f"{name}: names with units or spaces: {bad}"
+    json.dumps(json_ready(scalars))  # JSON-ready as they are
+
+
+def test_units_are_readable_si_units(named_result):
+    name, result = named_result
+    for key, unit in units_of(result).items():
+        assert SCALAR_NAME.match(key), (name, key)
+        if unit:
+            factor, _ = unit_factor(unit)
+            assert float(factor) == 1.0, f"{name}: {key} in {unit!r} is not an SI unit"
+
+
+def test_dimensional_scalars_are_in_units(named_result):
+    """A float scalar that is not a count, ratio, exponent or label has its unit in UNITS."""
+    name, result = named_result
+    units = units_of(result)
+    dimensionless = ("mu", "fraction", "ratio", "coefficient", "factor", "index", "exponent", "_n", "over_")
+    dimensionless += ("m2", "bandwidth", "residual", "iterations", "epsilon", "beta", "poissons_ratio")
+    dimensionless += (
+        "range_",
+        "direction",
+        "steps",
+        "loops",
+        "patches",
+        "points",
+        "springs",
+        "strain",
+        "alpha",
+    )
+    exact = {"n"}  # eq. 9 exponent
+    fitted = {
+        "fit_alpha",
+        "creep_fit_a",
+    }  # units with fitted powers (N/m^m, m/s^(1/3)): documented, not in UNITS
+    for key, value in result.scalars().items():
+        if isinstance(value, bool) or not isinstance(value, float | np.floating):
+            continue
+        if any(word in key for word in dimensionless) or key in units or key in exact | fitted:
+            continue
+        pytest.fail(f"{name}: scalar {key!r} = {value!r} has no unit in UNITS and looks dimensional")
+
+
+def test_to_xarray_gives_units(named_result):
+    import xarray as xr
+
+    name, result = named_result
+    data = result.to_xarray()
+    assert isinstance(data, xr.Dataset), name
+    for variable in data.data_vars.values():
+        if variable.dtype.kind in "fc":
+            assert "units" in variable.attrs, f"{name}: {variable.name} has no units"
+
+
+def test_solvers_say_how_they_ended(named_result):
+    name, result = named_result
+    if name not in SOLVED:
+        return
+    assert isinstance(result, SolverResult), name
+    assert result.converged is True
+    assert int(np.sum(result.iterations)) >= 0
+    assert math.isfinite(float(np.max(result.residual)))
