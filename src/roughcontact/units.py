@@ -291,9 +291,9 @@ def prefixed_scale(value: float, unit: str) -> tuple[float, str]:
     ``value / scale`` is the number to show in ``label``. The prefix (G, M, k, none, m, µ, n, p;
     powers of 1000) goes on the first prefixable symbol of the numerator (of the denominator when
     the numerator has none) and acts with that symbol's power, so areas and inverse lengths
-    are shown in prefixed metres: 3e-12 m^2 is 3 µm² and 2e6 1/m is 2 1/µm. The largest prefix
-    with ``|value / scale| >= 1`` is chosen (so ``value / scale`` is below 1000 for a power of
-    one, below 1e6 for a square), the smallest when ``value`` is smaller; 0 and non-finite values
+    are shown in prefixed metres: 3e-12 m^2 is 3 µm² and 2e6 1/m is 2 1/µm. The prefix whose
+    number ``value / scale`` lies in [1, 1000), or nearest to it in decades, is chosen (a square
+    steps six decades a prefix: 5.4e-13 m^2 is 0.54 µm², not 5.4e5 nm²); 0 and non-finite values
     and units without a prefixable symbol (``""``, ``"%"``) get scale 1. Powers are written as
     superscripts and products with a middle dot (``"N*m"`` -> ``"N·m"``).
 
@@ -343,7 +343,12 @@ def prefixed_scale(value: float, unit: str) -> tuple[float, str]:
     choices = sorted(
         ((float(f"1e{exponent * power}"), prefix) for prefix, exponent in _DISPLAY_PREFIXES), reverse=True
     )
-    scale, prefix = next(((s, p) for s, p in choices if abs(value) >= s * (1 - 1e-12)), choices[-1])
+
+    def distance(choice: tuple[float, str]) -> tuple[float, float]:  # decades outside [1, 1000)
+        shown = math.log10(abs(value) / choice[0])
+        return (max(-shown, shown - math.log10(1000 * (1 - 1e-12)), 0.0), -shown)
+
+    scale, prefix = min(choices, key=distance)
     return scale, _label(terms, prefix, index)
 
 

@@ -303,9 +303,12 @@ class CommandStudy:
 
     def text(self) -> str:
         """Return the document as a study file (TOML), kept with the results (``run`` reruns it)."""
+        import shlex
+
         import tomli_w
 
-        return "# written by: roughcontact " + " ".join(sys.argv[1:]) + "\n" + tomli_w.dumps(self.document)
+        document = {key: value for key, value in self.document.items() if value}
+        return f"# written by: roughcontact {shlex.join(sys.argv[1:])}\n" + tomli_w.dumps(document)
 
     def build(self):
         """Validate the document and build its cases (:func:`roughcontact.study.config.build_study`).

@@ -167,8 +167,8 @@ class NormalContactResult:
             "number_of_patches": self.number_of_patches,
             "mean_gap": self.mean_gap,
             "max_pressure": float(self.pressure.max()),
-            "iterations": self.iterations,
-            "residual": self.residual,
+            "iterations": int(self.iterations),
+            "residual": float(self.residual),
             "contact_modulus": self.contact_modulus,
         }
 
