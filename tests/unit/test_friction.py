@@ -52,9 +52,9 @@ def test_readings_defaults_choices_and_strings():
     "items, field",
     [
         (["contact=glued"], "readings.contact"),
-        (["colour=red"], "--reading"),
-        (["contact"], "--reading"),
-        (["adhesive_cutoff=far"], "--reading"),
+        (["colour=red"], "readings"),
+        (["contact"], "readings"),
+        (["adhesive_cutoff=far"], "readings"),
     ],
 )
 def test_readings_refuse_unknown_values(items, field):

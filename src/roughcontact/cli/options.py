@@ -361,7 +361,7 @@ class CommandStudy:
 
         text = re.sub(r"(one of |found )([\w]+(?:, [\w]+)+)", listed, text)
         for key, flag in sorted(words.items(), key=lambda item: -len(item[0])):
-            text = re.sub(rf"\b{re.escape(key)} = true\b", flag, text)
+            text = re.sub(rf"\b{re.escape(key)}( = true|=True)\b", flag, text)
             text = re.sub(rf"\b{re.escape(key)} = ", f"{flag} ", text)
             if "_" in key:
                 text = re.sub(rf"(?<![-\w]){re.escape(key)}\b", flag, text)

@@ -145,7 +145,7 @@ class Readings:
 
     @classmethod
     def from_strings(cls, items: Iterable[str]) -> Readings:
-        """Build readings from ``"name=value"`` strings (the CLI's ``--reading``).
+        """Build readings from ``"name=value"`` strings (a study's ``readings`` table, a command's options).
 
         Parameters
         ----------
@@ -168,7 +168,7 @@ class Readings:
             name = name.strip().replace("-", "_")
             if not separator or name not in known:
                 raise InputError(
-                    "--reading", f"cannot read {item!r}.", f"write NAME=VALUE with NAME one of {known}."
+                    "readings", f"cannot read {item!r}.", f"write NAME=VALUE with NAME one of {known}."
                 )
             if name != "adhesive_cutoff":
                 values[name] = value.strip()
@@ -177,7 +177,7 @@ class Readings:
                 values[name] = float(value)
             except ValueError:
                 raise InputError(
-                    "--reading",
+                    "readings",
                     f"adhesive_cutoff {value!r} is not a number.",
                     "give metres, e.g. 2e-8, or inf.",
                 ) from None

@@ -731,7 +731,7 @@ def winkler_lj_model(
             raise InputError(
                 "counter_topography",
                 error.problem,
-                "pass resample=True (CLI: --resample) to interpolate both onto a common grid, "
+                "pass resample=True to interpolate both onto a common grid, "
                 "or bring the scans to one grid first.",
             ) from error
     epsilon = positive(epsilon, "epsilon", example="2e-9", unit="m")
