@@ -12,6 +12,16 @@ from roughcontact.topography import generate
 from roughcontact.topography.native import save_topography
 
 MEASURED = Path(__file__).parents[2] / "examples" / "paper001_measured_loop.csv"
+BALL_OPTIONS = (
+    "--material",
+    "POM",
+    "--counter-body",
+    "silicon wafer",
+    "--normal-force",
+    "5 mN",
+    "--mu",
+    "0.1",
+)
 
 
 def run(capsys, *argv):
@@ -37,14 +47,7 @@ def test_presliding_on_a_file_writes_loops_table_and_figures(capsys, tmp_path, b
         capsys,
         "presliding",
         ball_file,
-        "--material",
-        "POM",
-        "--counter-body",
-        "silicon wafer",
-        "--normal-force",
-        "5 mN",
-        "--friction-coefficient",
-        "0.1",
+        *BALL_OPTIONS,
         "--stroke",
         "0.4 um",
         "--cycles",
@@ -111,18 +114,6 @@ def test_loop_analysis_of_the_measured_example(capsys, tmp_path, scalars):
     status, out, _ = run(capsys, "loop-analysis", MEASURED, "--normal-force", "25 mN", "-o", tmp_path / "out")
     assert "K_L_A" in out and "stroke" in out and "kN/m" in out
     assert (tmp_path / "out" / "figures" / "loop_loop.png").stat().st_size > 0
-
-
-BALL_OPTIONS = (
-    "--material",
-    "POM",
-    "--counter-body",
-    "silicon wafer",
-    "--normal-force",
-    "5 mN",
-    "--mu",
-    "0.1",
-)
 
 
 def _steps(folder):

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import logging
+import os
 import sys
 from collections.abc import Sequence
 
@@ -64,3 +65,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     except ConvergenceError as error:
         print(f"roughcontact: error: {error}", file=sys.stderr)
         return EXIT_NOT_CONVERGED
+    except BrokenPipeError:  # the reader went away (roughcontact ... | head): not an error of ours
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no second error at exit
+        return 0

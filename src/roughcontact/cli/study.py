@@ -230,34 +230,15 @@ def add_commands(commands) -> None:
     )
     run.add_argument("--no-progress", action="store_true", help="no progress bar")
 
-    validate = new_command(
-        commands,
-        "validate",
-        _validate,
-        "check a study file and list its cases without computing anything",
-    )
-    validate.add_argument("study", type=Path, help="study file (TOML)")
-
-    models = new_command(
-        commands,
-        "models",
-        _models,
-        "list the models a study can name, or one model's keys",
-    )
-    models.add_argument("name", nargs="?", help="a model, e.g. normal")
-
-    report = new_command(
-        commands,
-        "report",
-        _report,
-        "write OUT/report.html: the tables and figures of a study on one offline page",
-    )
-    report.add_argument("folder", type=Path, help="the output folder of 'roughcontact run'")
-
-    demo = new_command(
-        commands,
-        "demo",
-        _demo,
-        "run the embedded demo study (examples/demo.toml) and write its report",
-    )
-    demo.add_argument("-o", "--output", type=Path, default=Path("demo-output"), help="output folder")
+    simple = (  # name, handler, summary, its one argument (flags, keywords)
+        ("validate", _validate, "check a study file and list its cases without computing anything",
+         (("study",), {"type": Path, "help": "study file (TOML)"})),
+        ("models", _models, "list the models a study can name, or one model's keys",
+         (("name",), {"nargs": "?", "help": "a model, e.g. normal"})),
+        ("report", _report, "write OUT/report.html: the tables and figures of a study on one offline page",
+         (("folder",), {"type": Path, "help": "the output folder of 'roughcontact run'"})),
+        ("demo", _demo, "run the embedded demo study (examples/demo.toml) and write its report",
+         (("-o", "--output"), {"type": Path, "default": Path("demo-output"), "help": "output folder"})),
+    )  # fmt: skip
+    for name, handler, summary, (flags, keywords) in simple:
+        new_command(commands, name, handler, summary).add_argument(*flags, **keywords)
