@@ -56,7 +56,7 @@ rms_height = "1 nm"
 [[analysis]]
 name = "contact"
 model = "normal"
-surface = "rough"
+topography = "rough"
 material = "polysilicon"
 mean_pressure = "1 MPa"
 tolerance = {tolerance}
@@ -86,7 +86,7 @@ def direct_solves(study):
     start = time.perf_counter()
     problems = [
         (
-            build_topography(case.topographies[case.parameters.surface], None),
+            build_topography(case.topographies[case.parameters.topography], None),
             case.materials[case.parameters.material],
             case.parameters,
         )
@@ -212,8 +212,7 @@ def same_results(folder: Path, scalars: list[dict]) -> bool:
         json.loads((folder / "cases" / "contact" / f"{case}.json").read_text())["scalars"]
         for case in document["analyses"][0]["cases"]
     ]
-    mine = [{k: v for k, v in s.items() if k != "contact_modulus"} for s in stored]
-    return json.dumps(mine) == json.dumps(json_ready(scalars))
+    return json.dumps(stored) == json.dumps(json_ready(scalars))
 
 
 def warm_up(folder: Path, tolerance: float) -> float:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any, ClassVar
 
 import numpy as np
@@ -133,9 +134,12 @@ class NormalContactResult:
         """Real contact area [m^2] (for a line scan: contact length [m])."""
         return float(np.count_nonzero(self.contact_mask) * self._pixel_measure)
 
-    @property
+    @cached_property
     def number_of_patches(self) -> int:
-        """Number of connected contact patches (4-connectivity, periodic wrap when periodic)."""
+        """Number of connected contact patches (4-connectivity, periodic wrap when periodic).
+
+        Cached: the labelling is the costliest scalar, and ``scalars()`` and ``to_xarray()`` both ask.
+        """
         mask = self.contact_mask if self.contact_mask.ndim == 2 else self.contact_mask[:, None]
         return count_patches(mask, periodic=self.boundary == "periodic")
 

@@ -98,7 +98,9 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
         tolerance=parameters.tolerance,
     )
     scalars = result.scalars()
-    dataset = result.to_xarray()
+    # stored: pressure and gap (with the result's scalars as attributes); displacement and heights
+    # follow from them and the input, and would double each case's file (docs/studies.md, Overhead)
+    dataset = result.to_xarray()[["pressure", "gap"]]
     if parameters.stress_depths and surface.dim == 2:
         stress = subsurface_stress(
             result.pressure,
