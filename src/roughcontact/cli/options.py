@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError
+from ..topography.process import LEVELLING
 
 EXIT_INPUT_ERROR = 2
 EXIT_NOT_CONVERGED = 3
@@ -61,6 +62,12 @@ def file_options(*, required: bool = True) -> argparse.ArgumentParser:
         help="interpolate undefined (missing) points instead of refusing the file",
     )
     group.add_argument("--periodic", action="store_true", help="treat the surface as periodic")
+    group.add_argument(
+        "--detrend",
+        choices=LEVELLING,
+        default="plane",
+        help="background removed from the scan before use (default plane: its tilt; none keeps it)",
+    )
     return parent
 
 
@@ -79,11 +86,12 @@ def new_command(
 
 
 def read_file(args: argparse.Namespace):
-    """Read FILE as the file options say (for the commands that describe a file, not a model)."""
+    """Read and level FILE as the file options say (for the commands that describe a file, not a model)."""
     from ..topography.io import read_topography
+    from ..topography.process import level
 
     size = args.size if args.size is None or len(args.size) > 1 else args.size[0]
-    return read_topography(
+    topography = read_topography(
         args.file,
         channel=args.channel,
         size=size,
@@ -91,6 +99,10 @@ def read_file(args: argparse.Namespace):
         undefined="interpolate" if args.fill_undefined else "refuse",
         periodic=args.periodic,
     )
+    try:
+        return level(topography, args.detrend)
+    except InputError as error:
+        raise InputError("--detrend", error.problem, error.fix) from None
 
 
 def add_material_options(parser: argparse.ArgumentParser, prefix: str, what: str, names: str) -> None:
@@ -217,6 +229,8 @@ class CommandStudy:
             for key in ("fill_undefined", "periodic"):
                 if getattr(args, key, False):
                     self.set((*where, key), True, _flag(key))
+        if getattr(args, "detrend", None) is not None:
+            self.set((*where, "detrend"), args.detrend, "--detrend")
         elif getattr(args, "size", None) is not None or getattr(args, "height_unit", None) is not None:
             for key in ("height_unit",):
                 if getattr(args, key, None) is not None:

@@ -75,12 +75,18 @@ def run_command(command: CommandStudy, args) -> int:
     study = command.build()
     for note in study.notes:
         print(f"roughcontact: note: {command.translate(note)}", file=sys.stderr)
+    if not args.json:
+        from ..study.report import preparation_line
+
+        for name, prepared in study.prepared.items():
+            print(command.translate(preparation_line(name, prepared)))
     output = getattr(args, "output", None)
     analyses, report = _run(study, command, output, getattr(args, "dpi", 150))
     tables, problems = produce(analyses, "table")
     if args.json:
         document = {
             "command": study.name,
+            "topographies": study.prepared,
             "analyses": [_analysis_document(analysis, tables) for analysis in analyses],
             "output": None if output is None else str(output.expanduser().resolve()),
         }

@@ -33,6 +33,15 @@ def describe(topography: Topography) -> dict:
     }
 
 
+_LEVELLING_WORDS = {
+    "none": "none: statistics of the scan as stored, tilt included (--detrend plane to level)",
+    "mean": "mean removed only: the tilt is included (--detrend plane to level)",
+    "plane": "least-squares plane subtracted before the statistics (--detrend none keeps the tilt)",
+    "curvature": "least-squares quadratic subtracted before the statistics",
+    "sphere": "fitted sphere subtracted before the statistics",
+}
+
+
 def format_description(description: dict) -> str:
     """Render :func:`describe` output as an aligned text table with SI-prefixed units."""
     size = " x ".join(format_si(s, "m") for s in description["size_m"])
@@ -49,6 +58,8 @@ def format_description(description: dict) -> str:
         lines.append(
             f"undefined      {description['undefined_points_filled']} points filled by interpolation"
         )
+    if "detrend" in description:
+        lines.append(f"levelling      {_LEVELLING_WORDS[description['detrend']]}")
     lines.append("statistics")
     for key, value in description["statistics"].items():
         unit, meaning = SUMMARY.get(key, ("", ""))
@@ -64,6 +75,7 @@ def _inspect(args: argparse.Namespace) -> int:
     topography = read_file(args)
     description = describe(topography)
     description["file"] = str(args.file)
+    description["detrend"] = args.detrend
     description["format"] = topography.info.get("file_format")
     description["channels"] = [
         {

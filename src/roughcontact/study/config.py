@@ -51,7 +51,7 @@ import difflib
 import hashlib
 import json
 import tomllib
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -176,6 +176,8 @@ class Study:
         Specification JSON -> Topography of every file topography, read once during validation.
     notes : tuple of str
         What the user should know but that does not stop the study (deprecated spellings).
+    prepared : dict
+        Name -> :func:`preparation` of every file topography (levelling, filled points).
     """
 
     path: Path | None
@@ -187,6 +189,7 @@ class Study:
     files: dict[str, str]
     loaded: dict[str, Topography]
     notes: tuple[str, ...] = ()
+    prepared: dict[str, dict] = field(default_factory=dict)
 
     @property
     def cases(self) -> list[Case]:
@@ -234,6 +237,24 @@ def _file_hash(path: Path) -> str:
     return digest.hexdigest()
 
 
+def preparation(spec: FileTopography, topography: Topography) -> dict[str, Any]:
+    """Return what was done to a measured file before use: grid, size, filling and levelling (JSON-ready).
+
+    Printed by the commands, kept in ``provenance.json`` and shown in the report, so that a result
+    is never read without knowing whether its scan was levelled or partly interpolated.
+    """
+    filled = int(topography.info.get("undefined_points_filled", 0))
+    return {
+        "file": Path(spec.file).name,
+        "channel": topography.info.get("channel"),
+        "grid": list(topography.shape),
+        "size_m": list(topography.size),
+        "detrend": spec.detrend,
+        "undefined_points_filled": filled,
+        "undefined_fraction_filled": filled / topography.heights.size,
+    }
+
+
 class _Builder:
     """Validates the study's tables and builds the cases of its analyses, collecting every problem."""
 
@@ -243,6 +264,7 @@ class _Builder:
         self.problems: list[Problem] = []
         self.files: dict[str, str] = {}
         self.loaded: dict[str, Topography] = {}
+        self.prepared: dict[str, dict] = {}
         self.notes: list[str] = []
         self.section = collect(
             self.problems, Where(("study",), "study"), StudySection, document.get("study", {})
@@ -250,7 +272,9 @@ class _Builder:
         self.raw_topographies = self._tables("topographies")
         self.raw_materials = self._tables("materials")
         for name, raw in self.raw_topographies.items():  # report bad tables once, not per case
-            self._topography_spec(name, raw)
+            spec = self._topography_spec(name, raw)
+            if isinstance(spec, FileTopography):
+                self.prepared[name] = preparation(spec, self.loaded[spec.model_dump_json()])
         for name, raw in self.raw_materials.items():
             self._material(name, raw)
 
@@ -301,7 +325,7 @@ class _Builder:
 
     def _read(self, spec: FileTopography, where: Where) -> Topography | None:
         from ..topography.io import read_topography
-        from ..topography.process import detrend
+        from ..topography.process import level
 
         try:
             topography = read_topography(
@@ -323,7 +347,7 @@ class _Builder:
             key = error.field if error.field in ("size", "height_unit", "channel") else "file"
             self.problem(Where(where.child(key).path, f"{where.label} ({error.field})"), error.problem, fix)
             return None
-        return topography if spec.detrend == "none" else detrend(topography, spec.detrend)
+        return level(topography, spec.detrend)
 
     def _material(self, name: str, raw: dict) -> Material | None:
         where = Where(("materials", name), f"materials.{name}")
@@ -591,6 +615,7 @@ def build_study(document: dict, *, folder: Path, text: str, source: str, path: P
         files=builder.files,
         loaded=builder.loaded,
         notes=tuple(dict.fromkeys(builder.notes)),
+        prepared=builder.prepared,
     )
 
 

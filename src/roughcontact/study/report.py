@@ -13,6 +13,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
+from ..units import format_si
 from .outputs import StoredAnalysis, draw_figures, read_study, result_rows, write_results_table, write_tables
 from .store import read_table, write_atomically
 
@@ -67,6 +68,30 @@ def _image(path: Path) -> str:
     caption = html.escape(path.stem.replace("_", " "))
     image = f'<img alt="{caption}" src="data:image/png;base64,{data}">'
     return f"<figure>{image}<figcaption>{caption}</figcaption></figure>"
+
+
+_LEVELLING_WORDS = {
+    "none": "not levelled (detrend none: the tilt of the scan is kept)",
+    "mean": "mean height removed only (detrend mean: the tilt is kept)",
+    "plane": "levelled: least-squares plane subtracted",
+    "curvature": "levelled: least-squares quadratic (tilt and curvature) subtracted",
+    "sphere": "levelled: fitted sphere subtracted",
+}
+
+
+def preparation_line(name: str, prepared: dict[str, Any]) -> str:
+    """One sentence on what was done to a measured file before use (levelling, filled points)."""
+    grid = " x ".join(str(n) for n in prepared["grid"])
+    size = " x ".join(format_si(s, "m") for s in prepared["size_m"])
+    filled = prepared.get("undefined_points_filled", 0)
+    undefined = (
+        f"{100 * prepared['undefined_fraction_filled']:.3g} % of the points ({filled}) were undefined, "
+        "filled by harmonic interpolation"
+        if filled
+        else "no undefined points"
+    )
+    words = _LEVELLING_WORDS.get(prepared["detrend"], prepared["detrend"])
+    return f"{name}: {prepared['file']}, {grid} points, {size}; {words}; {undefined}."
 
 
 def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) -> str:
@@ -149,6 +174,11 @@ def write_report(folder: str | Path, *, redraw: bool = True, dpi: int = 150) -> 
             + html.escape("; ".join(problems))
             + "</p>"
         )
+    prepared = provenance.get("topographies") or {}
+    if prepared:
+        parts.append("<h2>Measured topographies</h2><ul>")
+        parts += [f"<li>{html.escape(preparation_line(n, p))}</li>" for n, p in prepared.items()]
+        parts.append("</ul>")
     for analysis in analyses:
         parts.append(_analysis_section(folder, analysis, [r for r in rows if r["analysis"] == analysis.name]))
     parts.append("<h2>Provenance</h2>")

@@ -452,6 +452,7 @@ def write_summary_files(study: Study, folder: Path, summary: RunSummary, started
         "study_file": None if study.path is None else str(study.path),
         "study_sha256": hashlib.sha256(study.text.encode()).hexdigest(),
         "input_files": study.files,
+        "topographies": study.prepared,
         "study_seed": study.seed,
         "seeds": {f"{c.analysis}/{c.case_id}": c.seeds for c in study.cases if c.seeds},
         "executor": summary.executor,

@@ -169,8 +169,10 @@ class FileTopography(Strict):
     """An instrument file read through :func:`roughcontact.topography.io.read_topography`.
 
     ``file`` is relative to the study file. ``size`` and ``height_unit`` are needed only where the
-    file lacks them; ``detrend`` removes a background after reading (``none``, ``mean``, ``plane``,
-    ``curvature``).
+    file lacks them; ``detrend`` removes a background after reading (one of ``none``, ``mean``,
+    ``plane``, ``curvature``, ``sphere``: :func:`roughcontact.topography.process.level`). A measured
+    scan is levelled with ``plane`` unless the study says otherwise (its tilt would decide where
+    contact happens); a generated surface is used as made.
     """
 
     file: Path
@@ -179,7 +181,7 @@ class FileTopography(Strict):
     height_unit: str | None = None
     fill_undefined: bool = False
     periodic: bool = False
-    detrend: Literal["none", "mean", "plane", "curvature"] = "none"
+    detrend: Literal["none", "mean", "plane", "curvature", "sphere"] = "plane"
 
 
 class _Generated(Strict):

@@ -8,7 +8,7 @@ parameters, PSD). The most used are re-exported here.
 
 from .io import list_channels, read_topography
 from .native import load_topography, save_topography
-from .process import combine, detrend, remove_sphere
+from .process import combine, detrend, level, remove_sphere
 from .statistics import mccool_parameters, spectral_moments, summary
 from .surface import Topography
 
@@ -16,6 +16,7 @@ __all__ = [
     "Topography",
     "combine",
     "detrend",
+    "level",
     "list_channels",
     "load_topography",
     "mccool_parameters",

@@ -90,6 +90,9 @@ def fill_undefined(heights: np.ndarray, *, field: str = "heights") -> np.ndarray
 
 _DETREND_MODES = ("mean", "plane", "curvature")
 
+LEVELLING = ("none", "mean", "plane", "curvature", "sphere")
+"""What :func:`level` can remove from a measured scan: nothing, or a fitted background."""
+
 
 def scale_to_ra(topography: Topography, ra: float) -> Topography:
     """Return the topography with its heights scaled so that its Ra is exactly ``ra`` [m].
@@ -170,6 +173,30 @@ def detrend(topography: Topography, mode: str = "plane") -> Topography:
         step=f"detrend(mode={mode!r})",
         periodic=topography.periodic and mode == "mean",
     )
+
+
+def level(topography: Topography, mode: str) -> Topography:
+    """Remove the background ``mode`` names (one of :data:`LEVELLING`) from a measured scan.
+
+    ``"none"`` returns the surface as read; ``"mean"``, ``"plane"`` and ``"curvature"`` are
+    :func:`detrend`; ``"sphere"`` is :func:`remove_sphere` (its fitted radius is recorded in
+    ``info['history']``). The commands and study files level measured scans with ``"plane"``
+    unless told otherwise: the tilt of a raw AFM scan is an artefact of mounting, and left in it
+    decides where a flat touches (issue 15: SurfaceTopography's ``mi-1.mi`` touches along one edge,
+    5.6 % contact raw against 10.1 % levelled).
+
+    Raises
+    ------
+    InputError
+        Unknown ``mode`` (named ``detrend``, the option and study key that set it).
+    """
+    if mode not in LEVELLING:
+        raise InputError("detrend", f"unknown levelling {mode!r}.", f"choose one of {', '.join(LEVELLING)}.")
+    if mode == "none":
+        return topography
+    if mode == "sphere":
+        return remove_sphere(topography)[0]
+    return detrend(topography, mode)
 
 
 def remove_sphere(topography: Topography, *, fit: str = "sphere") -> tuple[Topography, float]:
