@@ -16,7 +16,30 @@ import numpy as np
 
 from .errors import InputError
 
-__all__ = ["finite_array", "positive"]
+__all__ = ["finite_array", "no_string", "positive"]
+
+
+def no_string(value, field: str) -> None:
+    """Refuse a string (alone or in a list or tuple) where Python takes SI numbers, pointing to quantity.
+
+    The commands and study files read ``"20 MPa"``; Python functions compute with SI floats and
+    convert nothing, so ``solve_normal(t, m, mean_pressure="20 MPa")`` would otherwise end in a
+    NumPy ``TypeError`` that names neither the argument nor the fix.
+
+    Raises
+    ------
+    InputError
+        ``value`` is a ``str`` or holds one: the fix shows ``quantity(...)`` with the value as typed.
+    """
+    if isinstance(value, tuple | list):
+        for item in value:
+            no_string(item, field)
+    elif isinstance(value, str):
+        raise InputError(
+            field,
+            f"got the string {value!r}; Python functions take numbers in SI units.",
+            f"convert it first: {field}=quantity({value!r}) (from roughcontact import quantity).",
+        )
 
 
 def positive(
@@ -66,12 +89,10 @@ def positive(
     bound = "non-negative" if allow_zero else "positive"
     if isinstance(value, np.ndarray) and value.ndim == 0:
         value = value[()]
+    no_string(value, field)
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, Real):
         problem = f"must be a real number, got {type(value).__name__} {value!r}."
-        fix = _fix(bound, example, unit)
-        if isinstance(value, str):
-            fix += " Convert a string with units first (roughcontact.units.quantity)."
-        raise InputError(field, problem, fix)
+        raise InputError(field, problem, _fix(bound, example, unit))
     number = float(value)
     if not math.isfinite(number) or number < 0 or (number == 0 and not allow_zero):
         shown = f"{number!r} {unit}".rstrip()

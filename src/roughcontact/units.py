@@ -40,6 +40,24 @@ DIMENSIONS: dict[str, Dimension] = {
     "stiffness": (0, 1, -2),  # N/m, same dimension as surface energy
 }
 
+SI_UNITS: dict[str, str] = {
+    "dimensionless": "",
+    "length": "m",
+    "area": "m^2",
+    "inverse_length": "1/m",
+    "inverse_area": "1/m^2",
+    "time": "s",
+    "frequency": "Hz",
+    "velocity": "m/s",
+    "force": "N",
+    "force_rate": "N/s",
+    "pressure": "Pa",
+    "energy": "J",
+    "surface_energy": "J/m^2",
+    "stiffness": "N/m",
+}
+"""The SI unit each dimension is computed in."""
+
 _PREFIXES = {
     p: Decimal(f"1e{e}")
     for p, e in {
@@ -63,6 +81,8 @@ _BASE_UNITS: dict[str, tuple[Decimal, Dimension]] = {
 _PLAIN_UNITS: dict[str, tuple[Decimal, Dimension]] = {
     "Å": (Decimal("1e-10"), DIMENSIONS["length"]),
     "angstrom": (Decimal("1e-10"), DIMENSIONS["length"]),
+    "micron": (Decimal("1e-6"), DIMENSIONS["length"]),
+    "microns": (Decimal("1e-6"), DIMENSIONS["length"]),
     "in": (Decimal("0.0254"), DIMENSIONS["length"]),
     "min": (Decimal(60), DIMENSIONS["time"]),
     "h": (Decimal(3600), DIMENSIONS["time"]),
@@ -181,18 +201,23 @@ def _dimension_name(dimension: Dimension) -> str:
     return " or ".join(names) if names else f"m^{dimension[0]} kg^{dimension[1]} s^{dimension[2]}"
 
 
-def quantity(value: str | Real, expected: str, *, field: str = "value") -> float:
+def quantity(value: str | Real, expected: str, *, field: str = "value", require_unit: bool = False) -> float:
     """Convert a quantity to SI, checking its dimension.
 
     Parameters
     ----------
     value : str or float
         ``"20 nm"``, ``"70 GPa"``, ... A bare number (or a string holding only a number)
-        is taken to be in SI already.
+        is taken to be in SI already, unless ``require_unit``.
     expected : str
         Expected dimension, a key of :data:`DIMENSIONS` (``"length"``, ``"pressure"``, ...).
     field : str
         Name of the input, used in error messages.
+    require_unit : bool
+        Refuse a bare number of a dimensional quantity (zero excepted: it is zero in any unit),
+        suggesting the units the user probably meant. The edges set it (command options, study
+        files): there ``--size 5`` meaning a 5 m AFM scan, or ``--pressure 20`` meaning 20 Pa, is
+        a silent wrong answer, whereas Python code computes in SI throughout.
 
     Returns
     -------
@@ -212,6 +237,8 @@ def quantity(value: str | Real, expected: str, *, field: str = "value") -> float
     """
     if expected not in DIMENSIONS:
         raise ValueError(f"unknown dimension {expected!r}; choose from {sorted(DIMENSIONS)}")
+    if require_unit and expected != "dimensionless":
+        _refuse_bare(value, expected, field)
     if isinstance(value, Real) and not isinstance(value, bool):
         result = float(value)
     elif isinstance(value, str):
@@ -239,6 +266,41 @@ def quantity(value: str | Real, expected: str, *, field: str = "value") -> float
     if not math.isfinite(result):
         raise UnitError(field, f"{value!r} is not finite.", "give a finite number.")
     return result
+
+
+_LIKELY_UNITS = {
+    "length": ("um", "nm"),
+    "area": ("um^2",),
+    "inverse_length": ("1/um",),
+    "inverse_area": ("1/um^2",),
+    "time": ("s", "ms"),
+    "velocity": ("um/s",),
+    "force": ("mN", "uN"),
+    "force_rate": ("uN/s",),
+    "pressure": ("MPa", "GPa"),
+    "energy": ("nJ",),
+    "surface_energy": ("mJ/m^2",),
+    "stiffness": ("N/m",),
+    "frequency": ("Hz",),
+}
+"""Units a bare number of each dimension was probably meant in (MEMS and AFM scales), first most likely."""
+
+
+def _refuse_bare(value: str | Real, expected: str, field: str) -> None:
+    """Raise UnitError for a bare non-zero number of ``expected``, suggesting the units it may have meant."""
+    if isinstance(value, bool) or not isinstance(value, str | Real):
+        return  # quantity's own type check says what is wrong
+    text = str(value).strip()
+    if not re.fullmatch(_NUMBER, text) or float(text) == 0.0:
+        return
+    si = SI_UNITS[expected]
+    guesses = " or ".join(repr(f"{text} {unit}") for unit in _LIKELY_UNITS.get(expected, ()))
+    name = expected.replace("_", " ")
+    raise UnitError(
+        field,
+        f"{text} has no unit, and {'an' if name[0] in 'aeiou' else 'a'} {name} needs one.",
+        f"did you mean {guesses}? Write the unit, even for SI ('{text} {si}').",
+    )
 
 
 def length_unit_factor(unit: str, *, field: str = "unit") -> float:

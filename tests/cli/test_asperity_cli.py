@@ -89,7 +89,9 @@ def test_measured_curve_csv_is_drawn(capsys, tmp_path):
 
 def test_bad_input_gives_one_clear_line(capsys):
     # bandwidth alpha = 0.5 < 0.8968
-    status, _, err = run(capsys, "asperity", "--moments", "1e-16", "1e-2", "0.5e12", "--material", "SU-8")
+    status, _, err = run(
+        capsys, "asperity", "--moments", "1e-16 m^2", "1e-2", "0.5e12 1/m^2", "--material", "SU-8"
+    )
     assert status == EXIT_INPUT_ERROR
     assert "m2" in err and "0.8968" in err
     status, _, err = run(capsys, "asperity", "--material", "SU-8")

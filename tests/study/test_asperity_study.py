@@ -119,9 +119,9 @@ def test_asperity_scalars_equal_a_direct_call_on_the_surface_moments():
     spec = GaussianRandom(
         generate="gaussian_random",
         shape=(64, 64),
-        size=20e-6,
-        rms_height=30e-9,
-        correlation_length=1.5e-6,
+        size="20 um",
+        rms_height="30 nm",
+        correlation_length="1.5 um",
         seed=5,
     )
     inputs = CaseInputs({"rough": spec}, {}, MATERIALS)

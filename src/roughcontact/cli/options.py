@@ -89,7 +89,10 @@ def read_file(args: argparse.Namespace):
     """Read and level FILE as the file options say (for the commands that describe a file, not a model)."""
     from ..topography.io import read_topography
     from ..topography.process import level
+    from ..units import quantity
 
+    for part in args.size or ():  # a unit is required here, as in a study file ('--size 5' is not 5 m)
+        quantity(part, "length", field="--size", require_unit=True)
     size = args.size if args.size is None or len(args.size) > 1 else args.size[0]
     topography = read_topography(
         args.file,

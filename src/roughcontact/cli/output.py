@@ -70,7 +70,7 @@ def run_command(command: CommandStudy, args) -> int:
     args : argparse.Namespace
         The command's options (``output``, ``json``, ``dpi``).
     """
-    from ..study.outputs import produce
+    from ..study.outputs import produce, warning_lines
 
     study = command.build()
     for note in study.notes:
@@ -94,6 +94,8 @@ def run_command(command: CommandStudy, args) -> int:
         return 0
     for analysis in analyses:
         print("\n".join(summary_lines(analysis, study.analysis(analysis.name).kind)))
+        for line in warning_lines(analysis):
+            print(f"roughcontact: warning: {line}", file=sys.stderr)
         for name, rows in ((n, r) for a, n, r in tables if a == analysis.name):
             print(f"  table {name}:")
             print("\n".join("    " + line for line in table_lines(rows)))
@@ -116,6 +118,7 @@ def _analysis_document(analysis, tables) -> dict[str, Any]:
                 "axes": record.data.get("axes") or {},
                 "parameters": record.parameters,
                 "scalars": record.scalars,
+                "warnings": record.data.get("warnings") or [],
             }
             for record in analysis.records
             if record is not None

@@ -47,7 +47,9 @@ def _paper001(command: CommandStudy, args: argparse.Namespace) -> tuple[dict, di
         )
         for load in loads:
             try:
-                stroke, mu = paper001.table1(name, quantity(load, "force", field="--normal-forces"))
+                stroke, mu = paper001.table1(
+                    name, quantity(load, "force", field="--normal-forces", require_unit=True)
+                )
             except InputError as error:
                 raise InputError("--normal-forces", error.problem, error.fix) from None
             zipped["sample"].append(name)

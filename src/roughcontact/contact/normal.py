@@ -21,6 +21,7 @@ import numpy as np
 from scipy import optimize
 
 from .._version import __version__
+from ..checks import no_string
 from ..elasticity.halfspace import ElasticLayer, SurfaceCompliance
 from ..errors import InputError
 from ..materials import Material, contact_modulus
@@ -85,6 +86,12 @@ def compliance_for(
     if isinstance(material, Material):
         modulus = contact_modulus(material, counter_body)
     else:
+        if isinstance(material, str):
+            raise InputError(
+                "material",
+                f"got the string {material!r}; Python takes a Material or E* in Pa.",
+                f"pass get_material({material!r}) for a library material, or quantity({material!r}) for E*.",
+            )
         if counter_body is not None:
             raise InputError(
                 "counter_body", "a contact modulus already includes both bodies.", "pass a Material instead."
@@ -102,6 +109,7 @@ def _one_target(**targets) -> tuple[str, float]:
             "e.g. mean_pressure=1e6 (Pa), force=1e-3 (N) or approach=1e-8 (m).",
         )
     name, value = next(iter(given.items()))
+    no_string(value, name)
     if not np.isfinite(value) or value < 0:
         raise InputError(name, f"must be finite and >= 0, got {value!r}.", "give a non-negative value in SI.")
     return name, float(value)
@@ -195,6 +203,7 @@ def solve_normal(
     shape = compliance.shape
     if int(np.prod(shape)) != topography.heights.size or shape[0] != topography.shape[0]:
         raise InputError("compliance", f"operator grid {shape} does not match {topography.shape}.", None)
+    no_string(hardness, "hardness")
     if hardness is not None and not (np.isfinite(hardness) and hardness > 0):
         raise InputError("hardness", f"must be positive, got {hardness!r}.", "give it in Pa, or None.")
     heights = topography.heights.reshape(shape)

@@ -176,6 +176,34 @@ class NormalContactResult:
             "contact_modulus": self.contact_modulus,
         }
 
+    def range_warnings(self, *, slope_pressure: float = 0.1) -> list[str]:
+        """Say where this solution leaves the range of the model that produced it (empty when it does not).
+
+        * Elastic contact with a peak pressure above ``slope_pressure * E*``: the half-space
+          (Boussinesq) solution assumes small surface slopes; a local pressure of order E* means
+          local slopes of order one (p ~ E* |grad h| / 2 for a wedge), where the linear theory
+          and the material's elasticity both fail. The usual remedies are a hardness (plastic cap)
+          or a coarser, instrument-limited scan.
+        * Full contact (every point touching): the answer no longer depends on the roughness,
+          and a free (non-periodic) surface is then carried at its edges.
+
+        Parameters
+        ----------
+        slope_pressure : float
+            Largest peak pressure over E* that counts as small-slope (default 0.1).
+        """
+        notes = []
+        peak = float(self.pressure.max())
+        if self.hardness is None and peak > slope_pressure * self.contact_modulus:
+            notes.append(
+                f"peak pressure {peak / self.contact_modulus:.2g} E* (over {slope_pressure:g} E*): "
+                "local slopes beyond the small-slope elastic theory; give a hardness for "
+                "elastic-plastic contact, or treat the peak values as indicative only."
+            )
+        if self.contact_fraction >= 1.0:
+            notes.append("full contact: every point touches, so the roughness no longer matters.")
+        return notes
+
     def to_xarray(self):
         """Return an ``xarray.Dataset``: fields on x (and y) coordinates, scalars as attributes."""
         import xarray as xr

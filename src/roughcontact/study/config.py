@@ -60,6 +60,7 @@ from pydantic import BaseModel
 from ..errors import InputError, MissingMetadataError, UndefinedPointsError
 from ..materials import MATERIALS, Material, get_material
 from ..topography import Topography
+from ..units import format_si
 from .kind import CaseParameters, Kind
 from .problems import Problem, Where, collect
 from .schema import (
@@ -347,6 +348,13 @@ class _Builder:
             key = error.field if error.field in ("size", "height_unit", "channel") else "file"
             self.problem(Where(where.child(key).path, f"{where.label} ({error.field})"), error.problem, fix)
             return None
+        sides = [side for side in topography.size if not 1e-9 <= side <= 1.0]
+        if sides:
+            shown = " x ".join(format_si(side, "m") for side in topography.size)
+            self.notes.append(
+                f"{where.label}: the scan is {shown}, outside 1 nm to 1 m; check its size and "
+                "height unit (the file's metadata, or size and height_unit here)."
+            )
         return level(topography, spec.detrend)
 
     def _material(self, name: str, raw: dict) -> Material | None:

@@ -45,10 +45,16 @@ class CaseParameters(Strict):
 
 @dataclass(frozen=True)
 class CaseOutput:
-    """What a kind's ``run`` returns: scalars (SI, JSON-ready) and optional fields and curves."""
+    """What a kind's ``run`` returns: scalars (SI, JSON-ready), optional fields and curves, and warnings.
+
+    ``warnings`` say where a finished case left its model's range (an elastic peak pressure beyond
+    the small-slope theory, full contact): kept in the case's record, printed by the commands and
+    listed in the report, never a reason to drop the numbers.
+    """
 
     scalars: dict[str, Any]
     dataset: Any = None  # xarray.Dataset or None
+    warnings: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)

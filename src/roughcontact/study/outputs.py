@@ -15,6 +15,7 @@ from typing import Any
 
 from ..errors import InputError
 from .kind import CaseRecord, FigureContext, Kind
+from .schema import STORED
 from .store import read_record, replacing, write_table
 
 log = logging.getLogger(__name__)
@@ -73,7 +74,7 @@ def read_study(folder: str | Path) -> tuple[dict[str, Any], list[StoredAnalysis]
         kind = get_kind(entry["model"])
         compare = entry.get("compare")
         if compare is not None and kind.compare is not None:
-            compare = kind.compare.model_validate(compare)
+            compare = kind.compare.model_validate(compare, context=STORED)  # written in SI by the runner
             kept = {k: folder / v for k, v in compare if isinstance(v, Path) and not v.is_absolute()}
             compare = compare.model_copy(update=kept)  # measured data kept in OUT/inputs/
         records = tuple(_current(read_record(folder, entry["name"], case), case) for case in entry["cases"])
@@ -206,3 +207,15 @@ def draw_figures(folder: str | Path, *, dpi: int = 150) -> tuple[list[Path], lis
             figure.savefig(temporary, dpi=dpi, bbox_inches="tight", format="png")
         written.append(path)
     return written, problems
+
+
+def warning_lines(analysis) -> list[str]:
+    """Return the model-range warnings of an analysis' cases, each once, with the cases it concerns."""
+    cases: dict[str, list[str]] = {}
+    records = [r for r in analysis.records if r is not None]
+    for record in records:
+        for warning in record.data.get("warnings") or ():
+            cases.setdefault(warning, []).append(record.label)
+    if len(records) == 1:
+        return list(cases)
+    return [f"{warning} ({'; '.join(labels)})" for warning, labels in cases.items()]

@@ -14,7 +14,15 @@ from pathlib import Path
 from typing import Any
 
 from ..units import format_si
-from .outputs import StoredAnalysis, draw_figures, read_study, result_rows, write_results_table, write_tables
+from .outputs import (
+    StoredAnalysis,
+    draw_figures,
+    read_study,
+    result_rows,
+    warning_lines,
+    write_results_table,
+    write_tables,
+)
 from .store import read_table, write_atomically
 
 _STYLE = """
@@ -113,6 +121,11 @@ def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) 
         path = folder / "figures" / f"{analysis.name}_{name}.png"
         if path.exists():
             parts.append(_image(path))
+    warnings = warning_lines(analysis)
+    if warnings:
+        parts.append("<h3>Outside the model's range</h3><ul>")
+        parts += [f'<li class="pending">{html.escape(line)}</li>' for line in warnings]
+        parts.append("</ul>")
     failed = [row for row in rows if row["status"] == "failed"]
     if failed:
         parts.append("<h3>Failed cases</h3><ul>")

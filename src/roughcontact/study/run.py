@@ -118,6 +118,8 @@ def execute(task: Task) -> tuple[dict[str, Any], Any]:
     try:
         output = get_kind(task.kind).run(task.parameters, task.inputs)
         record["scalars"] = json_ready(output.scalars)
+        if output.warnings:
+            record["warnings"] = list(output.warnings)
         dataset = output.dataset
         record["status"] = "done"
     except Exception as error:  # recorded, the study goes on

@@ -2,9 +2,9 @@
 
 A study file is TOML (see ``docs/studies.md``). Every physical value is written with its unit
 (``"20 nm"``, ``"70 GPa"``, ``"10 uN"``, ``"72 mJ/m^2"``) and converted to SI here, once, through
-:func:`roughcontact.units.quantity`; a bare number is taken to be in SI already, as everywhere in
-roughcontact. The pydantic models forbid unknown keys, so a misspelt field is an error that names
-it rather than a silently ignored line.
+:func:`roughcontact.units.quantity`; a bare number is refused (zero excepted) with the units the
+user probably meant: ``size = 5`` is not a 5 m scan. The pydantic models forbid unknown keys, so a
+misspelt field is an error that names it rather than a silently ignored line.
 """
 
 from __future__ import annotations
@@ -14,12 +14,20 @@ import typing
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Field, model_validator
+from pydantic import (
+    AfterValidator,
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    ValidationInfo,
+    model_validator,
+)
 from pydantic_core import PydanticCustomError
 
 from ..errors import InputError
 from ..materials import Material, get_material
-from ..units import quantity
+from ..units import SI_UNITS, quantity
 
 
 class Strict(BaseModel):
@@ -28,29 +36,24 @@ class Strict(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True, use_attribute_docstrings=True)
 
 
-SI_UNITS = {
-    "length": "m",
-    "area": "m^2",
-    "inverse_area": "1/m^2",
-    "pressure": "Pa",
-    "force": "N",
-    "time": "s",
-    "surface_energy": "J/m^2",
-}
-"""SI unit of each dimension a schema field may have."""
+STORED = {"stored": True}
+"""Validation context of a document roughcontact wrote itself (``study.json``): numbers in it are SI."""
 
 
 def _si(dimension: str):
-    def convert(value: Any) -> float:
+    def convert(value: Any, info: ValidationInfo | None) -> float:
         if isinstance(value, bool) or not isinstance(value, str | int | float):
             raise PydanticCustomError(
                 "quantity", "expected a {dimension} such as a string with a unit", {"dimension": dimension}
             )
+        bare_is_si = bool(info is not None and (info.context or {}).get("stored"))
         try:
             if dimension == "area" and isinstance(value, str) and " x " in value:  # '25 um x 25 um'
                 first, second = value.split(" x ", 1)
-                return quantity(first, "length") * quantity(second, "length")
-            return quantity(value, dimension)
+                return quantity(first, "length", require_unit=True) * quantity(
+                    second, "length", require_unit=True
+                )
+            return quantity(value, dimension, require_unit=not bare_is_si)
         except InputError as error:
             raise PydanticCustomError(
                 "quantity", "{problem}", {"problem": error.problem, "fix": error.fix}
@@ -64,7 +67,7 @@ def _si_per_axis(dimension: str):
     """One value for both axes, or two (``["5 um", "10 um"]`` or ``"5 um x 10 um"``); one error either way."""
     single = _si(dimension).func
 
-    def convert(value: Any) -> float | tuple[float, float]:
+    def convert(value: Any, info: ValidationInfo | None) -> float | tuple[float, float]:
         if isinstance(value, str) and " x " in value:  # '5 um x 10 um'
             value = [part.strip() for part in value.split(" x ")]
         if isinstance(value, list | tuple):
@@ -72,8 +75,8 @@ def _si_per_axis(dimension: str):
                 raise PydanticCustomError(
                     "quantity", "give one value or two (one per axis), got {n}", {"n": len(value)}
                 )
-            return (single(value[0]), single(value[1]))
-        return single(value)
+            return (single(value[0], info), single(value[1], info))
+        return single(value, info)
 
     convert.dimension = dimension
     return BeforeValidator(convert)

@@ -33,7 +33,7 @@ from collections.abc import Callable
 import numpy as np
 from scipy import fft
 
-from ..checks import positive
+from ..checks import no_string, positive
 from ..errors import InputError
 from . import statistics
 from .surface import Topography
@@ -67,6 +67,7 @@ def _grid(
             f"{shape!r} is not 1 or 2 integers >= 2.",
             "give (nx,) for a profile or (nx, ny) for a map, at least 2 points per axis.",
         )
+    no_string(size, "size")
     lengths = np.atleast_1d(np.asarray(size, dtype=float))
     if lengths.size == 1:
         lengths = np.repeat(lengths, len(dims))

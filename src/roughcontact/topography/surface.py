@@ -23,6 +23,7 @@ from typing import Any
 
 import numpy as np
 
+from ..checks import no_string
 from ..errors import InputError
 
 
@@ -80,6 +81,7 @@ class Topography:
                 f"{int(bad.sum())} of {heights.size} heights are NaN or infinite.",
                 "fill them first (read_topography(..., undefined='interpolate')) or crop them away.",
             )
+        no_string(self.size, "size")
         size = np.atleast_1d(np.asarray(self.size, dtype=float))
         if size.size == 1 and heights.ndim == 2:
             size = np.repeat(size, 2)

@@ -24,7 +24,7 @@ height h (``layer_thickness``, the Winkler layer):
 Paper 000's equations have unit and sign problems and gaps; every disputed choice is a named
 reading (:class:`~roughcontact.friction.readings.Readings`), given in the study file as a table of
 name = value strings, e.g. ``readings = {contact = "zero_gap", adhesive_cutoff = "20 nm"}``
-(``adhesive_cutoff`` takes a length with its unit, or a bare number in metres). A reading not
+(``adhesive_cutoff`` takes a length with its unit, or ``inf``). A reading not
 named keeps its default, the physically consistent one. Stated assumptions of the model (paper
 000, sections 2-3): elastic contact only (no plasticity), the flat is rigid, the cuboid tops are
 the scan's pixels (S = 20 nm x 20 nm in the paper), epsilon = 2 nm and h = the thickness of the
@@ -210,7 +210,11 @@ def normalized_readings(value: dict[str, Any]) -> dict[str, str]:
             continue
         if name == "adhesive_cutoff":
             try:
-                cutoff = math.inf if text.lower() in ("inf", "infinity") else quantity(raw, "length")
+                cutoff = (
+                    math.inf
+                    if text.lower() in ("inf", "infinity")
+                    else quantity(raw, "length", require_unit=True)
+                )
                 text = repr(float(cutoff))
             except InputError as error:
                 problems.append(

@@ -118,7 +118,7 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
             coords={"depth": ("depth", np.asarray(parameters.stress_depths), {"units": "m"})},
             attrs={"units": "Pa"},
         )
-    return CaseOutput(scalars, dataset)
+    return CaseOutput(scalars, dataset, tuple(result.range_warnings()))
 
 
 def _contact_maps(records, context):
