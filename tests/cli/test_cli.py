@@ -79,7 +79,10 @@ def test_missing_size_says_how_to_pass_it(capsys, shared_topographies):
 
 
 def test_undefined_points_need_an_explicit_choice(capsys, shared_topographies):
-    status, _, err = run(capsys, "inspect", shared_topographies / "sur-2.sur")
+    """inspect describes the file anyway (tests/cli/test_undefined_points.py); a solve refuses it."""
+    status, _, err = run(
+        capsys, "contact", shared_topographies / "sur-2.sur", "--material", "SU-8", "--pressure", "1 MPa"
+    )
     assert status == EXIT_INPUT_ERROR
     assert "undefined" in err and "--fill-undefined" in err
     status, out, err = run(capsys, "inspect", shared_topographies / "sur-2.sur", "--fill-undefined", "--json")

@@ -17,7 +17,7 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
-from ..errors import InputError
+from ..errors import InputError, UndefinedPointsError
 from ..topography.process import LEVELLING
 
 EXIT_INPUT_ERROR = 2
@@ -61,6 +61,12 @@ def file_options(*, required: bool = True) -> argparse.ArgumentParser:
         action="store_true",
         help="interpolate undefined (missing) points instead of refusing the file",
     )
+    group.add_argument(
+        "--max-filled",
+        type=float,
+        metavar="FRACTION",
+        help="largest fraction of the points --fill-undefined may fill (default 0.05)",
+    )
     group.add_argument("--periodic", action="store_true", help="treat the surface as periodic")
     group.add_argument(
         "--detrend",
@@ -86,24 +92,48 @@ def new_command(
 
 
 def read_file(args: argparse.Namespace):
-    """Read and level FILE as the file options say (for the commands that describe a file, not a model)."""
-    from ..topography.io import read_topography
+    """Read and level FILE as the file options say (for the commands that describe a file, not a model).
+
+    Returns
+    -------
+    topography : Topography
+        The levelled surface. For a file with undefined points read without --fill-undefined,
+        those points hold the mean height (a placeholder: what needs every point is refused).
+    undefined : ndarray of bool or None
+        Where the file holds no height (None when every point is defined or was filled).
+    """
+    import numpy as np
+
+    from ..topography import Topography
+    from ..topography.io import Scan, read_scan
     from ..topography.process import level
     from ..units import quantity
 
     for part in args.size or ():  # a unit is required here, as in a study file ('--size 5' is not 5 m)
         quantity(part, "length", field="--size", require_unit=True)
     size = args.size if args.size is None or len(args.size) > 1 else args.size[0]
-    topography = read_topography(
-        args.file,
-        channel=args.channel,
-        size=size,
-        height_unit=args.height_unit,
-        undefined="interpolate" if args.fill_undefined else "refuse",
-        periodic=args.periodic,
+    scan = read_scan(
+        args.file, channel=args.channel, size=size, height_unit=args.height_unit, periodic=args.periodic
     )
+    undefined = None
+    if not isinstance(scan, Scan):
+        topography = scan
+    elif args.fill_undefined or not scan.undefined.any():
+        try:
+            topography = scan.topography(
+                undefined="interpolate", max_filled=0.05 if args.max_filled is None else args.max_filled
+            )
+        except UndefinedPointsError as error:
+            fix = error.fix.replace("allow it: max_filled=", "allow it: --max-filled ").split(
+                " (command line"
+            )[0]
+            raise InputError("--max-filled", error.problem, fix + ".") from None
+    else:
+        undefined = scan.undefined
+        placeholder = np.where(undefined, np.nanmean(scan.heights), scan.heights)
+        topography = Topography(placeholder, scan.size, periodic=scan.periodic, info=scan.info)
     try:
-        return level(topography, args.detrend)
+        return level(topography, args.detrend), undefined
     except InputError as error:
         raise InputError("--detrend", error.problem, error.fix) from None
 
@@ -219,12 +249,13 @@ class CommandStudy:
         table: dict[str, Any] = {"file": str(Path(file if file is not None else args.file).resolve())}
         where = ("topographies", name)
         self.document["topographies"][name] = table
-        for key in ("size", "height_unit", "channel", "fill_undefined"):  # named in fixes even when not given
+        for key in ("size", "height_unit", "channel", "fill_undefined", "max_filled"):  # named in fixes
             self.words.setdefault(key, _flag(key))
+        self.flags[(*where, "max_filled")] = "--max-filled"
         self.name_flag((*where, "file"), "FILE" if file is None else str(file))
         self.flags[where] = "FILE" if file is None else str(file)
         if file is None:
-            for key in ("channel", "height_unit"):
+            for key in ("channel", "height_unit", "max_filled"):
                 if getattr(args, key, None) is not None:
                     self.set((*where, key), getattr(args, key), _flag(key))
             if getattr(args, "size", None) is not None:

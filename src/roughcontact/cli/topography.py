@@ -9,6 +9,8 @@ import argparse
 import json
 from pathlib import Path
 
+import numpy as np
+
 from .._json import json_ready
 from ..errors import InputError
 from ..topography import Topography
@@ -17,11 +19,18 @@ from ..units import format_si
 from .options import new_command, read_file
 
 
-def describe(topography: Topography) -> dict:
-    """Return grid, size, units and statistics of a topography as a JSON-ready dictionary (SI)."""
+def describe(topography: Topography, undefined=None) -> dict:
+    """Return grid, size, units and statistics of a topography as a JSON-ready dictionary (SI).
+
+    With ``undefined`` (the file's points without a height, not filled) the statistics are left
+    out (they need every point) and the undefined points are described instead: how many, the
+    fraction, their bounding box [m] and how many separate regions they form.
+    """
+    from scipy import ndimage
+
     from ..topography.statistics import summary
 
-    return {
+    description = {
         "name": topography.info.get("name") or topography.info.get("source"),
         "grid": list(topography.shape),
         "size_m": list(topography.size),
@@ -29,8 +38,20 @@ def describe(topography: Topography) -> dict:
         "periodic": topography.periodic,
         "height_unit_in_file": topography.info.get("height_unit"),
         "undefined_points_filled": topography.info.get("undefined_points_filled", 0),
-        "statistics": summary(topography),
     }
+    if undefined is None:
+        return description | {"statistics": summary(topography)}
+    where = np.nonzero(undefined)
+    description["undefined"] = {
+        "count": int(np.count_nonzero(undefined)),
+        "fraction": float(np.count_nonzero(undefined) / undefined.size),
+        "regions": int(ndimage.label(undefined)[1]),
+        "from_m": [float(index.min() * step) for index, step in zip(where, topography.spacing, strict=True)],
+        "to_m": [
+            float((index.max() + 1) * step) for index, step in zip(where, topography.spacing, strict=True)
+        ],
+    }
+    return description
 
 
 _LEVELLING_WORDS = {
@@ -54,14 +75,32 @@ def format_description(description: dict) -> str:
     ]
     if description["height_unit_in_file"]:
         lines.append(f"height unit    {description['height_unit_in_file']} in the file, metres here")
+    total = int(np.prod(description["grid"]))
     if description["undefined_points_filled"]:
-        lines.append(
-            f"undefined      {description['undefined_points_filled']} points filled by interpolation"
+        filled = description["undefined_points_filled"]
+        lines.append(f"undefined      {filled} points ({100 * filled / total:.3g} %) filled by interpolation")
+    undefined = description.get("undefined")
+    if undefined:
+        box = " x ".join(
+            f"{format_si(a, 'm')}-{format_si(b, 'm')}"
+            for a, b in zip(undefined["from_m"], undefined["to_m"], strict=True)
         )
+        lines += [
+            f"undefined      {undefined['count']} of {total} points ({100 * undefined['fraction']:.3g} %) in "
+            f"{undefined['regions']} region(s) within {box}",
+            "statistics     need every point: add --fill-undefined"
+            + (
+                f" --max-filled {np.ceil(100 * undefined['fraction']) / 100:g}"
+                if undefined["fraction"] > 0.05
+                else ""
+            )
+            + " to fill them, or see where they are with: roughcontact plot FILE -o FIGURE.png",
+        ]
     if "detrend" in description:
         lines.append(f"levelling      {_LEVELLING_WORDS[description['detrend']]}")
-    lines.append("statistics")
-    for key, value in description["statistics"].items():
+    if "statistics" in description:
+        lines.append("statistics")
+    for key, value in description.get("statistics", {}).items():
         unit, meaning = SUMMARY.get(key, ("", ""))
         shown = format_si(value, unit) if unit in ("m",) else f"{value:.4g} {unit}".rstrip()
         lines.append(f"  {key:<18} {shown:<16} {meaning}")
@@ -72,8 +111,8 @@ def _inspect(args: argparse.Namespace) -> int:
     from ..topography.io import list_channels
 
     channels = list_channels(args.file)
-    topography = read_file(args)
-    description = describe(topography)
+    topography, undefined = read_file(args)
+    description = describe(topography, undefined)
     description["file"] = str(args.file)
     description["detrend"] = args.detrend
     description["format"] = topography.info.get("file_format")
@@ -111,8 +150,8 @@ def _plot(args: argparse.Namespace) -> int:
         return plot_study(args.file)
     if args.output is None:
         raise InputError("-o/--output", "no figure file given.", "add -o FIGURE.png.")
-    topography = read_file(args)
-    figure = plot_overview(topography)
+    topography, undefined = read_file(args)
+    figure = plot_overview(topography, undefined=undefined)
     args.output.parent.mkdir(parents=True, exist_ok=True)
     figure.savefig(args.output, dpi=args.dpi)
     print(f"wrote {args.output}")

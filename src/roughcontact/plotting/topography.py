@@ -6,6 +6,7 @@ so it works on machines without a display and leaves no global state behind.
 
 from __future__ import annotations
 
+import matplotlib
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
@@ -13,15 +14,26 @@ from matplotlib.figure import Figure
 from ..topography import Topography
 from ..topography.statistics import psd_1d, psd_radial
 from ..units import prefixed_scale
-from .layout import axes_for
+from .layout import CLIP_PERCENTILES, axes_for, clip_words, clipped_limits
 
 
 def _title(topography: Topography) -> str:
     return str(topography.info.get("name") or topography.info.get("source") or "topography")
 
 
-def plot_heights(topography: Topography, ax: Axes | None = None, *, cmap: str = "viridis"):
+def plot_heights(
+    topography: Topography,
+    ax: Axes | None = None,
+    *,
+    cmap: str = "viridis",
+    undefined: np.ndarray | None = None,
+    percentiles: tuple[float, float] = CLIP_PERCENTILES,
+):
     """Draw the height map of a 2D topography (or the profile of a 1D one).
+
+    The colour scale spans the ``percentiles`` of the heights (0.5 and 99.5 by default, said on
+    the colour bar, the ends marked as extended), so that one spike or dust particle does not
+    turn the rest of the map into one colour.
 
     Parameters
     ----------
@@ -31,6 +43,10 @@ def plot_heights(topography: Topography, ax: Axes | None = None, *, cmap: str = 
         Axes to draw into; a new figure is made when omitted.
     cmap : str
         Colour map of the height map.
+    undefined : ndarray of bool, optional
+        Points the instrument did not record: drawn grey and left out of the colour scale.
+    percentiles : (float, float)
+        Percentiles of the heights at the two ends of the colour scale ((0, 100): the full range).
 
     Returns
     -------
@@ -38,22 +54,37 @@ def plot_heights(topography: Topography, ax: Axes | None = None, *, cmap: str = 
         The figure and the axes drawn into.
     """
     fig, ax = axes_for(ax)
-    heights = topography.heights - topography.heights.mean()
+    heights = np.array(topography.heights, dtype=float)
+    if undefined is not None:
+        heights[undefined] = np.nan
+    heights -= np.nanmean(heights)
     size_scale, size_label = prefixed_scale(max(topography.size), "m")
-    height_scale, height_label = prefixed_scale(float(np.ptp(heights)) or 1e-9, "m")
+    low, high = clipped_limits(heights, percentiles)
+    height_scale, height_label = prefixed_scale(max(abs(low), abs(high)) or 1e-9, "m")
     coords = [c / size_scale for c in topography.coordinates()]
     if topography.dim == 1:
         ax.plot(coords[0], heights / height_scale, lw=0.8)
         ax.set_ylabel(f"height ({height_label})")
     else:
+        colours = matplotlib.colormaps[cmap].with_extremes(bad="0.6")
         image = ax.pcolormesh(
-            coords[0], coords[1], heights.T / height_scale, cmap=cmap, shading="auto", rasterized=True
+            coords[0],
+            coords[1],
+            heights.T / height_scale,
+            cmap=colours,
+            shading="auto",
+            rasterized=True,
+            vmin=low / height_scale,
+            vmax=high / height_scale,
         )
         ax.set_aspect("equal")
         ax.set_ylabel(f"y ({size_label})")
-        fig.colorbar(image, ax=ax, label=f"height ({height_label})")
+        fig.colorbar(image, ax=ax, extend="both", label=f"height ({height_label}), {clip_words(percentiles)}")
     ax.set_xlabel(f"x ({size_label})")
-    ax.set_title(_title(topography))
+    title = _title(topography)
+    if undefined is not None and undefined.any():
+        title += f"\n{100 * np.count_nonzero(undefined) / undefined.size:.3g} % undefined (grey)"
+    ax.set_title(title)
     return fig, ax
 
 
@@ -87,10 +118,27 @@ def plot_psd(topography: Topography, ax: Axes | None = None):
     return fig, ax
 
 
-def plot_overview(topography: Topography) -> Figure:
-    """Return a two-panel figure: height map (or profile) and PSD, as ``roughcontact plot`` writes it."""
+def plot_overview(topography: Topography, *, undefined: np.ndarray | None = None) -> Figure:
+    """Return a two-panel figure: height map (or profile) and PSD, as ``roughcontact plot`` writes it.
+
+    With ``undefined`` (points the instrument did not record) the second panel shows where they
+    are instead of the PSD, which needs every point.
+    """
     fig = Figure(figsize=(10.0, 4.2), layout="constrained")
     left, right = fig.subplots(1, 2)
-    plot_heights(topography, left)
-    plot_psd(topography, right)
+    plot_heights(topography, left, undefined=undefined)
+    if undefined is None or not undefined.any():
+        plot_psd(topography, right)
+        return fig
+    size_scale, size_label = prefixed_scale(max(topography.size), "m")
+    coords = [c / size_scale for c in topography.coordinates()]
+    if topography.dim == 1:
+        right.plot(coords[0], undefined.astype(float), drawstyle="steps-mid")
+        right.set_ylabel("undefined (1) / measured (0)")
+    else:
+        right.pcolormesh(coords[0], coords[1], undefined.T, cmap="Greys", shading="auto", rasterized=True)
+        right.set_aspect("equal")
+        right.set_ylabel(f"y ({size_label})")
+    right.set_xlabel(f"x ({size_label})")
+    right.set_title(f"undefined points (black): {np.count_nonzero(undefined)} of {undefined.size}")
     return fig

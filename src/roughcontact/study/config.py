@@ -335,6 +335,7 @@ class _Builder:
                 size=spec.size,
                 height_unit=spec.height_unit,
                 undefined="interpolate" if spec.fill_undefined else "refuse",
+                max_filled=spec.max_filled,
                 periodic=spec.periodic,
             )
         except InputError as error:  # said in a study file's words
@@ -343,9 +344,11 @@ class _Builder:
                 keys = ", ".join(f"{key} = {value!r}" for key, value in error.missing.items())
                 notes = "".join(f"; {note}" for note in error.notes)
                 fix = f"give the real values, e.g. {keys} (a non-square scan: size = '5 um x 10 um'){notes}."
+            elif isinstance(error, UndefinedPointsError) and error.field == "max_filled":
+                fix = error.fix.split(" (command line", 1)[0].replace("max_filled=", "max_filled = ") + "."
             elif isinstance(error, UndefinedPointsError):
                 fix = "add fill_undefined = true to fill them by harmonic interpolation, or crop them away."
-            key = error.field if error.field in ("size", "height_unit", "channel") else "file"
+            key = error.field if error.field in ("size", "height_unit", "channel", "max_filled") else "file"
             self.problem(Where(where.child(key).path, f"{where.label} ({error.field})"), error.problem, fix)
             return None
         sides = [side for side in topography.size if not 1e-9 <= side <= 1.0]

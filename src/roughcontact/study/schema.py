@@ -183,6 +183,8 @@ class FileTopography(Strict):
     size: LengthPerAxis | None = None
     height_unit: str | None = None
     fill_undefined: bool = False
+    max_filled: float = Field(default=0.05, ge=0.0, le=1.0)
+    """Largest fraction of undefined points that fill_undefined may fill (more needs saying so)."""
     periodic: bool = False
     detrend: Literal["none", "mean", "plane", "curvature", "sphere"] = "plane"
 

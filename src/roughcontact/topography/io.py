@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import gzip
 import io
+import math
 import os
 import shlex
 import zlib
@@ -144,6 +145,7 @@ def read_topography(
     size: SizeLike | None = None,
     height_unit: str | None = None,
     undefined: str = "refuse",
+    max_filled: float = 0.05,
     periodic: bool = False,
 ) -> Topography:
     """Read one channel of a topography file into a :class:`Topography` in SI units.
@@ -173,6 +175,10 @@ def read_topography(
         What to do with undefined (missing) points: refuse the file, or fill them by harmonic
         interpolation (:func:`roughcontact.topography.process.fill_undefined`), recording the
         count in ``info['undefined_points_filled']``.
+    max_filled : float
+        Largest fraction of the points that ``undefined="interpolate"`` may fill (default 0.05).
+        Filling more invents much of the surface (SurfaceTopography's ``sur-2.sur`` lacks 27 %),
+        so it must be asked for explicitly: ``max_filled=0.3``.
     periodic : bool
         Treat the surface as periodic (measured surfaces are not, as a rule). A file that
         declares itself periodic (a roughcontact or SurfaceTopography ``.nc`` file) stays so.
@@ -200,6 +206,71 @@ def read_topography(
     """
     if undefined not in _UNDEFINED_CHOICES:
         raise InputError("undefined", f"unknown choice {undefined!r}.", "choose 'refuse' or 'interpolate'.")
+    scan = read_scan(path, channel=channel, size=size, height_unit=height_unit, periodic=periodic)
+    if isinstance(scan, Topography):
+        return scan
+    return scan.topography(undefined=undefined, max_filled=max_filled)
+
+
+@dataclass(frozen=True)
+class Scan:
+    """A file's heights as stored (undefined points kept as NaN) with its size and metadata, SI.
+
+    What :func:`read_scan` returns for a file with undefined points, so that the file can be
+    described (``roughcontact inspect``) before anything that needs every point is asked of it.
+
+    Attributes
+    ----------
+    heights : ndarray
+        Heights [m]; NaN where the instrument recorded no value.
+    size : tuple of float
+        Physical size [m] per axis.
+    periodic : bool
+    info : dict
+        As :func:`read_topography`'s ``info``.
+    path : Path
+        The file.
+    """
+
+    heights: np.ndarray
+    size: tuple[float, ...]
+    periodic: bool
+    info: dict[str, Any]
+    path: Path
+
+    @property
+    def undefined(self) -> np.ndarray:
+        """True where the file holds no height."""
+        return ~np.isfinite(self.heights)
+
+    def topography(self, *, undefined: str = "refuse", max_filled: float = 0.05) -> Topography:
+        """Return the scan as a :class:`Topography`, its undefined points refused or filled.
+
+        See :func:`read_topography` for ``undefined`` and ``max_filled``.
+        """
+        heights, filled = _handle_undefined(self.heights, undefined, max_filled, self.path)
+        info = dict(self.info)
+        steps = list(info.pop("history", ()))
+        if filled:
+            info["undefined_points_filled"] = filled
+            steps.append(f"fill_undefined: {filled} undefined points interpolated (harmonic)")
+        info["history"] = tuple(steps)
+        return Topography(heights, self.size, periodic=self.periodic, info=info)
+
+
+def read_scan(
+    path: PathLike,
+    *,
+    channel: int | str | None = None,
+    size: SizeLike | None = None,
+    height_unit: str | None = None,
+    periodic: bool = False,
+) -> Scan | Topography:
+    """Read one channel of a file as stored: a :class:`Scan` (NaN where undefined), SI units.
+
+    As :func:`read_topography` without deciding about undefined points; a roughcontact ``.nc``
+    file (never holding undefined points) is returned as the :class:`Topography` it is.
+    """
     path = existing_file(path, empty_fix=_REREAD_FIX)
     if is_native_file(path):
         return _with_options(read_native(path, channel=channel), path, size, height_unit, periodic)
@@ -228,12 +299,8 @@ def read_topography(
             info["size_in_file"] = file_size
         elif selected.physical_sizes is not None:
             info["size_in_file_without_unit"] = tuple(map(float, extent))
-    heights, filled = _handle_undefined(heights, undefined, path)
-    if filled:
-        info["undefined_points_filled"] = filled
-        steps.append(f"fill_undefined: {filled} undefined points interpolated (harmonic)")
     info["history"] = (f"read {path.name} channel {selected.name!r} ({reader.name()})", *steps)
-    return Topography(heights, physical_size, periodic=periodic, info=info)
+    return Scan(heights, tuple(float(s) for s in np.atleast_1d(physical_size)), periodic, info, path)
 
 
 # --- files and SurfaceTopography -----------------------------------------------------------------
@@ -479,16 +546,29 @@ def _uniform_heights(measured) -> tuple[np.ndarray, tuple[float, ...], list[str]
     return np.interp(grid, positions, heights), (n * spacing,), [step]
 
 
-def _handle_undefined(heights: np.ndarray, undefined: str, path: Path) -> tuple[np.ndarray, int]:
+def _handle_undefined(
+    heights: np.ndarray, undefined: str, max_filled: float, path: Path
+) -> tuple[np.ndarray, int]:
     count = int(np.count_nonzero(~np.isfinite(heights)))
     if count == 0:
         return heights, 0
+    fraction = count / heights.size
     if undefined == "refuse":
         raise UndefinedPointsError(
             str(path),
-            f"{count} of {heights.size} points are undefined (missing in the measurement).",
+            f"{count} of {heights.size} points ({100 * fraction:.3g} %) are undefined (missing in the "
+            "measurement).",
             "pass undefined='interpolate' (command line: --fill-undefined) to fill them by "
             "harmonic interpolation from their neighbours, or crop them away.",
+            count,
+        )
+    if fraction > max_filled:
+        raise UndefinedPointsError(
+            "max_filled",
+            f"{path.name}: {100 * fraction:.3g} % of the points are undefined, more than the "
+            f"{100 * max_filled:.3g} % that are filled without asking; filling invents that much surface.",
+            f"if that is acceptable, allow it: max_filled={math.ceil(100 * fraction) / 100:g} (command "
+            f"line: --max-filled {math.ceil(100 * fraction) / 100:g}); or crop the undefined region away.",
             count,
         )
     return fill_undefined(heights, field=str(path)), count
