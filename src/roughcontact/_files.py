@@ -18,15 +18,33 @@ from pathlib import Path
 from .errors import UnsupportedFormatError
 
 
+def _process_umask() -> int:
+    """Return the process' umask, read from /proc where Linux has it, else set back at once."""
+    with contextlib.suppress(OSError, ValueError):
+        for line in Path("/proc/self/status").read_text().splitlines():
+            if line.startswith("Umask:"):
+                return int(line.split()[1], 8)
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
+_FILE_MODE = 0o666 & ~_process_umask()
+"""Mode of the files written: what ``open()`` would give under the user's umask (0644 under 022).
+Read once, at import, in the main thread (changing the umask to read it is not thread-safe)."""
+
+
 @contextlib.contextmanager
 def replacing(path: Path) -> Iterator[Path]:
     """Yield a temporary path beside ``path``; rename it into place on success, remove it on failure.
 
     So a killed or failed write leaves either the whole file or none (a ``.NAME.*.part`` leftover
     of a killed process can be recognised by its name). The folder is created if it is missing.
+    The file gets the mode the user's umask gives (``mkstemp`` alone would make it owner-only).
     """
     path.parent.mkdir(parents=True, exist_ok=True)
     handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".part")
+    os.fchmod(handle, _FILE_MODE)
     os.close(handle)
     try:
         yield Path(temporary)

@@ -173,6 +173,11 @@ def add_output_options(parser: argparse.ArgumentParser, *, figures: bool = True)
         type=Path,
         help="folder for the results: each case, results.csv, tables, figures and report.html",
     )
+    parser.add_argument(
+        "--overwrite",
+        action="store_true",
+        help="replace the results an earlier run of this command with other options left in -o",
+    )
     parser.add_argument("--json", action="store_true", help="print the results as one JSON document (SI)")
     if figures:
         parser.add_argument("--dpi", type=int, default=150, help="resolution of the figures (default 150)")

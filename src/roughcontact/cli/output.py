@@ -20,24 +20,42 @@ from ..units import format_si
 from .options import CommandStudy
 
 
-def _output_folder(folder: Path, name: str) -> bool:
-    """Check ``-o`` for a command's study; return True to reuse its finished cases (same command)."""
+def _output_folder(folder: Path, command: CommandStudy, overwrite: bool) -> bool:
+    """Check ``-o`` for a command's study; return True to reuse its finished cases.
+
+    A folder of the same command with the same options is resumed (its finished cases are the
+    answer); one with other options is replaced only with ``--overwrite``, never silently.
+    """
+    import shutil
+    import tomllib
+
     if not folder.exists() or not any(folder.iterdir()):
         return False
     marker = folder / "study.json"
-    if marker.is_file():
-        held = json.loads(marker.read_text()).get("name")
-        if held == name:
-            return True
+    if not marker.is_file():
+        raise InputError("-o/--output", f"{folder} is not empty.", "choose a new or empty folder.")
+    held = json.loads(marker.read_text()).get("name")
+    if held != command.name:
         raise InputError(
             "-o/--output",
             f"{folder} holds the results of {held!r}.",
             "choose another folder (a command reuses only its own results).",
         )
-    raise InputError("-o/--output", f"{folder} is not empty.", "choose a new or empty folder.")
+    stored = folder / "study.toml"
+    same = stored.is_file() and tomllib.loads(stored.read_text()) == tomllib.loads(command.text())
+    if same:
+        return True
+    if not overwrite:
+        raise InputError(
+            "-o/--output",
+            f"{folder} holds the results of an earlier {held!r} with other options.",
+            "choose another folder, or add --overwrite to replace them.",
+        )
+    shutil.rmtree(folder)
+    return False
 
 
-def _run(study, command: CommandStudy, output: Path | None, dpi: int):
+def _run(study, command: CommandStudy, output: Path | None, dpi: int, overwrite: bool = False):
     """Run every case; return the analyses with their records and the report path (None without -o)."""
     from ..study.kind import CaseRecord
     from ..study.outputs import in_memory, read_study
@@ -52,7 +70,7 @@ def _run(study, command: CommandStudy, output: Path | None, dpi: int):
                 records.setdefault(case.analysis, []).append(CaseRecord(record, Path.cwd()))
             return in_memory(study, records), None
         folder = output.expanduser().resolve()
-        resume = _output_folder(folder, study.name)
+        resume = _output_folder(folder, command, overwrite)
         run_study(study, folder, resume=resume, progress=sys.stderr.isatty(), raise_errors=True)
         report = write_report(folder, dpi=dpi)
         return read_study(folder)[1], report
@@ -81,7 +99,9 @@ def run_command(command: CommandStudy, args) -> int:
         for name, prepared in study.prepared.items():
             print(command.translate(preparation_line(name, prepared)))
     output = getattr(args, "output", None)
-    analyses, report = _run(study, command, output, getattr(args, "dpi", 150))
+    analyses, report = _run(
+        study, command, output, getattr(args, "dpi", 150), getattr(args, "overwrite", False)
+    )
     tables, problems = produce(analyses, "table")
     if args.json:
         document = {

@@ -150,6 +150,8 @@ def _plot(args: argparse.Namespace) -> int:
         return plot_study(args.file)
     if args.output is None:
         raise InputError("-o/--output", "no figure file given.", "add -o FIGURE.png.")
+    if args.output.exists() and not args.overwrite:
+        raise InputError("-o/--output", f"{args.output} exists.", "choose another name, or add --overwrite.")
     topography, undefined = read_file(args)
     figure = plot_overview(topography, undefined=undefined)
     args.output.parent.mkdir(parents=True, exist_ok=True)
@@ -180,3 +182,4 @@ def add_commands(commands) -> None:
     )
     plot.add_argument("-o", "--output", type=Path, help="figure file (.png, .pdf, .svg) for a topography")
     plot.add_argument("--dpi", type=int, default=150)
+    plot.add_argument("--overwrite", action="store_true", help="replace an existing figure file")
