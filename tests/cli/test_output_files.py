@@ -47,3 +47,11 @@ def test_plot_does_not_replace_a_figure_without_overwrite(run, tmp_path):
     status, _, err = run("plot", f"{SHARED}/top-1.top", "-o", figure)
     assert status == 2 and "exists" in err and os.stat(figure).st_mtime_ns == before
     assert run("plot", f"{SHARED}/top-1.top", "-o", figure, "--overwrite")[0] == 0
+
+
+def test_a_single_case_is_named_by_its_surface_and_load_not_its_hash(run, tmp_path):
+    from roughcontact.study.outputs import read_study
+
+    assert run(*CONTACT, "--pressure", "5 MPa", "-o", tmp_path / "out")[0] == 0
+    (analysis,) = read_study(tmp_path / "out")[1]
+    assert analysis.records[0].label == "surface, mean_pressure=5 MPa"

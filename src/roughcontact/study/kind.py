@@ -57,6 +57,10 @@ class CaseOutput:
     warnings: tuple[str, ...] = ()
 
 
+_LOAD_KEYS = {"mean_pressure": "Pa", "force": "N", "normal_force": "N", "approach": "m", "max_force": "N"}
+"""Parameters that name a case's load in its label, first found first, with their SI units."""
+
+
 @dataclass(frozen=True)
 class CaseRecord:
     """A finished (or failed) case as stored in ``OUT/cases/ANALYSIS/CASE.json``.
@@ -99,9 +103,23 @@ class CaseRecord:
 
     @property
     def label(self) -> str:
-        """A short legend label: the swept values as written (``sample=A, force=10 uN``)."""
+        """A short legend label: the swept values as written (``sample=A, force=10 uN``).
+
+        A case of no sweep (a command's one case) is named by its surface and its load instead
+        (``surface, mean_pressure=20 MPa``); the case's hash only when it has neither.
+        """
         axes = self.data.get("axes") or {}
-        return ", ".join(f"{k.rsplit('.', 1)[-1]}={v}" for k, v in axes.items()) or self.data["case"]
+        if axes:
+            return ", ".join(f"{k.rsplit('.', 1)[-1]}={v}" for k, v in axes.items())
+        from ..units import format_si
+
+        parameters = self.parameters
+        parts = [str(parameters[k]) for k in ("sample", "topography") if parameters.get(k)][:1]
+        for key, unit in _LOAD_KEYS.items():
+            if isinstance(parameters.get(key), int | float):
+                parts.append(f"{key}={format_si(parameters[key], unit)}")
+                break
+        return ", ".join(parts) or self.data["case"]
 
     @cached_property
     def fields_path(self) -> Path | None:
