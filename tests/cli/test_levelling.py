@@ -151,3 +151,22 @@ def test_level_none_is_the_identity_and_unknown_modes_are_refused():
     assert level(surface, "none") is surface
     with pytest.raises(InputError, match="detrend.*choose one of none, mean, plane, curvature, sphere"):
         level(surface, "tilt")
+
+
+def test_every_file_of_a_command_gets_the_units_and_the_levelling():
+    """A second file (friction's tip) takes --size, --height-unit and --detrend as FILE does."""
+    import argparse
+
+    from roughcontact.cli.options import CommandStudy
+
+    args = argparse.Namespace(
+        file="scan.txt", size=("5 um",), height_unit="nm", channel=None, max_filled=None,
+        fill_undefined=False, periodic=False, detrend="plane",
+    )  # fmt: skip
+    command = CommandStudy("roughcontact friction")
+    command.topography_file("surface", args)
+    command.topography_file("tip", args, file="tip.txt")
+    tables = command.document["topographies"]
+    for name in ("surface", "tip"):
+        assert tables[name]["size"] == "5 um" and tables[name]["height_unit"] == "nm"
+        assert tables[name]["detrend"] == "plane"

@@ -259,23 +259,17 @@ class CommandStudy:
         self.flags[(*where, "max_filled")] = "--max-filled"
         self.name_flag((*where, "file"), "FILE" if file is None else str(file))
         self.flags[where] = "FILE" if file is None else str(file)
-        if file is None:
-            for key in ("channel", "height_unit", "max_filled"):
-                if getattr(args, key, None) is not None:
-                    self.set((*where, key), getattr(args, key), _flag(key))
-            if getattr(args, "size", None) is not None:
-                self.set((*where, "size"), list(args.size) if len(args.size) > 1 else args.size[0], "--size")
-            for key in ("fill_undefined", "periodic"):
-                if getattr(args, key, False):
-                    self.set((*where, key), True, _flag(key))
+        # FILE's own options; the file's units (--size, --height-unit) and --detrend hold for every file
+        for key in ("channel", "height_unit", "max_filled") if file is None else ("height_unit",):
+            if getattr(args, key, None) is not None:
+                self.set((*where, key), getattr(args, key), _flag(key))
+        if getattr(args, "size", None) is not None:
+            self.set((*where, "size"), list(args.size) if len(args.size) > 1 else args.size[0], "--size")
+        for key in ("fill_undefined", "periodic") if file is None else ():
+            if getattr(args, key, False):
+                self.set((*where, key), True, _flag(key))
         if getattr(args, "detrend", None) is not None:
             self.set((*where, "detrend"), args.detrend, "--detrend")
-        elif getattr(args, "size", None) is not None or getattr(args, "height_unit", None) is not None:
-            for key in ("height_unit",):
-                if getattr(args, key, None) is not None:
-                    self.set((*where, key), getattr(args, key), _flag(key))
-            if getattr(args, "size", None) is not None:
-                self.set((*where, "size"), list(args.size) if len(args.size) > 1 else args.size[0], "--size")
         return name
 
     def topography(self, name: str, table: dict[str, Any], flag: str) -> str:
