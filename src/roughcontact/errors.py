@@ -60,10 +60,15 @@ class MissingMetadataError(InputError):
 
 
 class UndefinedPointsError(InputError):
-    """A file with undefined (missing) points that the user has not asked to fill; ``count`` of them."""
+    """A file with undefined (missing) points that the user has not asked to fill; ``count`` of them.
 
-    def __init__(self, field: str, problem: str, fix: str, count: int):
+    ``allowing`` is set when filling was asked for but would invent more than ``max_filled``
+    allows: the ``max_filled`` that would allow it, for each edge to offer in its own words.
+    """
+
+    def __init__(self, field: str, problem: str, fix: str, count: int, allowing: float | None = None):
         self.count = count
+        self.allowing = allowing
         super().__init__(field, problem, fix)
 
 

@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError, UndefinedPointsError
+from ..topography.io import MAX_FILLED
 from ..topography.process import LEVELLING
 
 EXIT_INPUT_ERROR = 2
@@ -65,7 +66,7 @@ def file_options(*, required: bool = True) -> argparse.ArgumentParser:
         "--max-filled",
         type=float,
         metavar="FRACTION",
-        help="largest fraction of the points --fill-undefined may fill (default 0.05)",
+        help=f"largest fraction of the points --fill-undefined may fill (default {MAX_FILLED:g})",
     )
     group.add_argument("--periodic", action="store_true", help="treat the surface as periodic")
     group.add_argument(
@@ -121,13 +122,11 @@ def read_file(args: argparse.Namespace):
     elif args.fill_undefined or not scan.undefined.any():
         try:
             topography = scan.topography(
-                undefined="interpolate", max_filled=0.05 if args.max_filled is None else args.max_filled
+                undefined="interpolate", max_filled=MAX_FILLED if args.max_filled is None else args.max_filled
             )
         except UndefinedPointsError as error:
-            fix = error.fix.replace("allow it: max_filled=", "allow it: --max-filled ").split(
-                " (command line"
-            )[0]
-            raise InputError("--max-filled", error.problem, fix + ".") from None
+            fix = f"if that is acceptable, allow it: --max-filled {error.allowing:g}; or crop them away."
+            raise InputError("--max-filled", error.problem, fix) from None
     else:
         undefined = scan.undefined
         placeholder = np.where(undefined, np.nanmean(scan.heights), scan.heights)

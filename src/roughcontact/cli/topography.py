@@ -14,6 +14,8 @@ import numpy as np
 from .._json import json_ready
 from ..errors import InputError
 from ..topography import Topography
+from ..topography.io import MAX_FILLED, max_filled_allowing
+from ..topography.process import LEVELLING
 from ..topography.statistics import SUMMARY
 from ..units import format_si
 from .options import new_command, read_file
@@ -54,15 +56,6 @@ def describe(topography: Topography, undefined=None) -> dict:
     return description
 
 
-_LEVELLING_WORDS = {
-    "none": "none: statistics of the scan as stored, tilt included (--detrend plane to level)",
-    "mean": "mean removed only: the tilt is included (--detrend plane to level)",
-    "plane": "least-squares plane subtracted before the statistics (--detrend none keeps the tilt)",
-    "curvature": "least-squares quadratic subtracted before the statistics",
-    "sphere": "fitted sphere subtracted before the statistics",
-}
-
-
 def format_description(description: dict) -> str:
     """Render :func:`describe` output as an aligned text table with SI-prefixed units."""
     size = " x ".join(format_si(s, "m") for s in description["size_m"])
@@ -90,14 +83,14 @@ def format_description(description: dict) -> str:
             f"{undefined['regions']} region(s) within {box}",
             "statistics     need every point: add --fill-undefined"
             + (
-                f" --max-filled {np.ceil(100 * undefined['fraction']) / 100:g}"
-                if undefined["fraction"] > 0.05
+                f" --max-filled {max_filled_allowing(undefined['fraction']):g}"
+                if undefined["fraction"] > MAX_FILLED
                 else ""
             )
             + " to fill them, or see where they are with: roughcontact plot FILE -o FIGURE.png",
         ]
     if "detrend" in description:
-        lines.append(f"levelling      {_LEVELLING_WORDS[description['detrend']]}")
+        lines.append(f"levelling      {LEVELLING[description['detrend']]}")
     if "statistics" in description:
         lines.append("statistics")
     for key, value in description.get("statistics", {}).items():

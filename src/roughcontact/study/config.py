@@ -344,8 +344,8 @@ class _Builder:
                 keys = ", ".join(f"{key} = {value!r}" for key, value in error.missing.items())
                 notes = "".join(f"; {note}" for note in error.notes)
                 fix = f"give the real values, e.g. {keys} (a non-square scan: size = '5 um x 10 um'){notes}."
-            elif isinstance(error, UndefinedPointsError) and error.field == "max_filled":
-                fix = error.fix.split(" (command line", 1)[0].replace("max_filled=", "max_filled = ") + "."
+            elif isinstance(error, UndefinedPointsError) and error.allowing is not None:
+                fix = f"if that is acceptable, allow it: max_filled = {error.allowing:g}; or crop them away."
             elif isinstance(error, UndefinedPointsError):
                 fix = "add fill_undefined = true to fill them by harmonic interpolation, or crop them away."
             key = error.field if error.field in ("size", "height_unit", "channel", "max_filled") else "file"

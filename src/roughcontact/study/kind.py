@@ -21,6 +21,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
+from ..units import format_si
 from .schema import Strict
 
 
@@ -111,8 +112,6 @@ class CaseRecord:
         axes = self.data.get("axes") or {}
         if axes:
             return ", ".join(f"{k.rsplit('.', 1)[-1]}={v}" for k, v in axes.items())
-        from ..units import format_si
-
         parameters = self.parameters
         parts = [str(parameters[k]) for k in ("sample", "topography") if parameters.get(k)][:1]
         for key, unit in _LOAD_KEYS.items():

@@ -13,6 +13,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
+from ..topography.process import LEVELLING
 from ..units import format_si
 from .outputs import (
     StoredAnalysis,
@@ -78,15 +79,6 @@ def _image(path: Path) -> str:
     return f"<figure>{image}<figcaption>{caption}</figcaption></figure>"
 
 
-_LEVELLING_WORDS = {
-    "none": "not levelled (detrend none: the tilt of the scan is kept)",
-    "mean": "mean height removed only (detrend mean: the tilt is kept)",
-    "plane": "levelled: least-squares plane subtracted",
-    "curvature": "levelled: least-squares quadratic (tilt and curvature) subtracted",
-    "sphere": "levelled: fitted sphere subtracted",
-}
-
-
 def preparation_line(name: str, prepared: dict[str, Any]) -> str:
     """One sentence on what was done to a measured file before use (levelling, filled points)."""
     grid = " x ".join(str(n) for n in prepared["grid"])
@@ -98,7 +90,7 @@ def preparation_line(name: str, prepared: dict[str, Any]) -> str:
         if filled
         else "no undefined points"
     )
-    words = _LEVELLING_WORDS.get(prepared["detrend"], prepared["detrend"])
+    words = LEVELLING.get(prepared["detrend"], prepared["detrend"])
     return f"{name}: {prepared['file']}, {grid} points, {size}; {words}; {undefined}."
 
 

@@ -27,6 +27,7 @@ from pydantic_core import PydanticCustomError
 
 from ..errors import InputError
 from ..materials import Material, get_material
+from ..topography.io import MAX_FILLED
 from ..units import SI_UNITS, quantity
 
 
@@ -183,7 +184,7 @@ class FileTopography(Strict):
     size: LengthPerAxis | None = None
     height_unit: str | None = None
     fill_undefined: bool = False
-    max_filled: float = Field(default=0.05, ge=0.0, le=1.0)
+    max_filled: float = Field(default=MAX_FILLED, ge=0.0, le=1.0)
     """Largest fraction of undefined points that fill_undefined may fill (more needs saying so)."""
     periodic: bool = False
     detrend: Literal["none", "mean", "plane", "curvature", "sphere"] = "plane"

@@ -56,6 +56,16 @@ __all__ = ["ChannelInfo", "list_channels", "read_topography"]
 
 _GZIP_MAGIC = b"\x1f\x8b"
 _UNDEFINED_CHOICES = ("refuse", "interpolate")
+
+MAX_FILLED = 0.05
+"""Largest fraction of a file's points that filling undefined points may invent without being told more."""
+
+
+def max_filled_allowing(fraction: float) -> float:
+    """Return the ``max_filled`` to offer for a file with ``fraction`` undefined (the next whole percent)."""
+    return math.ceil(100 * fraction) / 100
+
+
 _REREAD_FIX = (
     "copy the file again from the instrument or export it again (e.g. as .x3p, .sur or a "
     "plain-text height matrix); roughcontact reads the formats SurfaceTopography reads."
@@ -145,7 +155,7 @@ def read_topography(
     size: SizeLike | None = None,
     height_unit: str | None = None,
     undefined: str = "refuse",
-    max_filled: float = 0.05,
+    max_filled: float = MAX_FILLED,
     periodic: bool = False,
 ) -> Topography:
     """Read one channel of a topography file into a :class:`Topography` in SI units.
@@ -176,9 +186,9 @@ def read_topography(
         interpolation (:func:`roughcontact.topography.process.fill_undefined`), recording the
         count in ``info['undefined_points_filled']``.
     max_filled : float
-        Largest fraction of the points that ``undefined="interpolate"`` may fill (default 0.05).
-        Filling more invents much of the surface (SurfaceTopography's ``sur-2.sur`` lacks 27 %),
-        so it must be asked for explicitly: ``max_filled=0.3``.
+        Largest fraction of the points that ``undefined="interpolate"`` may fill (default
+        :data:`MAX_FILLED`, 5 %). Filling more invents much of the surface (SurfaceTopography's
+        ``frt-2.frt`` lacks 27 %), so it must be asked for explicitly: ``max_filled=0.3``.
     periodic : bool
         Treat the surface as periodic (measured surfaces are not, as a rule). A file that
         declares itself periodic (a roughcontact or SurfaceTopography ``.nc`` file) stays so.
@@ -243,7 +253,7 @@ class Scan:
         """True where the file holds no height."""
         return ~np.isfinite(self.heights)
 
-    def topography(self, *, undefined: str = "refuse", max_filled: float = 0.05) -> Topography:
+    def topography(self, *, undefined: str = "refuse", max_filled: float = MAX_FILLED) -> Topography:
         """Return the scan as a :class:`Topography`, its undefined points refused or filled.
 
         See :func:`read_topography` for ``undefined`` and ``max_filled``.
@@ -563,13 +573,15 @@ def _handle_undefined(
             count,
         )
     if fraction > max_filled:
+        allowing = max_filled_allowing(fraction)
         raise UndefinedPointsError(
             "max_filled",
             f"{path.name}: {100 * fraction:.3g} % of the points are undefined, more than the "
             f"{100 * max_filled:.3g} % that are filled without asking; filling invents that much surface.",
-            f"if that is acceptable, allow it: max_filled={math.ceil(100 * fraction) / 100:g} (command "
-            f"line: --max-filled {math.ceil(100 * fraction) / 100:g}); or crop the undefined region away.",
+            f"if that is acceptable, allow it: max_filled={allowing:g} (command line: --max-filled "
+            f"{allowing:g}); or crop the undefined region away.",
             count,
+            allowing,
         )
     return fill_undefined(heights, field=str(path)), count
 

@@ -90,8 +90,15 @@ def fill_undefined(heights: np.ndarray, *, field: str = "heights") -> np.ndarray
 
 _DETREND_MODES = ("mean", "plane", "curvature")
 
-LEVELLING = ("none", "mean", "plane", "curvature", "sphere")
-"""What :func:`level` can remove from a measured scan: nothing, or a fitted background."""
+LEVELLING = {
+    "none": "not levelled (detrend none: the tilt of the scan is kept)",
+    "mean": "mean height removed only (detrend mean: the tilt is kept)",
+    "plane": "levelled: least-squares plane subtracted",
+    "curvature": "levelled: least-squares quadratic (tilt and curvature) subtracted",
+    "sphere": "levelled: fitted sphere subtracted",
+}
+"""What :func:`level` can remove from a measured scan (nothing, or a fitted background), and how
+the commands, ``inspect`` and the report say it."""
 
 
 def scale_to_ra(topography: Topography, ra: float) -> Topography:
