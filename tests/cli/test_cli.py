@@ -23,7 +23,7 @@ def test_inspect_lists_channels_units_and_statistics(capsys, shared_topographies
     assert "ZSensor" in out and "*" in out  # default channel marked
     assert "256 x 256 points" in out
     assert "10 µm x 10 µm" in out
-    assert "Rq" in out and "summit_radius" in out
+    assert "Sq" in out and "Rq" in out and "summit_radius" in out
 
 
 def test_inspect_json_is_si(capsys, shared_topographies):
@@ -34,7 +34,7 @@ def test_inspect_json_is_si(capsys, shared_topographies):
     assert doc["size_m"] == pytest.approx([600e-9, 600e-9], rel=1e-9, abs=0)
     # README: rms 3.15 nm as stored (SurfaceTopography's figure, tilt included; levelled it is
     # 1.61 nm, tests/cli/test_levelling.py); 1e-2 relative covers the README's 3-digit rounding.
-    assert doc["statistics"]["Rq"] == pytest.approx(3.15e-9, rel=1e-2, abs=0)
+    assert doc["statistics"]["Sq"] == pytest.approx(3.15e-9, rel=1e-2, abs=0)
 
 
 def test_inspect_selects_channel_by_name_and_index(capsys, shared_topographies):
@@ -50,7 +50,7 @@ def test_inspect_selects_channel_by_name_and_index(capsys, shared_topographies):
     assert by_name["statistics"] == by_index["statistics"]
     status, out, _ = run(capsys, "inspect", path, "--json")
     default = json.loads(out)
-    assert default["statistics"]["Rq"] != by_index["statistics"]["Rq"]  # ZSensor is another channel
+    assert default["statistics"]["Sq"] != by_index["statistics"]["Sq"]  # ZSensor is another channel
 
 
 def test_non_height_channel_is_refused(capsys, shared_topographies):

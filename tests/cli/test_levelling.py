@@ -78,16 +78,16 @@ def test_inspect_reports_the_levelled_statistics_by_default(run, twins):
     status, out, _ = run("inspect", twins[1], "--json", "--detrend", "none")
     raw = json.loads(out)
     assert levelled["detrend"] == "plane" and raw["detrend"] == "none"
-    assert raw["statistics"]["Rq"] > 3 * levelled["statistics"]["Rq"]
+    assert raw["statistics"]["Sq"] > 3 * levelled["statistics"]["Sq"]
 
 
 def test_inspect_of_a_real_afm_scan_is_levelled(run):
     """WSxM ``top-1.top``: Rq 3.15 nm as stored (tilted), 1.6 nm levelled (issue 15's example)."""
     status, out, _ = run("inspect", f"{SHARED}/top-1.top", "--json")
     assert status == 0
-    assert json.loads(out)["statistics"]["Rq"] == pytest.approx(1.61e-9, rel=0.01)
+    assert json.loads(out)["statistics"]["Sq"] == pytest.approx(1.61e-9, rel=0.01)
     status, out, _ = run("inspect", f"{SHARED}/top-1.top", "--json", "--detrend", "none")
-    assert json.loads(out)["statistics"]["Rq"] == pytest.approx(3.15e-9, rel=0.01)
+    assert json.loads(out)["statistics"]["Sq"] == pytest.approx(3.15e-9, rel=0.01)
 
 
 def test_a_study_levels_its_files_and_keeps_the_choice(tmp_path, twins):

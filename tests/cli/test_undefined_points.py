@@ -38,7 +38,7 @@ def test_inspect_describes_a_file_with_undefined_points(run):
 def test_inspect_fills_a_few_points_when_asked_and_says_how_many(run):
     status, out, _ = run("inspect", f"{SHARED}/sur-2.sur", "--fill-undefined")
     assert status == 0
-    assert "117 points (0.0429 %) filled by interpolation" in out and "Rq" in out
+    assert "117 points (0.0429 %) filled by interpolation" in out and "Sq" in out
 
 
 def test_filling_more_than_5_percent_needs_max_filled(run, holes):

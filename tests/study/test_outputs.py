@@ -65,7 +65,7 @@ def test_the_table_has_one_row_per_case_with_units_in_the_headers(finished):
     assert float(contact["force [N]"]) == pytest.approx(10e6 * 4e-12, rel=1e-9)
     assert 0 < float(contact["contact_fraction"]) < 1
     assert float(contact["max_von_mises [Pa]"]) > 0
-    assert float(table[0]["Rq [m]"]) == pytest.approx(1e-9, rel=1e-9)
+    assert float(table[0]["Sq [m]"]) == pytest.approx(1e-9, rel=1e-9)
 
 
 def test_records_and_fields_are_stored_per_case(finished):

@@ -243,7 +243,7 @@ def test_provenance_and_table_of_a_finished_run(reference):
             assert float(row["contact_fraction"]) == record["scalars"]["contact_fraction"]
             assert row["replicate"] == str(record["parameters"]["replicate"])
         else:
-            assert float(row["Rq [m]"]) == record["scalars"]["Rq"]
+            assert float(row["Sq [m]"]) == record["scalars"]["Sq"]
 
 
 # --- interruption and resume ---------------------------------------------------------------------

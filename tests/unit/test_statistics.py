@@ -49,8 +49,8 @@ def test_flat_surface_has_no_skewness_and_summary_leaves_it_out():
         statistics.rsk(flat)
     assert error.value.field == "topography"
     result = statistics.summary(flat)
-    assert "Rsk" not in result and "bandwidth" not in result
-    assert result["Rq"] == 0 and result["m2"] == 0
+    assert not {"Ssk", "Sku", "Rsk", "Rku", "bandwidth"} & set(result)
+    assert result["Sq"] == 0 and result["Rq"] == 0 and result["Sdr"] == 0 and result["m2"] == 0
 
 
 # --- derivatives ---------------------------------------------------------------------------------
@@ -186,25 +186,70 @@ def test_summits_of_a_profile():
     np.testing.assert_array_equal(peaks.indices[:, 0], [1])  # plateau (3, 3) and edge give none
 
 
-def test_summary_keys(rough):
+def test_summary_keys_of_a_map_are_every_entry_in_order(rough):
     result = statistics.summary(rough)
-    assert list(result) == [
-        "Ra",
-        "Rq",
-        "Rsk",
-        "Rku",
-        "Rz",
-        "rms_slope",
-        "rms_curvature",
-        "m0",
-        "m2",
-        "m4",
-        "bandwidth",
-        "summit_density",
-        "summit_radius",
-        "summit_height_std",
-    ]
+    assert list(result) == list(statistics.SUMMARY)
     assert all(isinstance(v, float) and math.isfinite(v) for v in result.values())
+
+
+def test_summary_of_a_profile_has_profile_names_only():
+    profile = Topography(np.random.default_rng(3).standard_normal(64) * 1e-9, 1e-6, periodic=True)
+    result = statistics.summary(profile)
+    assert not [name for name in result if name.startswith("S")]
+    assert {"Ra", "Rq", "Rsk", "Rku", "Rt", "Rdq"} <= set(result)
+    assert result["Rq"] == approx(statistics.rq(profile), rel=1e-14)
+    assert result["Rt"] == approx(statistics.rz(profile), rel=1e-14)
+    assert result["Rdq"] == approx(statistics.rms_slope(profile), rel=1e-14)
+    with pytest.raises(InputError, match="areal"):
+        statistics.sdr(profile)
+
+
+# --- areal and profile parameters ----------------------------------------------------------------
+
+
+@pytest.mark.parametrize("periodic", [False, True])
+def test_profile_parameters_see_each_profile_about_its_own_mean(periodic):
+    """z = f(x) + g(y): the profiles along x lose g(y) entirely, the areal parameters keep it."""
+    x = np.arange(32) / 32
+    f = 1e-9 * np.sin(2 * np.pi * 3 * x)
+    g = 5e-9 * np.cos(2 * np.pi * x[:16] * 2)
+    both = Topography(f[:, None] + g[None, :], (1e-6, 0.5e-6), periodic=periodic)
+    alone = Topography(np.tile(f[:, None], (1, 16)), (1e-6, 0.5e-6), periodic=periodic)
+    profile, expected = statistics.profile_parameters(both), statistics.profile_parameters(alone)
+    assert profile.keys() == expected.keys()
+    for name in profile:  # Rsk of a sine is zero: compared to round-off in absolute terms
+        assert profile[name] == approx(expected[name], rel=1e-12, abs=1e-14 if name == "Rsk" else 0), name
+    assert profile["Rq"] == approx(1e-9 / np.sqrt(2), rel=1e-12)  # whole periods of f
+    assert profile["Rt"] == approx(np.ptp(f), rel=1e-12)
+    assert statistics.rq(both) == approx(np.sqrt(f.var() + g.var()), rel=1e-12)  # Sq sees g
+
+
+def test_profile_rq_is_surface_topographys_rq(shared_topographies):
+    """Cross-check with SurfaceTopography's Rq (profiles along x, pooled) and Sq on a real scan."""
+    import SurfaceTopography
+
+    from roughcontact.topography.io import read_topography
+    from roughcontact.topography.process import level
+
+    theirs = SurfaceTopography.read_topography(str(shared_topographies / "top-1.top")).detrend("height")
+    ours = level(read_topography(shared_topographies / "top-1.top"), "plane")
+    rq_theirs = SurfaceTopography.Uniform.ScalarParameters.Rq(theirs) * 1e-9  # their heights in nm
+    assert statistics.profile_parameters(ours)["Rq"] == approx(rq_theirs, rel=1e-12)
+    assert statistics.rq(ours) == approx(SurfaceTopography.Uniform.ScalarParameters.Sq(theirs) * 1e-9, rel=1e-12)
+
+
+def test_sdr_of_a_tilted_plane_is_the_secant_less_one():
+    """A plane of slopes (a, b) has true area sqrt(1 + a^2 + b^2) per unit projected area."""
+    a, b = 0.3, -0.2
+    x, y = np.meshgrid(np.arange(16) * 1e-8, np.arange(12) * 1e-8, indexing="ij")
+    plane = Topography(a * x + b * y, (16e-8, 12e-8), periodic=False)
+    assert statistics.sdr(plane) == approx(np.sqrt(1 + a**2 + b**2) - 1, rel=1e-12)
+
+
+def test_sdr_grows_as_half_the_mean_square_gradient(rough):
+    """Small slopes: sqrt(1 + s^2) - 1 = s^2/2 - s^4/8 ..., so Sdr ~ Sdq^2 / 2 to a relative Sdq^2."""
+    gentle = rough.with_heights(np.asarray(rough.heights) * 1e-3 / statistics.rms_slope(rough))
+    assert statistics.sdr(gentle) == approx(statistics.rms_slope(gentle) ** 2 / 2, rel=1e-5)
 
 
 # --- properties ----------------------------------------------------------------------------------

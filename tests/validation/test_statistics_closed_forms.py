@@ -225,9 +225,17 @@ def test_statistics_scale_with_geometric_similarity():
     large = Topography(np.asarray(small.heights) * s, tuple(x * s for x in small.size), periodic=True)
     a, b = statistics.summary(small), statistics.summary(large)
     exponents = {
+        "Sa": 1,
+        "Sq": 1,
+        "Sz": 1,
+        "Ssk": 0,
+        "Sku": 0,
+        "Sdq": 0,
+        "Sdr": 0,
         "Ra": 1,
         "Rq": 1,
-        "Rz": 1,
+        "Rt": 1,
+        "Rdq": 0,
         "m0": 2,
         "m2": 0,
         "m4": -2,

@@ -19,6 +19,7 @@ from ..topography.process import LEVELLING
 from ..topography.statistics import SUMMARY
 from ..units import format_si
 from .options import new_command, read_file
+from .output import shown
 
 
 def describe(topography: Topography, undefined=None) -> dict:
@@ -95,8 +96,7 @@ def format_description(description: dict) -> str:
         lines.append("statistics")
     for key, value in description.get("statistics", {}).items():
         unit, meaning = SUMMARY.get(key, ("", ""))
-        shown = format_si(value, unit) if unit in ("m",) else f"{value:.4g} {unit}".rstrip()
-        lines.append(f"  {key:<18} {shown:<16} {meaning}")
+        lines.append(f"  {key:<18} {shown(value, unit):<16} {meaning}")
     return "\n".join(lines)
 
 

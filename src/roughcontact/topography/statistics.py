@@ -8,7 +8,14 @@ All inputs are SI (heights and lengths in metres) and so are all outputs.
 Conventions
 -----------
 * Every amplitude quantity is taken about the mean plane: ``z = heights - heights.mean()``.
-  No tilt is removed here; detrend first (:func:`roughcontact.topography.process.detrend`).
+  No tilt is removed here; level first (:func:`roughcontact.topography.process.level`).
+* Two families of roughness names, as a profilometer and an areal instrument report them
+  (:func:`summary`). Areal parameters of ISO 25178-2 (Sa, Sq, Ssk, Sku, Sz, Sdq, Sdr) use every
+  point of a map. Profile parameters of ISO 4287 (Ra, Rq, Rsk, Rku, Rt, Rdq) use the profiles
+  along x (the first axis), each about its own mean line, pooled over all the profiles of a map
+  (:func:`profile_parameters`; the "from profile" convention of SurfaceTopography's ``Rq``). For
+  a profile the two readings coincide and only the R names are given. On a map Rq differs from
+  Sq: the profile means, and any variation across the profiles, are not in Rq.
 * Finite differences. Second derivatives always use the compact centred stencil
   ``(z[i+1] - 2 z[i] + z[i-1]) / h**2`` (O(h^2); for a sinusoid of wavevector k the mean square
   is low by ``(sin(kh/2)/(kh/2))**4 ~ 1 - (kh)**2/6``). Being centred, the x and y terms of the
@@ -73,6 +80,7 @@ __all__ = [
     "psd_1d",
     "psd_2d",
     "psd_radial",
+    "profile_parameters",
     "ra",
     "rku",
     "rms_curvature",
@@ -80,6 +88,7 @@ __all__ = [
     "rq",
     "rsk",
     "rz",
+    "sdr",
     "spectral_moments",
     "summary",
     "summits",
@@ -99,19 +108,27 @@ def _centred(topography: Topography) -> np.ndarray:
 
 
 def ra(topography: Topography) -> float:
-    """Arithmetic mean deviation Ra (Sa for maps) [m]: ``mean(|z - mean(z)|)`` (ISO 4287 / 25178-2)."""
+    """Arithmetic mean deviation over every point [m]: ``mean(|z - mean(z)|)``.
+
+    Sa of ISO 25178-2 for a map, Ra of ISO 4287 for a profile. (It is also what AFM software
+    labels "Ra" for an image, the reading :func:`~roughcontact.topography.process.scale_to_ra`
+    takes for paper 000's samples.)
+    """
     return float(np.abs(_centred(topography)).mean())
 
 
 def rq(topography: Topography) -> float:
-    """Root mean square height Rq (Sq for maps) [m]: ``sqrt(mean((z - mean(z))**2)) = sqrt(m0)``."""
+    """Root mean square height over every point [m]: ``sqrt(mean((z - mean(z))**2)) = sqrt(m0)``.
+
+    Sq of ISO 25178-2 for a map, Rq of ISO 4287 for a profile.
+    """
     return float(np.sqrt(np.mean(_centred(topography) ** 2)))
 
 
-def _standardised_moment(topography: Topography, order: int) -> float:
-    z = _centred(topography)
+def _standardised_moment(z: np.ndarray, order: int, heights: np.ndarray) -> float:
+    """``<z**order> / <z**2>**(order/2)`` of heights ``z`` about their mean line(s); flat -> InputError."""
     variance = np.mean(z**2)
-    if variance <= (np.finfo(float).eps * np.abs(topography.heights).max()) ** 2:
+    if variance <= (np.finfo(float).eps * np.abs(heights).max()) ** 2:
         raise InputError(
             "topography",
             "the surface is flat (Rq = 0): skewness and kurtosis are undefined.",
@@ -121,25 +138,25 @@ def _standardised_moment(topography: Topography, order: int) -> float:
 
 
 def rsk(topography: Topography) -> float:
-    """Skewness Rsk (Ssk for maps), dimensionless: ``mean(z**3) / Rq**3`` with z about the mean.
+    """Skewness over every point (Ssk of a map, Rsk of a profile), dimensionless: ``mean(z**3) / Rq**3`` with z about the mean.
 
     Raises
     ------
     InputError
         For a flat surface (Rq = 0).
     """
-    return _standardised_moment(topography, 3)
+    return _standardised_moment(_centred(topography), 3, topography.heights)
 
 
 def rku(topography: Topography) -> float:
-    """Kurtosis Rku (Sku for maps), dimensionless: ``mean(z**4) / Rq**4`` (3 for a Gaussian surface).
+    """Kurtosis over every point (Sku of a map, Rku of a profile), dimensionless: ``mean(z**4) / Rq**4`` (3 for a Gaussian surface).
 
     Raises
     ------
     InputError
         For a flat surface (Rq = 0).
     """
-    return _standardised_moment(topography, 4)
+    return _standardised_moment(_centred(topography), 4, topography.heights)
 
 
 def rz(topography: Topography) -> float:
@@ -262,6 +279,63 @@ def rms_curvature(topography: Topography) -> float:
     laplacian = sum(curvatures)
     factor = 0.5 if topography.dim == 2 else 1.0
     return float(factor * np.sqrt(np.mean(laplacian[valid] ** 2)))
+
+
+def sdr(topography: Topography) -> float:
+    r"""Developed interfacial area ratio Sdr of a map (ISO 25178-2), dimensionless (0.01 is 1 %).
+
+    .. math:: S_{dr} = \left\langle \sqrt{1 + (\partial z/\partial x)^2 + (\partial z/\partial y)^2}
+              \right\rangle - 1
+
+    the true area of the surface over its projected area, less one, with forward differences
+    (each pixel's two segment slopes; on a non-periodic map the last row and column are left out).
+    It grows as Sdq^2 / 2 for small slopes.
+
+    Raises
+    ------
+    InputError
+        For a profile (Sdr is an areal parameter).
+    """
+    if topography.dim != 2:
+        raise InputError("topography", "Sdr is an areal parameter; this is a profile.", "pass a map.")
+    slopes, valid = _derivatives(topography, 1, "forward")
+    return float(np.mean(np.sqrt(1.0 + sum(s**2 for s in slopes))[valid]) - 1.0)
+
+
+def profile_parameters(topography: Topography) -> dict[str, float]:
+    """ISO 4287 profile parameters along x, pooled over the profiles of a map, SI.
+
+    Each profile (a line of the first axis; for a map ``heights[:, j]``) is taken about its own
+    mean line, and the averages run over every point of every profile, as SurfaceTopography's
+    ``Rq`` does (so Rq**2 is the mean of the profiles' Rq**2):
+
+    ``Ra = <|z|>``, ``Rq = sqrt(<z**2>)``, ``Rsk = <z**3> / Rq**3``, ``Rku = <z**4> / Rq**4``,
+    ``Rdq = sqrt(<(dz/dx)**2>)`` (forward differences) and ``Rt`` the mean over the profiles of
+    their highest peak to lowest valley (over the whole profile: the evaluation length is the scan,
+    no sampling lengths are cut, so no ISO Rz is given). For a single profile these are the
+    parameters of that profile.
+
+    Returns
+    -------
+    dict of str to float
+        "Ra", "Rq" [m], "Rsk", "Rku" (left out when a profile is flat, as in :func:`summary`),
+        "Rt" [m], "Rdq" [dimensionless].
+    """
+    heights = topography.heights
+    z = heights - heights.mean(axis=0, keepdims=True)
+    if topography.periodic:
+        dzdx = (np.roll(heights, -1, axis=0) - heights) / topography.spacing[0]
+    else:
+        dzdx = np.diff(heights, axis=0) / topography.spacing[0]
+    result = {"Ra": float(np.abs(z).mean()), "Rq": float(np.sqrt(np.mean(z**2)))}
+    try:
+        result |= {"Rsk": _standardised_moment(z, 3, heights), "Rku": _standardised_moment(z, 4, heights)}
+    except InputError:
+        pass  # flat profiles: skewness and kurtosis undefined, left out as documented
+    return result | {
+        "Rt": float(np.ptp(heights, axis=0).mean()),
+        "Rdq": float(np.sqrt(np.mean(dzdx**2))),
+    }
 
 
 # --- spectral moments and McCool -----------------------------------------------------------------
@@ -707,13 +781,24 @@ def summits(topography: Topography) -> Summits:
 # --- summary ---------------------------------------------------------------------------------------
 
 
+_AREAL = "areal, ISO 25178-2"
+_PROFILE = "profiles along x, ISO 4287"
+
 SUMMARY = {
-    "Ra": ("m", "arithmetic mean deviation"),
-    "Rq": ("m", "root mean square height"),
-    "Rsk": ("", "skewness"),
-    "Rku": ("", "kurtosis"),
-    "Rz": ("m", "peak-to-valley height"),
-    "rms_slope": ("", "rms slope"),
+    "Sa": ("m", f"arithmetic mean height ({_AREAL})"),
+    "Sq": ("m", f"root mean square height ({_AREAL})"),
+    "Ssk": ("", f"skewness ({_AREAL})"),
+    "Sku": ("", f"kurtosis ({_AREAL})"),
+    "Sz": ("m", f"maximum height, highest peak to lowest pit ({_AREAL})"),
+    "Sdq": ("", f"root mean square gradient ({_AREAL})"),
+    "Sdr": ("", f"developed interfacial area ratio, 0.01 = 1 % ({_AREAL})"),
+    "Ra": ("m", f"arithmetic mean deviation ({_PROFILE})"),
+    "Rq": ("m", f"root mean square deviation ({_PROFILE})"),
+    "Rsk": ("", f"skewness ({_PROFILE})"),
+    "Rku": ("", f"kurtosis ({_PROFILE})"),
+    "Rt": ("m", f"total height of the profile ({_PROFILE})"),
+    "Rdq": ("", f"root mean square slope ({_PROFILE})"),
+    "rms_slope": ("", "rms slope sqrt(2 m2), sqrt(m2) for a profile (paper 002)"),
     "rms_curvature": ("1/m", "rms curvature"),
     "m0": ("m^2", "spectral moment m0 (paper 002 eq. 1)"),
     "m2": ("", "spectral moment m2 (eq. 2)"),
@@ -729,10 +814,13 @@ SUMMARY = {
 def summary(topography: Topography) -> dict[str, float]:
     """All scalar statistics of a surface, SI (the entries and units of :data:`SUMMARY`).
 
-    Default (forward) first differences.
-    Entries that are undefined for this surface are left out rather than set to NaN: "Rsk" and
-    "Rku" for a flat surface, and the McCool entries when the moments give alpha < 0.8968 or a
-    zero moment.
+    A map gets the areal parameters of ISO 25178-2 (Sa, Sq, Ssk, Sku, Sz, Sdq, Sdr) and the
+    profile parameters of ISO 4287 along x (:func:`profile_parameters`); a profile gets the profile
+    parameters only. Then the rms slope and curvature, paper 002's spectral moments and McCool's
+    summit parameters. Default (forward) first differences.
+    Entries that are undefined for this surface are left out rather than set to NaN: the
+    skewness and kurtosis of a flat surface, and the McCool entries when the moments give
+    alpha < 0.8968 or a zero moment.
 
     Parameters
     ----------
@@ -743,14 +831,18 @@ def summary(topography: Topography) -> dict[str, float]:
     -------
     dict of str to float
     """
-    result = {"Ra": ra(topography), "Rq": rq(topography)}
-    try:
-        result |= {"Rsk": rsk(topography), "Rku": rku(topography)}
-    except InputError:
-        pass  # flat surface: skewness and kurtosis undefined, left out as documented
+    result = {}
+    slope = rms_slope(topography)
+    if topography.dim == 2:
+        result = {"Sa": ra(topography), "Sq": rq(topography)}
+        try:
+            result |= {"Ssk": rsk(topography), "Sku": rku(topography)}
+        except InputError:
+            pass  # flat surface: skewness and kurtosis undefined, left out as documented
+        result |= {"Sz": rz(topography), "Sdq": slope, "Sdr": sdr(topography)}
+    result |= profile_parameters(topography)
     result |= {
-        "Rz": rz(topography),
-        "rms_slope": rms_slope(topography),
+        "rms_slope": slope,
         "rms_curvature": rms_curvature(topography),
     }
     moments = spectral_moments(topography)

@@ -1,8 +1,10 @@
 """Study kind ``statistics``: roughness statistics of one topography per case.
 
-Scalars from :func:`roughcontact.topography.statistics.summary` (Ra, Rq, Rsk, Rku, Rz, rms slope
-and curvature, spectral moments m0, m2, m4 of paper 002 eqs. 1-3, and McCool's summit density,
-radius and height deviation, eqs. 4-5), plus the grid and physical size. Fields: the heights and
+Scalars from :func:`roughcontact.topography.statistics.summary` (the areal parameters of
+ISO 25178-2 for a map: Sa, Sq, Ssk, Sku, Sz, Sdq, Sdr; the profile parameters of ISO 4287 along x:
+Ra, Rq, Rsk, Rku, Rt, Rdq; rms slope and curvature, spectral moments m0, m2, m4 of paper 002
+eqs. 1-3, and McCool's summit density, radius and height deviation, eqs. 4-5), plus the grid and
+physical size. Fields: the heights and
 the radially averaged PSD (maps) or the 1D PSD (profiles).
 
 Figures: ``heights`` (height maps of up to four cases), ``psd`` (every case's PSD on one plot).
@@ -13,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...topography.statistics import SUMMARY
+from ...units import format_si
 from ..kind import CaseOutput, CaseParameters, Kind
 from ..schema import TopographyName
 from .common import evenly_chosen, grid
@@ -67,7 +70,7 @@ def _heights(records, context):
     figure, axes = new_figure(1, len(chosen), width=3.8, height=3.2)
     for column, (record, data) in enumerate(zip(chosen, fields, strict=True)):
         map_axes(axes[0][column], data["heights"], "height", "m")
-        axes[0][column].set_title(f"{record.label}\nRq {record.scalars['Rq'] * 1e9:.3g} nm")
+        axes[0][column].set_title(f"{record.label}\nSq {format_si(record.scalars['Sq'], 'm', digits=3)}")
     return figure
 
 
@@ -94,6 +97,6 @@ KIND = Kind(
     run=run,
     units={"size_x": "m", "size_y": "m"} | {name: unit for name, (unit, _) in SUMMARY.items() if unit},
     figures={"heights": _heights, "psd": _psd},
-    headline=("Rq", "Ra", "rms_slope", "summit_radius"),
+    headline=("Sq", "Sa", "Rq", "Ra", "rms_slope", "summit_radius"),
     renamed={"surface": "topography"},
 )
