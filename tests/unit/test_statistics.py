@@ -233,9 +233,9 @@ def test_profile_rq_is_surface_topographys_rq(shared_topographies):
 
     theirs = SurfaceTopography.read_topography(str(shared_topographies / "top-1.top")).detrend("height")
     ours = level(read_topography(shared_topographies / "top-1.top"), "plane")
-    rq_theirs = SurfaceTopography.Uniform.ScalarParameters.Rq(theirs) * 1e-9  # their heights in nm
-    assert statistics.profile_parameters(ours)["Rq"] == approx(rq_theirs, rel=1e-12)
-    assert statistics.rq(ours) == approx(SurfaceTopography.Uniform.ScalarParameters.Sq(theirs) * 1e-9, rel=1e-12)
+    theirs_parameters = SurfaceTopography.Uniform.ScalarParameters  # their heights in nm
+    assert statistics.profile_parameters(ours)["Rq"] == approx(theirs_parameters.Rq(theirs) * 1e-9, rel=1e-12)
+    assert statistics.rq(ours) == approx(theirs_parameters.Sq(theirs) * 1e-9, rel=1e-12)
 
 
 def test_sdr_of_a_tilted_plane_is_the_secant_less_one():

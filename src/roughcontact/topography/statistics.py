@@ -138,7 +138,9 @@ def _standardised_moment(z: np.ndarray, order: int, heights: np.ndarray) -> floa
 
 
 def rsk(topography: Topography) -> float:
-    """Skewness over every point (Ssk of a map, Rsk of a profile), dimensionless: ``mean(z**3) / Rq**3`` with z about the mean.
+    """Skewness over every point (Ssk of a map, Rsk of a profile), dimensionless.
+
+    ``mean(z**3) / Rq**3`` with z about the mean.
 
     Raises
     ------
@@ -149,7 +151,9 @@ def rsk(topography: Topography) -> float:
 
 
 def rku(topography: Topography) -> float:
-    """Kurtosis over every point (Sku of a map, Rku of a profile), dimensionless: ``mean(z**4) / Rq**4`` (3 for a Gaussian surface).
+    """Kurtosis over every point (Sku of a map, Rku of a profile), dimensionless.
+
+    ``mean(z**4) / Rq**4`` (3 for a Gaussian surface).
 
     Raises
     ------
