@@ -106,7 +106,7 @@ def test_file_without_size_asks_for_it_in_toml_words(tmp_path):
 
 def test_every_problem_is_reported_at_once(tmp_path):
     text = BASE.replace('"20 MPa"', '"20 MPaa"').replace('"polysilicon"', '"unobtainium"')
-    text = text.replace('hurst = 0.8', 'hurst = 0.8\nroughness = 3')
+    text = text.replace("hurst = 0.8", "hurst = 0.8\nroughness = 3")
     found, message = problems(tmp_path, text)
     fields = [f for f, _, _ in found]
     assert any(f.endswith("mean_pressure") for f in fields)
