@@ -108,7 +108,60 @@ def test_report_is_one_offline_page(finished, cli):
     assert page.startswith("<!DOCTYPE html>") and "Study complete" in page
     assert page.count("data:image/png;base64,") == 6
     assert "http://" not in page and "https://" not in page  # nothing fetched from elsewhere
-    assert "max_von_mises [Pa]" in page and "Provenance" in page
+    assert "Provenance" in page
+
+
+def _html_tables(page: str) -> list[list[list[str]]]:
+    """Every table of a page as rows of cell texts (header row first)."""
+    from html.parser import HTMLParser
+
+    class Tables(HTMLParser):
+        def __init__(self):
+            super().__init__()
+            self.tables, self.cell = [], None
+
+        def handle_starttag(self, tag, attrs):
+            if tag == "table":
+                self.tables.append([])
+            elif tag == "tr":
+                self.tables[-1].append([])
+            elif tag in ("td", "th"):
+                self.cell = ""
+
+        def handle_data(self, data):
+            if self.cell is not None:
+                self.cell += data
+
+        def handle_endtag(self, tag):
+            if tag in ("td", "th"):
+                self.tables[-1][-1].append(self.cell)
+                self.cell = None
+
+    parser = Tables()
+    parser.feed(page)
+    return parser.tables
+
+
+def test_report_tables_are_in_engineering_units_with_the_unit_beside_the_number(finished, cli):
+    cli("report", finished)
+    page = (finished / "report.html").read_text()
+    tables = _html_tables(page)
+    listed = [table for table in tables if table[0][:2] == ["quantity", "unit"]]
+    quantities = {row[0]: row[1:] for table in listed for row in table[1:]}
+    assert quantities["Sq"] == ["nm", "1"]  # generated to 1 nm exactly
+    assert quantities["size_x"] == ["µm", "2"]
+    assert quantities["max_von_mises_depth"] == ["nm", "10", "10"]
+    unit, *pressures = quantities["mean_pressure"]
+    assert unit == "MPa" and [float(v) for v in pressures] == pytest.approx([10, 40], rel=1e-6)
+    dimensional = [v for unit, *values in quantities.values() if unit for v in values]
+    assert len(dimensional) > 20 and not [v for v in dimensional if "e" in v]  # 2.81 (um), not 2.805e-06
+
+
+def test_report_captions_say_what_each_figure_shows(finished, cli):
+    cli("report", finished)
+    page = (finished / "report.html").read_text()
+    assert "Contact pressure (top) and gap (bottom)" in page
+    assert page.count("<figcaption><b>") == 6
 
 
 def test_plot_and_report_refuse_a_folder_without_a_study(tmp_path, cli):

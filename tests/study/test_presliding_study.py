@@ -90,10 +90,10 @@ def test_example_runs_end_to_end(cli, shrunk, tmp_path):
     assert float(measured[0]["mu"]) == pytest.approx(0.153, rel=2e-3)
     assert [m["source"] for m in measured[1:]] == [f"simulated: case {rows[0]['case']}"]
 
-    for name in ("loops", "stick_slip", "lateral_stiffness"):
+    for name in ("path", "pressure", "loops", "stick_slip", "lateral_stiffness"):  # Figs. 6, 8-9, 11-15
         assert (out / "figures" / f"presliding_{name}.png").stat().st_size > 10_000
     report = (out / "report.html").read_text()
-    assert report.count("data:image/png;base64") == 3  # the three figures, embedded
+    assert report.count("data:image/png;base64") == 5  # the five figures, embedded
     assert "<h3>lateral stiffness</h3>" in report and "<h3>measured loop</h3>" in report
 
     data = xr.load_dataset(next((out / "cases" / "presliding").glob("*.nc")))

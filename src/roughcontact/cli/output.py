@@ -9,14 +9,13 @@ for ``roughcontact run``; without it nothing is written. Either way it prints th
 from __future__ import annotations
 
 import json
-import math
 import sys
 from pathlib import Path
 from typing import Any
 
 from .._json import json_ready
 from ..errors import InputError
-from ..units import format_si
+from ..study.display import columns, shown, text_table
 from .options import CommandStudy
 
 
@@ -118,7 +117,7 @@ def run_command(command: CommandStudy, args) -> int:
             print(f"roughcontact: warning: {line}", file=sys.stderr)
         for name, rows in ((n, r) for a, n, r in tables if a == analysis.name):
             print(f"  table {name}:")
-            print("\n".join("    " + line for line in table_lines(rows)))
+            print("\n".join(table_lines(rows, indent="    ")))
     for problem in problems:
         print(f"roughcontact: table not made: {problem}", file=sys.stderr)
     if report is not None:
@@ -147,22 +146,14 @@ def _analysis_document(analysis, tables) -> dict[str, Any]:
     }
 
 
-def shown(value: Any, unit: str | None) -> str:
-    """Return a scalar as text: with its SI prefix and unit where it has one, labels as they are."""
-    if isinstance(value, bool) or value is None or isinstance(value, str):
-        return "-" if value is None or value == "" else str(value)
-    if isinstance(value, int) and not unit:
-        return str(value)
-    if isinstance(value, list):
-        return ", ".join(shown(v, unit) for v in value)
-    number = float(value)
-    if not math.isfinite(number):
-        return "-"
-    return format_si(number, unit) if unit else f"{number:.4g}"
-
-
 def summary_lines(analysis, kind) -> list[str]:
-    """Return an analysis' finished cases as lines: every scalar of one, or a table of the headline ones."""
+    """Return an analysis' finished cases as lines: every scalar of one, or a table of the headline ones.
+
+    Numbers in engineering units (:mod:`roughcontact.study.display`): beside the value for one
+    case, in the column header for several.
+    """
+    from ..study.outputs import headline_rows
+
     records = [r for r in analysis.records if r is not None]
     units = dict(kind.units)
     lines = [f"{analysis.name} ({kind.name}): {kind.summary}"]
@@ -173,34 +164,12 @@ def summary_lines(analysis, kind) -> list[str]:
             for name, value in records[0].scalars.items()
         ]
         return lines
-    names = [name for name in kind.headline if any(name in r.scalars for r in records)]
-    rows = []
-    for record in records:
-        row = {axis.rsplit(".", 1)[-1]: str(value) for axis, value in (record.data.get("axes") or {}).items()}
-        row |= {name: shown(record.scalars.get(name), units.get(name)) for name in names}
-        rows.append(row)
-    return lines + ["  " + line for line in table_lines(rows, formatted=True)]
+    rows = headline_rows(analysis)
+    if len({row["status"] for row in rows}) == 1:
+        rows = [{k: v for k, v in row.items() if k != "status"} for row in rows]
+    return lines + table_lines(rows, indent="  ")
 
 
-def table_lines(rows: list[dict[str, Any]], *, formatted: bool = False) -> list[str]:
-    """Rows as aligned text columns; numbers with 4 significant digits (with SI prefixes by a row's unit)."""
-    if not rows:
-        return []
-    columns = list(dict.fromkeys(key for row in rows for key in row))
-    if len(rows) > 1 and len({str(row.get("case")) for row in rows}) == 1:
-        columns = [c for c in columns if c != "case"]  # one case: its id says nothing here
-    cells = []
-    for row in rows:
-        unit = row.get("unit") if isinstance(row.get("unit"), str) else None
-        cells.append([_cell(row.get(c), unit, c, formatted) for c in columns])
-    widths = [max(len(c), *(len(r[i]) for r in cells)) for i, c in enumerate(columns)]
-    header = "  ".join(f"{c:>{w}}" for c, w in zip(columns, widths, strict=True))
-    return [header] + ["  ".join(f"{v:>{w}}" for v, w in zip(r, widths, strict=True)) for r in cells]
-
-
-def _cell(value: Any, unit: str | None, column: str, formatted: bool) -> str:
-    if formatted or isinstance(value, str | bool) or value is None:
-        return "" if value is None else str(value)
-    if column in ("paper", "this_case") or column.startswith(("printed_inputs", "ours")):
-        return shown(value, unit)
-    return shown(value, None)
+def table_lines(rows: list[dict[str, Any]], indent: str = "") -> list[str]:
+    """Rows as aligned text columns in engineering units (:func:`roughcontact.study.display.columns`)."""
+    return text_table(*columns(rows), indent=indent) if rows else []

@@ -13,13 +13,13 @@ import numpy as np
 
 from .._json import json_ready
 from ..errors import InputError
+from ..study.display import shown
 from ..topography import Topography
 from ..topography.io import MAX_FILLED, max_filled_allowing
 from ..topography.process import LEVELLING
 from ..topography.statistics import SUMMARY
 from ..units import format_si
 from .options import new_command, read_file
-from .output import shown
 
 
 def describe(topography: Topography, undefined=None) -> dict:

@@ -62,14 +62,15 @@ def _surface_energy(value: float | None, body: Material | None, field_name: str)
         raise InputError(
             field_name,
             "no surface energy given" + (f" and {body.name!r} has none." if body is not None else "."),
-            f"pass {field_name}= in J/m^2 (e.g. 0.05), or a Material with surface_energy.",
+            "give the body's surface energy (e.g. '50 mJ/m^2'; in Python SI, 0.05 J/m^2), "
+            "or a material that has one.",
         )
     value = float(value)
     if not (math.isfinite(value) and value > 0):
         raise InputError(
             field_name,
             f"{value!r} J/m^2 is not a positive surface energy.",
-            "surface energies are positive (tens of mJ/m^2 for oxides and silicon, e.g. 0.05).",
+            "surface energies are positive: tens of mJ/m^2 for oxides and silicon (0.05 J/m^2 in SI).",
         )
     return value
 

@@ -8,7 +8,7 @@ from matplotlib.figure import Figure
 
 from ..units import unit_factor
 from .contact import plot_von_mises
-from .layout import axes_for
+from .layout import axes_for, legend
 
 _BRANCH_STYLES = {"loading": "-", "unloading": "--"}
 _LOAD_UNIT, _AREA_UNIT = "µN", "µm²"  # fixed, in the units of paper 002's figures
@@ -55,7 +55,7 @@ def plot_load_interference(
         ax.plot(x, np.asarray(measured["force"]) / _LOAD_SCALE, "k.", ms=3, label="measured")
     ax.set_xlabel("interference ω/ω_c")
     ax.set_ylabel(f"load ({_LOAD_UNIT})")
-    ax.legend(fontsize="small")
+    legend(ax, fontsize="small")
     ax.grid(True, alpha=0.3)
     return fig, ax
 
@@ -70,7 +70,7 @@ def plot_area_load(curves: dict[str, dict], ax: Axes | None = None):
         ax.plot(load, area / _AREA_SCALE, "-o", ms=3, label=label)
     ax.set_xlabel(f"load ({_LOAD_UNIT})")
     ax.set_ylabel(f"real contact area ({_AREA_UNIT})")
-    ax.legend(fontsize="small")
+    legend(ax, fontsize="small")
     ax.grid(True, alpha=0.3)
     return fig, ax
 

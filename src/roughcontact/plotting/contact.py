@@ -7,7 +7,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ..units import prefixed_scale
-from .layout import axes_for
+from .layout import axes_for, legend
 
 
 def _map(ax: Axes, result, values: np.ndarray, label: str, cmap: str):
@@ -54,7 +54,7 @@ def plot_load_approach(curve: dict, ax: Axes | None = None, *, label: str | None
             ax.plot(approach[keep] / a_scale, force[keep] / f_scale, style, ms=3, label=name)
     ax.set_xlabel(f"approach ({a_unit})")
     ax.set_ylabel(f"force ({f_unit})")
-    ax.legend()
+    legend(ax)
     ax.grid(True, alpha=0.3)
     return fig, ax
 

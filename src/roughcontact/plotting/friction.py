@@ -6,13 +6,33 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import prefixed_scale
-from .layout import axes_for
+from .layout import axes_for, legend
+
+
+def draw_boxes(ax: Axes, data, positions, colours, width: float = 0.7) -> list:
+    """Draw one box per list of values (quartiles, whiskers min to max) with every value as a point.
+
+    The points (spread sideways a little so equal values stay apart) show what a box of few values
+    cannot: one scan per sample draws a point on a flat box. Returns the boxes (legend handles).
+    """
+    boxes = ax.boxplot(
+        data, positions=positions, whis=(0, 100), widths=width, patch_artist=True, medianprops={"color": "k"}
+    )
+    spread = np.random.default_rng(0)
+    for box, values, position, colour in zip(boxes["boxes"], data, positions, colours, strict=True):
+        box.set_facecolor(colour)
+        box.set_alpha(0.6)
+        values = np.asarray(values, dtype=float)
+        offsets = spread.uniform(-0.15, 0.15, values.size) * width
+        ax.plot(position + offsets, values, "o", color="k", markersize=3, alpha=0.7, zorder=3)
+    return boxes["boxes"]
 
 
 def plot_mu_boxes(comparison, ax: Axes | None = None):
     """Draw box plots of simulated and measured mu per sample (paper 000, Fig. 9); returns ``(fig, ax)``.
 
-    Boxes span the first to third quartile and the whiskers the minimum to maximum, as in the paper.
+    Boxes span the first to third quartile and the whiskers the minimum to maximum, as in the
+    paper; every value is drawn as a point on its box.
 
     Parameters
     ----------
@@ -31,16 +51,11 @@ def plot_mu_boxes(comparison, ax: Axes | None = None):
         data += [sample.simulated, sample.measured]
         positions += [3 * k + 0.6, 3 * k + 1.4]
         colours += ["tab:blue", "tab:orange"]
-    boxes = ax.boxplot(
-        data, positions=positions, whis=(0, 100), widths=0.7, patch_artist=True, medianprops={"color": "k"}
-    )
-    for box, colour in zip(boxes["boxes"], colours, strict=True):
-        box.set_facecolor(colour)
-        box.set_alpha(0.6)
+    boxes = draw_boxes(ax, data, positions, colours)
     ax.set_xticks([3 * k + 1 for k in range(len(comparison.samples))])
     ax.set_xticklabels([f"{s.sample}\np = {s.p_value:.2g}" for s in comparison.samples])
     ax.set_ylabel("coefficient of friction μ")
-    ax.legend(boxes["boxes"][:2], ["simulation", "measurement"])
+    ax.legend(boxes[:2], ["simulation", "measurement"])
     ax.set_title(f"simulated vs measured, Pearson r = {comparison.pearson_r:.2f}")
     return fig, ax
 
@@ -60,7 +75,7 @@ def plot_mu_means(comparison, ax: Axes | None = None):
     ax.set_xticks(x)
     ax.set_xticklabels([s.sample for s in comparison.samples])
     ax.set_ylabel("mean coefficient of friction μ (± 1 s.d.)")
-    ax.legend()
+    legend(ax)
     return fig, ax
 
 
@@ -91,5 +106,5 @@ def plot_friction_vs_load(sweep, ax: Axes | None = None, *, crossover: float | N
         ax.axvline(crossover / scale, color="grey", lw=0.8, label=f"crossover {crossover / scale:.3g} {unit}")
     ax.set_xlabel(f"normal load ({unit})")
     ax.set_ylabel(f"friction force ({unit})")
-    ax.legend()
+    legend(ax)
     return fig, ax

@@ -6,7 +6,7 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import unit_factor
-from .layout import axes_for
+from .layout import axes_for, legend
 
 _SEGMENT_STYLES = {"loading": "C0", "hold": "C2", "unloading": "C1"}
 _DEPTH_UNIT, _LOAD_UNIT, _MODULUS_UNIT = "nm", "mN", "GPa"  # fixed, as in paper 001 (Fig. 7, Table 2)
@@ -96,6 +96,6 @@ def plot_indentation_record(data, scalars: dict, *, ax: Axes | None = None, titl
     ax.set_title(f"{title}\n{moduli}" if title else moduli, fontsize="medium")
     ax.set_xlim(left=0.0)
     ax.set_ylim(bottom=0.0)
-    ax.legend(fontsize="small", loc="upper left")
+    legend(ax, fontsize="small", loc="upper left")
     ax.grid(True, alpha=0.3)
     return fig, ax

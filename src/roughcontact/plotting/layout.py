@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
@@ -26,6 +28,26 @@ CLIP_PERCENTILES = (0.5, 99.5)
 """Percentiles at the ends of the colour scale of height and pressure maps (one spike sets nothing)."""
 
 
+@dataclass(frozen=True)
+class ColourScale:
+    """The ends of a colour bar [SI] and what the reader is told about them.
+
+    Attributes
+    ----------
+    low, high : float
+        Values at the two ends of the colour map (SI).
+    words : str
+        What the ends are, for the colour bar's label ("" when they are the data's own range).
+    extend : str
+        Matplotlib's ``extend`` of the colour bar: the ends that values beyond the scale reach.
+    """
+
+    low: float
+    high: float
+    words: str = ""
+    extend: str = "neither"
+
+
 def clipped_limits(
     values: np.ndarray, percentiles: tuple[float, float] = CLIP_PERCENTILES
 ) -> tuple[float, float]:
@@ -35,10 +57,66 @@ def clipped_limits(
     if finite.size == 0:
         return 0.0, 1.0
     low, high = (float(v) for v in np.percentile(finite, percentiles))
-    return (low, high) if high > low else (low - 0.5, low + 0.5)
+    if high > low:
+        return low, high
+    half = 0.5 * abs(low) or 0.5
+    return low - half, low + half
+
+
+def colour_scale(
+    *fields, percentiles: tuple[float, float] = CLIP_PERCENTILES, from_zero: bool = False
+) -> ColourScale:
+    """Return one colour scale for every field given (values pooled), clipped so no spike sets it.
+
+    Parameters
+    ----------
+    *fields : array_like
+        The fields of one figure's panels (NaN ignored).
+    percentiles : (float, float)
+        Percentiles at the two ends ((0, 100): the full range).
+    from_zero : bool
+        For a field that is zero or positive and zero over much of the map (contact pressure,
+        the gap, stress under a few contacts): the scale starts at 0 and ends at the upper
+        percentile of the nonzero values, so the contacts, not the empty area, set it.
+    """
+    values = np.concatenate([np.ravel(np.asarray(f, dtype=float)) for f in fields])
+    if from_zero:
+        positive = values[values > 0]
+        high = clipped_limits(positive, (0, percentiles[1]))[1] if positive.size else 1.0
+        clipped = percentiles[1] < 100 and positive.size and positive.max() > high
+        words = f"top: {percentiles[1]:g}th percentile of nonzero values" if clipped else ""
+        return ColourScale(0.0, high, words, "max" if clipped else "neither")
+    low, high = clipped_limits(values, percentiles)
+    if tuple(percentiles) == (0, 100):
+        return ColourScale(low, high)
+    return ColourScale(low, high, clip_words(percentiles), "both")
 
 
 def clip_words(percentiles: tuple[float, float]) -> str:
     """Say on a colour bar what its ends are (``"colours clipped to 0.5-99.5 %"``)."""
     low, high = percentiles
     return "full range" if (low, high) == (0, 100) else f"colours clipped to {low:g}-{high:g} percentile"
+
+
+def legend(ax: Axes, **options) -> None:
+    """Add a legend of what the axes show: labelled lines with at least one drawable point.
+
+    A line whose points are all NaN (a quantity undefined for every case), or all non-positive
+    on a logarithmic axis, draws nothing and gets no entry; with no entry left, no legend.
+    ``options`` go to :meth:`matplotlib.axes.Axes.legend`.
+    """
+    kept = [(h, label) for h, label in zip(*ax.get_legend_handles_labels(), strict=True) if _drawn(ax, h)]
+    if kept:
+        ax.legend(*zip(*kept, strict=True), **options)
+
+
+def _drawn(ax: Axes, handle) -> bool:
+    if not hasattr(handle, "get_xydata"):
+        return True  # patches, collections: drawn as given
+    x, y = np.asarray(handle.get_xdata(), dtype=float), np.asarray(handle.get_ydata(), dtype=float)
+    shown = np.isfinite(x) & np.isfinite(y)
+    if ax.get_xscale() == "log":
+        shown &= x > 0
+    if ax.get_yscale() == "log":
+        shown &= y > 0
+    return bool(shown.any())

@@ -1,6 +1,8 @@
 """Figures of the pre-sliding analysis of paper 001: hysteresis loops, stick/slip maps, lateral stiffness.
 
 * :func:`plot_hysteresis_loops` - friction loops, simulated and measured (paper 001 Figs. 13-14);
+* :func:`plot_displacement_path` - the tangential displacement programme (Fig. 6);
+* :func:`plot_pressure_maps` - contact pressure, whole field and zoomed-in view (Figs. 8-9);
 * :func:`plot_stick_slip_maps` - normalised shear sqrt(qx^2 + qy^2)/(mu p) maps (Figs. 11-12);
 * :func:`plot_lateral_stiffness` - K_L at points A, B, C vs normal load with Mindlin (Fig. 15);
 * :func:`plot_loop_analysis` - a loop's record, its last loop, the eq. 9 fits and the points (Fig. 10).
@@ -19,10 +21,11 @@ import numpy as np
 from matplotlib import colormaps
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
+from matplotlib.patches import Rectangle
 
 from ..errors import InputError
 from ..units import prefixed_scale, unit_factor
-from .layout import axes_for
+from .layout import axes_for, colour_scale, legend
 
 _LENGTH_UNIT, _FORCE_UNIT, _STIFFNESS_UNIT = "µm", "mN", "mN/µm"  # fixed, as in paper 001 Figs. 13-15
 _LENGTH_SCALE, _FORCE_SCALE, _STIFFNESS_SCALE = (
@@ -91,8 +94,33 @@ def plot_hysteresis_loops(
     if title:
         ax.set_title(title)
     if ax.get_lines():
-        ax.legend(fontsize="small")
+        legend(ax, fontsize="small")
     return fig
+
+
+def _panel_extent(box, label: str) -> tuple[float, float, float, float]:
+    try:
+        x0, x1, y0, y1 = (float(v) for v in box)
+    except (TypeError, ValueError):
+        raise InputError("extent", f"{box!r} for {label!r}.", "give (xmin, xmax, ymin, ymax) in m.") from None
+    return x0, x1, y0, y1
+
+
+def _centres(values: np.ndarray, box, scale: float) -> tuple[np.ndarray, np.ndarray]:
+    """Pixel-centre coordinates (in the display unit ``scale``) of a map drawn over ``box``."""
+    x0, x1, y0, y1 = box
+    ny, nx = values.shape
+    return (
+        x0 / scale + (np.arange(nx) + 0.5) * (x1 - x0) / scale / nx,
+        y0 / scale + (np.arange(ny) + 0.5) * (y1 - y0) / scale / ny,
+    )
+
+
+def _outline(ax: Axes, values: np.ndarray, inside: np.ndarray, box, scale: float, colour: str) -> None:
+    """Draw the outline of the contact (the pixels ``inside``) as a thin line."""
+    if inside.any() and (~inside).any():
+        xs, ys = _centres(values, box, scale)
+        ax.contour(xs, ys, inside.astype(float), levels=[0.5], colors=colour, linewidths=0.7)
 
 
 def plot_stick_slip_maps(
@@ -101,13 +129,15 @@ def plot_stick_slip_maps(
     *,
     zoom: tuple[float, float, float, float] | None = None,
     columns: int = 3,
-    cmap: str = "jet",
+    cmap: str = "viridis",
 ) -> Figure:
     """Draw maps of the normalised shear sqrt(qx^2 + qy^2)/(mu p) (paper 001 Figs. 11-12).
 
-    The colour scale is fixed to 0..1: values below 1 stick, 1 is slip (values within
-    :data:`SLIP_LEVEL` of 1 are outlined by a white contour). NaN (outside the contact) is
-    drawn blank. Each panel title gives the slip fraction of the contact area.
+    The colour scale is fixed to 0..1 (a perceptually uniform map, so equal steps of stick read
+    as equal steps of colour; the paper's rainbow is ``cmap="jet"``): values below 1 stick, 1 is
+    slip. The contact's outline is drawn in black and the boundary of the slip zone (values
+    within :data:`SLIP_LEVEL` of 1) in white. NaN (outside the contact) is blank. Each panel
+    title gives the slip fraction of the contact area.
 
     Parameters
     ----------
@@ -144,13 +174,8 @@ def plot_stick_slip_maps(
         values = np.asarray(maps[label], dtype=float)
         if values.ndim != 2:
             raise InputError("maps", f"map {label!r} has shape {values.shape}.", "give 2-D arrays.")
-        box = extent[label] if isinstance(extent, Mapping) else extent
-        try:
-            x0, x1, y0, y1 = (float(v) for v in box)
-        except (TypeError, ValueError):
-            raise InputError(
-                "extent", f"{box!r} for {label!r}.", "give (xmin, xmax, ymin, ymax) in m."
-            ) from None
+        box = _panel_extent(extent[label] if isinstance(extent, Mapping) else extent, label)
+        x0, x1, y0, y1 = box
         scale, unit = prefixed_scale(max(abs(x1 - x0), abs(y1 - y0)), "m")
         image = ax.imshow(
             np.ma.masked_invalid(values),
@@ -163,10 +188,9 @@ def plot_stick_slip_maps(
         )
         finite = np.isfinite(values)
         slipping = finite & (values >= SLIP_LEVEL)
+        _outline(ax, values, finite, box, scale, "black")
         if slipping.any() and (~slipping & finite).any():
-            ny, nx = values.shape
-            xs = x0 / scale + (np.arange(nx) + 0.5) * (x1 - x0) / scale / nx
-            ys = y0 / scale + (np.arange(ny) + 0.5) * (y1 - y0) / scale / ny
+            xs, ys = _centres(values, box, scale)
             ax.contour(
                 xs, ys, np.where(finite, values, 0.0), levels=[SLIP_LEVEL], colors="white", linewidths=0.6
             )
@@ -181,6 +205,116 @@ def plot_stick_slip_maps(
         ax.set_visible(False)
     colourbar = fig.colorbar(image, ax=list(axes[: len(labels)]), shrink=0.9)
     colourbar.set_label("√(q_x² + q_y²) / (μ p)   (1 = slip)")
+    fig.suptitle("black: outline of the contact; white: edge of the slip zone", fontsize="small")
+    return fig
+
+
+def plot_pressure_maps(
+    maps: Mapping[str, np.ndarray],
+    extent,
+    *,
+    zoom: tuple[float, float, float, float],
+    cmap: str = "magma",
+) -> Figure:
+    """Draw contact pressure maps, the whole field beside a zoomed-in view (paper 001 Figs. 8-9).
+
+    One row per map: left the whole computed field with the zoomed box drawn on it, right the
+    box. Every panel shares one colour scale, from 0 to the 99.5th percentile of the nonzero
+    pressures of all the maps (stated on the colour bar), and the contact outline is drawn on the
+    zoomed view (white).
+
+    Parameters
+    ----------
+    maps : dict of str to 2-D array
+        Label (e.g. ``"POM 25 mN"``) to the pressure [Pa], rows along y.
+    extent : (xmin, xmax, ymin, ymax) in m, or dict of label to it
+        Physical extent of each map.
+    zoom : (xmin, xmax, ymin, ymax) in m
+        The zoomed-in box (the paper: 0.2 mm x 0.2 mm at the centre).
+    cmap : str
+        Colour map.
+
+    Returns
+    -------
+    Figure
+    """
+    if not maps:
+        raise InputError("maps", "is empty.", "pass {label: 2-D array}.")
+    shared = colour_scale(*maps.values(), from_zero=True)
+    factor, unit = prefixed_scale(shared.high, "Pa")
+    fig = Figure(figsize=(7.6, 3.4 * len(maps)), layout="constrained")
+    axes = fig.subplots(len(maps), 2, squeeze=False)
+    image = None
+    for (whole, zoomed), (label, values) in zip(axes, maps.items(), strict=True):
+        values = np.asarray(values, dtype=float)
+        box = _panel_extent(extent[label] if isinstance(extent, Mapping) else extent, label)
+        scale, length = prefixed_scale(max(box[1] - box[0], box[3] - box[2]), "m")
+        for ax in (whole, zoomed):
+            image = ax.imshow(
+                values / factor,
+                origin="lower",
+                extent=tuple(v / scale for v in box),
+                cmap=cmap,
+                vmin=0.0,
+                vmax=shared.high / factor,
+                interpolation="nearest",
+            )
+            ax.set_xlabel(f"x ({length})")
+            ax.set_ylabel(f"y ({length})")
+        within = (max(zoom[0], box[0]), min(zoom[1], box[1]), max(zoom[2], box[2]), min(zoom[3], box[3]))
+        x0, x1, y0, y1 = (v / scale for v in within)  # the zoom, inside the computed field
+        whole.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, edgecolor="cyan", linewidth=1.0))
+        whole.set_title(f"{label}: whole field", fontsize="medium")
+        _outline(zoomed, values, values > 0, box, scale, "white")
+        zoomed.set_xlim(x0, x1)
+        zoomed.set_ylim(y0, y1)
+        side = prefixed_scale(within[1] - within[0], "m")
+        width, height = (within[1] - within[0]) / side[0], (within[3] - within[2]) / side[0]
+        zoomed.set_title(f"zoom {width:.3g} x {height:.3g} {side[1]}", fontsize="medium")
+    label = f"contact pressure ({unit})" + (f"\n{shared.words}" if shared.words else "")
+    fig.colorbar(image, ax=list(axes.ravel()), extend=shared.extend, shrink=0.9, label=label)
+    return fig
+
+
+def plot_displacement_path(
+    paths: Mapping[str, np.ndarray],
+    *,
+    last_loop: tuple[int, int] | None = None,
+    points: Mapping[str, int] | None = None,
+    ax: Axes | None = None,
+) -> Figure:
+    """Draw the tangential displacement programme against the step (paper 001 Fig. 6).
+
+    Parameters
+    ----------
+    paths : dict of str to 1-D array
+        Label to delta_x [m] at each step (step 0 the unloaded start). Cases that share one
+        programme need only one entry.
+    last_loop : (start, stop), optional
+        Steps of the analysed (last) loop, shaded.
+    points : dict of str to int, optional
+        Steps of the points A, B, C of the last loop, marked on the first path.
+    ax : matplotlib Axes, optional
+        Axes to draw on.
+
+    Returns
+    -------
+    Figure
+    """
+    fig, ax = axes_for(ax, figsize=(6.0, 3.4))
+    for label, delta in paths.items():
+        delta = np.asarray(delta, dtype=float)
+        ax.plot(np.arange(delta.size), delta / _LENGTH_SCALE, "-", linewidth=1.5, label=label)
+    if last_loop is not None:
+        ax.axvspan(last_loop[0], last_loop[1] - 1, color="0.9", zorder=0, label="last loop (analysed)")
+    first = np.asarray(next(iter(paths.values())), dtype=float)
+    for name, step in (points or {}).items():
+        colour = POINT_COLOURS.get(name, "black")
+        ax.plot(step, first[step] / _LENGTH_SCALE, "o", color=colour, label=f"point {name} (step {step})")
+    ax.set_xlabel("step")
+    ax.set_ylabel(f"tangential displacement δ_x ({_LENGTH_UNIT})")
+    if len(paths) > 1 or last_loop is not None or points:
+        legend(ax, fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0))  # beside the path
     return fig
 
 
@@ -275,7 +409,7 @@ def plot_lateral_stiffness(
     if title:
         ax.set_title(title)
     if ax.get_lines():
-        ax.legend(fontsize="x-small", ncol=2)
+        legend(ax, fontsize="x-small", ncol=2)
     return fig
 
 
@@ -340,5 +474,5 @@ def plot_loop_analysis(
     ax.set_xlabel(f"tangential displacement δ_x ({_LENGTH_UNIT})")
     ax.set_ylabel(f"friction force F_x ({_FORCE_UNIT})")
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small", loc="center")  # inside the loop, where nothing is drawn
+    legend(ax, fontsize="small", loc="center")  # inside the loop, where nothing is drawn
     return fig

@@ -11,26 +11,58 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import prefixed_scale
+from .layout import ColourScale, colour_scale
 
 
 def map_axes(
-    ax: Axes, field, label: str, unit: str, *, cmap: str = "viridis", symmetric: bool = False
-) -> None:
+    ax: Axes,
+    field,
+    label: str,
+    unit: str,
+    *,
+    cmap: str = "viridis",
+    scale: ColourScale | None = None,
+    colorbar: bool = True,
+):
     """Draw a 2D field (``xarray.DataArray`` on x, y [m]) as a map with a colour bar in readable units.
 
     ``unit`` is the field's unprefixed SI unit (``"Pa"``, ``"m"``, ``"N/m"``, ``""``); the colour bar
-    shows it with the prefix :func:`roughcontact.units.prefixed_scale` chooses for the largest value.
+    shows it with the prefix :func:`roughcontact.units.prefixed_scale` chooses for the larger end.
+    ``scale`` gives the ends (one scale for every panel of a figure); without it the field's own
+    0.5-99.5 percentiles (:func:`~roughcontact.plotting.layout.colour_scale`). The colour bar says
+    when its ends clip the data. With ``colorbar=False`` none is drawn: the caller draws one for
+    several panels of the same scale (:func:`shared_colorbar`). Returns the drawn mesh.
     """
     x, y = np.asarray(field["x"]), np.asarray(field["y"])
-    values = np.asarray(field).T
-    largest = float(np.nanmax(np.abs(values))) or 1.0
-    scale, shown = prefixed_scale(largest, unit)
+    values = np.asarray(field, dtype=float).T
+    scale = scale or colour_scale(values)
+    factor, _ = _unit(scale, unit)
     size_scale, size_unit = prefixed_scale(max(x.max() - x.min(), y.max() - y.min()) or 1e-9, "m")
-    limits = {"vmin": -largest / scale, "vmax": largest / scale} if symmetric else {}
     image = ax.pcolormesh(
-        x / size_scale, y / size_scale, values / scale, cmap=cmap, shading="auto", rasterized=True, **limits
+        x / size_scale,
+        y / size_scale,
+        values / factor,
+        cmap=cmap,
+        shading="auto",
+        rasterized=True,
+        vmin=scale.low / factor,
+        vmax=scale.high / factor,
     )
     ax.set_aspect("equal")
     ax.set_xlabel(f"x ({size_unit})")
     ax.set_ylabel(f"y ({size_unit})")
-    ax.figure.colorbar(image, ax=ax, label=f"{label} ({shown})" if shown else label)
+    if colorbar:
+        shared_colorbar(image, [ax], label, unit, scale)
+    return image
+
+
+def _unit(scale: ColourScale, unit: str) -> tuple[float, str]:
+    return prefixed_scale(max(abs(scale.low), abs(scale.high)) or 1.0, unit)
+
+
+def shared_colorbar(image, axes: list[Axes], label: str, unit: str, scale: ColourScale) -> None:
+    """One colour bar for ``axes`` drawn with ``scale``: the label, its prefixed unit, what the ends clip."""
+    shown = _unit(scale, unit)[1]
+    text = f"{label} ({shown})" if shown else label
+    text += f"\n{scale.words}" if scale.words else ""
+    image.figure.colorbar(image, ax=axes, extend=scale.extend, label=text)

@@ -14,7 +14,7 @@ from matplotlib.figure import Figure
 from ..topography import Topography
 from ..topography.statistics import psd_1d, psd_radial
 from ..units import prefixed_scale
-from .layout import CLIP_PERCENTILES, axes_for, clip_words, clipped_limits
+from .layout import CLIP_PERCENTILES, axes_for, colour_scale
 
 
 def _title(topography: Topography) -> str:
@@ -59,7 +59,8 @@ def plot_heights(
         heights[undefined] = np.nan
     heights -= np.nanmean(heights)
     size_scale, size_label = prefixed_scale(max(topography.size), "m")
-    low, high = clipped_limits(heights, percentiles)
+    scale = colour_scale(heights, percentiles=percentiles)
+    low, high = scale.low, scale.high
     height_scale, height_label = prefixed_scale(max(abs(low), abs(high)) or 1e-9, "m")
     coords = [c / size_scale for c in topography.coordinates()]
     if topography.dim == 1:
@@ -79,7 +80,8 @@ def plot_heights(
         )
         ax.set_aspect("equal")
         ax.set_ylabel(f"y ({size_label})")
-        fig.colorbar(image, ax=ax, extend="both", label=f"height ({height_label}), {clip_words(percentiles)}")
+        words = f", {scale.words}" if scale.words else ""
+        fig.colorbar(image, ax=ax, extend=scale.extend, label=f"height ({height_label}){words}")
     ax.set_xlabel(f"x ({size_label})")
     title = _title(topography)
     if undefined is not None and undefined.any():

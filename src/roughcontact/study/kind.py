@@ -9,7 +9,8 @@ A *kind* (``model = "normal"`` in a study file) adapts one of roughcontact's mod
   ``xarray.Dataset`` of fields and curves; it runs on a Dask worker as well as in-process, so it
   takes and returns only picklable values;
 * ``figures`` and ``tables``: drawn and written from *stored* case records only, so
-  ``roughcontact plot OUT/`` re-draws them without solving anything again.
+  ``roughcontact plot OUT/`` re-draws them without solving anything again. Each figure function
+  carries the caption the report prints under it (:func:`caption`).
 """
 
 from __future__ import annotations
@@ -161,6 +162,32 @@ FigureFunction = Callable[[Sequence[CaseRecord], FigureContext], Any]
 
 TableFunction = Callable[[Sequence[CaseRecord], FigureContext], list[dict[str, Any]] | None]
 """Derives one table (a list of rows) from the finished cases; returns None to skip."""
+
+
+def caption(text: str) -> Callable[[FigureFunction], FigureFunction]:
+    """Give a figure function the caption the report prints under its figure.
+
+    The caption says what is shown, for a reader who has not seen the code: the quantities, the
+    cases drawn, the colour scales. ``figure_caption`` reads it back.
+
+    Examples
+    --------
+    >>> @caption("Real contact area against load.")
+    ... def area(records, context): ...
+    >>> figure_caption(area)
+    'Real contact area against load.'
+    """
+
+    def mark(function: FigureFunction) -> FigureFunction:
+        function.caption = text  # type: ignore[attr-defined]
+        return function
+
+    return mark
+
+
+def figure_caption(function: FigureFunction) -> str:
+    """Return the caption of a figure function (see :func:`caption`), "" when it has none."""
+    return getattr(function, "caption", "")
 
 
 @dataclass(frozen=True)

@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError
+from .display import header
 from .kind import CaseRecord, FigureContext, Kind
 from .schema import STORED
 from .store import read_record, replacing, write_table
@@ -93,8 +94,14 @@ def read_study(folder: str | Path) -> tuple[dict[str, Any], list[StoredAnalysis]
     return document, analyses
 
 
-def _header(name: str, unit: str | None) -> str:
-    return f"{name} [{unit}]" if unit else name
+def axis_columns(record: CaseRecord, units: dict[str, str]) -> dict[str, Any]:
+    """Return the swept values of a case (SI) under their stored headers; sample and replicate left out."""
+    axis_units = record.data.get("axes_units") or {}
+    return {
+        header(axis, axis_units.get(axis) or units.get(axis)): value
+        for axis, value in (record.data.get("axes_si") or {}).items()
+        if axis not in ("sample", "replicate")
+    }
 
 
 def result_rows(analyses: list[StoredAnalysis]) -> list[dict[str, Any]]:
@@ -110,18 +117,43 @@ def result_rows(analyses: list[StoredAnalysis]) -> list[dict[str, Any]]:
             row["status"] = record["status"]
             row["sample"] = record.parameters.get("sample", "")
             row["replicate"] = record.parameters.get("replicate", 0)
-            axis_units = record.data.get("axes_units") or {}
-            for axis, value in (record.data.get("axes_si") or {}).items():
-                if axis not in ("sample", "replicate"):
-                    row[_header(axis, axis_units.get(axis) or units.get(axis))] = value
+            row |= axis_columns(record, units)
             for name, value in record.scalars.items():
-                header = _header(name, units.get(name))
-                if header in row:  # a swept key that is also a result (mean_pressure): keep both
-                    header = _header(f"{name} (result)", units.get(name))
-                row[header] = value
+                title = header(name, units.get(name))
+                if title in row:  # a swept key that is also a result (mean_pressure): keep both
+                    title = header(f"{name} (result)", units.get(name))
+                row[title] = value
             row["seconds"] = record.data.get("seconds")
             row["error"] = record.data.get("error") or ""
             rows.append(row)
+    return rows
+
+
+def headline_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
+    """One row per case for a reader: its sample, swept values, the kind's headline scalars, status.
+
+    SI values under stored headers (:func:`~roughcontact.study.display.header`), to be shown
+    through :func:`~roughcontact.study.display.columns`. A headline quantity that is also swept
+    (the mean pressure of a pressure sweep) shows the solved value. Cases not yet run are
+    ``pending``, failed ones have no values.
+    """
+    units = dict(analysis.kind.units)
+    present = {n for r in analysis.records if r is not None for n in r.scalars}
+    headline = [n for n in analysis.kind.headline if n in present]
+    replicated = any(r is not None and r.parameters.get("replicate") for r in analysis.records)
+    rows = []
+    for record in analysis.records:
+        if record is None:
+            rows.append({"status": "pending"})
+            continue
+        row: dict[str, Any] = {}
+        if record.parameters.get("sample"):
+            row["sample"] = record.parameters["sample"]
+        if replicated:
+            row["replicate"] = record.parameters.get("replicate", 0)
+        row |= axis_columns(record, units)
+        row |= {header(name, units.get(name)): record.scalars.get(name) for name in headline}
+        rows.append(row | {"status": record["status"]})
     return rows
 
 

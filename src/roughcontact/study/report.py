@@ -15,9 +15,12 @@ from typing import Any
 
 from ..topography.process import LEVELLING
 from ..units import format_si
+from .display import columns, number, scaled
+from .kind import figure_caption
 from .outputs import (
     StoredAnalysis,
     draw_figures,
+    headline_rows,
     read_study,
     result_rows,
     warning_lines,
@@ -31,7 +34,7 @@ body { font-family: system-ui, sans-serif; margin: 2em auto; max-width: 75em; co
 h1 { margin-bottom: 0.2em; } h2 { border-bottom: 1px solid #ccc; padding-bottom: 0.2em; margin-top: 2em; }
 table { border-collapse: collapse; margin: 0.8em 0; font-size: 0.85em; }
 th, td { border: 1px solid #ddd; padding: 0.25em 0.5em; text-align: right; }
-th { background: #f3f3f3; } td.text { text-align: left; }
+th { background: #f3f3f3; } td.text, th.text { text-align: left; }
 .failed { color: #a00; } .pending { color: #a60; } .done { color: #070; }
 figure { margin: 1em 0; } figure img { max-width: 100%; border: 1px solid #eee; }
 pre { background: #f7f7f7; padding: 0.8em; overflow-x: auto; font-size: 0.85em; }
@@ -39,44 +42,56 @@ pre { background: #f7f7f7; padding: 0.8em; overflow-x: auto; font-size: 0.85em; 
 """
 
 
-def _cell(value: Any) -> str:
-    if value is None or value == "":
-        return "<td></td>"
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        return f'<td class="text">{html.escape(str(value))}</td>'
-    if isinstance(value, bool) or str(value) in ("True", "False"):
-        return f'<td class="text">{html.escape(str(value))}</td>'
-    if number.is_integer() and abs(number) < 1e6:
-        return f"<td>{int(number)}</td>"
-    return f"<td>{number:.4g}</td>"
+TRANSPOSED_UP_TO = 8
+"""Analyses of up to this many cases list every quantity as a row, one column per case."""
+
+
+def _html_table(titles: list[str], cells: list[list[str]], text_columns: set[int] = frozenset()) -> str:
+    head = "".join(
+        f'<th class="text">{html.escape(t)}</th>' if i in text_columns else f"<th>{html.escape(t)}</th>"
+        for i, t in enumerate(titles)
+    )
+    body = "".join(
+        "<tr>"
+        + "".join(
+            f'<td class="text {html.escape(c) if titles[i] == "status" else ""}">{html.escape(c)}</td>'
+            if i in text_columns or titles[i] == "status"
+            else f"<td>{html.escape(c)}</td>"
+            for i, c in enumerate(row)
+        )
+        + "</tr>"
+        for row in cells
+    )
+    return f'<div class="scroll"><table><tr>{head}</tr>{body}</table></div>'
 
 
 def _table(rows: list[dict[str, Any]], drop: tuple[str, ...] = ()) -> str:
+    """Rows (SI under stored headers) as an HTML table in engineering units, units in the headers."""
     if not rows:
         return "<p>(no rows)</p>"
-    columns = [c for c in dict.fromkeys(k for row in rows for k in row) if c not in drop]
-    columns = [c for c in columns if any(row.get(c) not in (None, "") for row in rows)]
-    head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
-    body = []
-    for row in rows:
-        status = row.get("status", "")
-        cells = "".join(
-            f'<td class="text {html.escape(str(status))}">{html.escape(str(status))}</td>'
-            if c == "status"
-            else _cell(row.get(c))
-            for c in columns
-        )
-        body.append(f"<tr>{cells}</tr>")
-    return f'<div class="scroll"><table><tr>{head}</tr>{"".join(body)}</table></div>'
+    titles, cells = columns([{k: v for k, v in row.items() if k not in drop} for row in rows])
+    text = {i for i, t in enumerate(titles) if not any(number(row[i]) is not None for row in cells)}
+    return _html_table(titles, cells, text)
 
 
-def _image(path: Path) -> str:
+def _quantities(records: list, units: dict[str, str], caption: str) -> str:
+    """Every scalar of up to a few cases as rows, in engineering units per row (unit in its own column)."""
+    names = list(dict.fromkeys(name for record in records for name in record.scalars))
+    titles = ["quantity", "unit"] + (["value"] if len(records) == 1 else [r.label for r in records])
+    cells = []
+    for name in names:
+        values = [record.scalars.get(name) for record in records]
+        label, shown = scaled(values, units.get(name)) or ("", [str(v) for v in values])
+        cells.append([name, label, *shown])
+    return f"<p>{html.escape(caption)}</p>" + _html_table(titles, cells, {0, 1})
+
+
+def _image(path: Path, caption: str) -> str:
     data = base64.b64encode(path.read_bytes()).decode()
-    caption = html.escape(path.stem.replace("_", " "))
-    image = f'<img alt="{caption}" src="data:image/png;base64,{data}">'
-    return f"<figure>{image}<figcaption>{caption}</figcaption></figure>"
+    name = html.escape(path.stem.replace("_", " "))
+    image = f'<img alt="{name}" src="data:image/png;base64,{data}">'
+    words = f"<b>{html.escape(path.name)}</b>. {html.escape(caption)}" if caption else f"<b>{name}</b>"
+    return f"<figure>{image}<figcaption>{words}</figcaption></figure>"
 
 
 def preparation_line(name: str, prepared: dict[str, Any]) -> str:
@@ -94,6 +109,24 @@ def preparation_line(name: str, prepared: dict[str, Any]) -> str:
     return f"{name}: {prepared['file']}, {grid} points, {size}; {words}; {undefined}."
 
 
+def _cases(analysis: StoredAnalysis, rows: list[dict]) -> list[str]:
+    """Return the cases' table(s): every quantity of a few cases, or the headline ones, the rest folded."""
+    units = dict(analysis.kind.units)
+    finished = analysis.finished
+    if finished and len(rows) <= TRANSPOSED_UP_TO:
+        caption = "Every result of the case." if len(finished) == 1 else "Every result, one column per case."
+        parts = [_quantities(finished, units, caption)]
+        if len(finished) < len(rows):
+            parts.append(_table(headline_rows(analysis)))
+        return parts
+    return [
+        _table(headline_rows(analysis)),
+        "<details><summary>Every result of every case (as in results.csv)</summary>",
+        _table(rows, drop=("analysis", "model", "error")),
+        "</details>",
+    ]
+
+
 def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) -> str:
     counts: dict[str, int] = {}
     for row in rows:
@@ -104,7 +137,7 @@ def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) 
         + ", ".join(f'<span class="{s}">{n} {s}</span>' for s, n in counts.items())
         + (f"; swept: {html.escape(', '.join(analysis.sweep_axes))}" if analysis.sweep_axes else "")
         + "</p>",
-        _table(rows, drop=("analysis", "model", "error")),
+        *_cases(analysis, rows),
     ]
     for path in sorted((folder / "tables").glob(f"{analysis.name}_*.csv")):
         parts.append(f"<h3>{html.escape(path.stem.removeprefix(analysis.name + '_').replace('_', ' '))}</h3>")
@@ -112,18 +145,18 @@ def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) 
     for name in analysis.figures:
         path = folder / "figures" / f"{analysis.name}_{name}.png"
         if path.exists():
-            parts.append(_image(path))
+            parts.append(_image(path, figure_caption(analysis.kind.figures[name])))
     warnings = warning_lines(analysis)
     if warnings:
         parts.append("<h3>Outside the model's range</h3><ul>")
         parts += [f'<li class="pending">{html.escape(line)}</li>' for line in warnings]
         parts.append("</ul>")
-    failed = [row for row in rows if row["status"] == "failed"]
+    failed = [r for r in analysis.records if r is not None and r["status"] == "failed"]
     if failed:
         parts.append("<h3>Failed cases</h3><ul>")
         parts += [
-            f'<li class="failed">{html.escape(row["case"])}: {html.escape(str(row.get("error", "")))}</li>'
-            for row in failed
+            f'<li class="failed">{html.escape(r.label)}: {html.escape(str(r.data.get("error", "")))}</li>'
+            for r in failed
         ]
         parts.append("</ul>")
     return "\n".join(parts)
@@ -171,7 +204,8 @@ def write_report(folder: str | Path, *, redraw: bool = True, dpi: int = 150) -> 
         f"<h1>{title}</h1>",
         f"<p>{html.escape(document.get('description', ''))}</p>",
         f"<p>Study {html.escape(status)}. {html.escape(_run_line(provenance))} "
-        "Values in SI units; column headers give them.</p>",
+        "Each quantity is shown in one engineering unit, named in its column header or beside it; "
+        "results.csv holds the same values in SI.</p>",
     ]
     if problems:
         parts.append(

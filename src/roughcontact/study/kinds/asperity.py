@@ -50,7 +50,7 @@ from pydantic_core import PydanticCustomError
 
 from ...asperity.load_unload import LOADING_LAWS, StatisticalLoadUnload
 from ...asperity.parameters import AsperityParameters
-from ..kind import CaseOutput, CaseParameters, Kind
+from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Area, Force, InverseArea, MaterialName, Pressure, Strict, TopographyName
 from .common import evenly_chosen
 
@@ -295,6 +295,10 @@ def _labelled_curves(records) -> dict[str, dict]:
     return curves
 
 
+@caption(
+    "Load against interference ω/ω_c of the statistical KKE model, loading (solid) and unloading "
+    "(dashed), with the measured curve of [analysis.compare] where given (paper 002 Fig. 7)."
+)
 def _load_interference(records, context):
     curves = _labelled_curves(records)
     if not curves:
@@ -303,6 +307,7 @@ def _load_interference(records, context):
     return draw_load_interference(curves, common_omega_c(with_curve), measured_of(context))
 
 
+@caption("Real contact area against load on loading, from the statistical KKE model.")
 def _contact_area(records, context):
     from ...plotting.asperity import plot_area_load
 

@@ -75,7 +75,7 @@ from pydantic_core import PydanticCustomError
 
 from ...errors import InputError
 from ...friction.winkler_lj import WinklerLJResult
-from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind
+from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind, caption
 from ..schema import Force, Length, MaterialName, Pressure, Strict, SurfaceEnergy, Time, TopographyName
 from .common import grouped
 
@@ -465,8 +465,12 @@ def _mean_by_load(group: Sequence[CaseRecord], name: str) -> tuple[np.ndarray, n
     return np.array(loads), np.array(means)
 
 
+@caption(
+    "Left: coefficient of friction μ = F/N against the normal load. Right: its adhesive (solid) and "
+    "mechanical (dashed) parts, with the crossover load dotted; one colour per sample (paper 000)."
+)
 def _friction_vs_load(records, context):
-    from ...plotting.layout import new_figure
+    from ...plotting.layout import legend, new_figure
 
     loads = _loads(records)
     if len(loads) < 2:
@@ -494,7 +498,7 @@ def _friction_vs_load(records, context):
     force_axis.set_ylabel(f"friction force ({unit})")
     force_axis.set_title("adhesive (solid) and mechanical (dashed) friction")
     if any(grouped(records)):
-        mu_axis.legend(fontsize="small")
+        legend(mu_axis, fontsize="small")
     return figure
 
 
@@ -505,8 +509,12 @@ def _simulated_only(records, context) -> dict[str, list[float]] | None:
     return simulated_mu(records)
 
 
+@caption(
+    "Coefficient of friction per sample: simulated (and measured, with [analysis.compare]) as boxes "
+    "of the quartiles with whiskers from min to max, every scan as a point (paper 000 Fig. 9)."
+)
 def _mu_boxes(records, context):
-    from ...plotting.friction import plot_mu_boxes
+    from ...plotting.friction import draw_boxes, plot_mu_boxes
     from ...plotting.layout import new_figure
 
     figure, axes = new_figure(1, 1, width=6.0)
@@ -517,22 +525,22 @@ def _mu_boxes(records, context):
     simulated = _simulated_only(records, context)
     if simulated is None:
         return None
-    boxes = ax.boxplot(
-        list(simulated.values()), whis=(0, 100), widths=0.6, patch_artist=True, medianprops={"color": "k"}
-    )
-    for box in boxes["boxes"]:
-        box.set_facecolor("tab:blue")
-        box.set_alpha(0.6)
-    ax.set_xticks(range(1, len(simulated) + 1))
+    positions = list(range(1, len(simulated) + 1))
+    draw_boxes(ax, list(simulated.values()), positions, ["tab:blue"] * len(simulated), width=0.6)
+    ax.set_xticks(positions)
     ax.set_xticklabels(list(simulated))
     ax.set_ylabel("coefficient of friction μ")
     ax.set_title("simulated μ per sample (boxes: quartiles, whiskers: min to max)")
     return figure
 
 
+@caption(
+    "Mean coefficient of friction per sample with one standard deviation, simulated beside measured "
+    "where given (paper 000 Fig. 8)."
+)
 def _mu_means(records, context):
     from ...plotting.friction import plot_mu_means
-    from ...plotting.layout import new_figure
+    from ...plotting.layout import legend, new_figure
 
     figure, axes = new_figure(1, 1, width=6.0)
     ax = axes[0][0]
@@ -551,7 +559,7 @@ def _mu_means(records, context):
     ax.set_xticks(x)
     ax.set_xticklabels(list(simulated))
     ax.set_ylabel("mean coefficient of friction μ (± 1 s.d.)")
-    ax.legend()
+    legend(ax)
     return figure
 
 

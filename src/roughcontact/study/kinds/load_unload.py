@@ -44,7 +44,7 @@ from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...models.thin_film_island import IslandCompression
-from ..kind import CaseOutput, CaseParameters, Kind
+from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
 from .asperity import MeasuredCurve, common_omega_c, curve_of, draw_load_interference, measured_of
 from .common import evenly_chosen
@@ -249,6 +249,11 @@ def _asperity_curves(context) -> tuple[dict[str, dict], list]:
     return curves, used
 
 
+@caption(
+    "Load against interference ω/ω_c on loading (solid) and unloading (dashed): the deterministic BEM "
+    "compression beside the statistical KKE curves of the study's asperity analyses and the measured "
+    "curve, where given (paper 002 Fig. 7)."
+)
 def _load_interference(records, context):
     curves, used = _asperity_curves(context)
     own = evenly_chosen([r for r in records if r.fields_path is not None], 5 - len(curves))
@@ -261,10 +266,14 @@ def _load_interference(records, context):
     return draw_load_interference(curves, common_omega_c(used), measured_of(context))
 
 
+@caption(
+    "Von Mises stress maps of the first case at the stored loads, loading then unloading, on one "
+    "colour scale (paper 002 Figs. 8-9); a panel at zero load says so."
+)
 def _von_mises(records, context):
     """Paper 002 Figs. 8-9: the stored von Mises maps of the first case, loading then unloading."""
-    from ...plotting.layout import new_figure
-    from ...plotting.study import map_axes
+    from ...plotting.layout import colour_scale, new_figure
+    from ...plotting.study import map_axes, shared_colorbar
 
     record = next((r for r in records if r.fields_path is not None), None)
     data = None if record is None else record.dataset()
@@ -275,13 +284,15 @@ def _von_mises(records, context):
     rows = -(-count // columns)
     figure, axes = new_figure(rows, columns, width=4.2, height=3.6)
     flat = [ax for row in axes for ax in row]
+    shared = colour_scale(data["von_mises"], from_zero=True)  # one scale: the panels compare
+    image = None
     for index, ax in enumerate(flat):
         if index >= count:
             ax.set_visible(False)
             continue
         field = data["von_mises"].isel(map=index)
         if float(field.max()) > 0:
-            map_axes(ax, field, "von Mises", "Pa", cmap="inferno")
+            image = map_axes(ax, field, "von Mises", "Pa", cmap="inferno", scale=shared, colorbar=False)
         else:  # no load: this model keeps no residual stress (module notes)
             ax.text(
                 0.5,
@@ -294,6 +305,8 @@ def _von_mises(records, context):
             ax.set_xticks([])
             ax.set_yticks([])
         ax.set_title(f"{str(field.map_branch.values)}, W = {float(field.map_force) * 1e6:.0f} µN")
+    if image is not None:
+        shared_colorbar(image, flat[:count], "von Mises stress", "Pa", shared)
     depth = float(data.attrs.get("stress_depth", 0.0))
     where = "surface" if depth == 0 else f"z = {depth * 1e6:.3g} µm"
     figure.suptitle(f"von Mises stress ({where})" + (f", {record.label}" if len(records) > 1 else ""))

@@ -35,7 +35,7 @@ from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...experiment.friction_loop import LoopAnalysis
-from ..kind import CaseOutput, CaseParameters, Kind
+from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Force, ForceUnit, LengthUnit
 from .common import panel_per_case
 
@@ -110,6 +110,10 @@ def run(parameters: LoopAnalysisParameters, inputs) -> CaseOutput:
     return CaseOutput(analysis.scalars(), analysis.to_xarray())
 
 
+@caption(
+    "Measured friction record (grey) with its last loop, the eq. 9 fits of its pre-sliding branches "
+    "and the points A, B, C with their lateral stiffness K_L (paper 001 Fig. 10)."
+)
 def _loop(records, context):
     """Draw the record (grey), its last loop, the eq. 9 fits and the points with their K_L (Fig. 10)."""
     from ...plotting.presliding import plot_loop_analysis

@@ -41,7 +41,7 @@ from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...experiment.nanoindentation import CREEP_FITS, RATE_SIGNS, IndentationResult
-from ..kind import CaseOutput, CaseParameters, Kind
+from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import MaterialName
 from .common import panel_per_case
 
@@ -134,6 +134,10 @@ def run(parameters: NanoindentationParameters, inputs) -> CaseOutput:
     return CaseOutput(result.scalars(), result.to_xarray())
 
 
+@caption(
+    "Load-displacement curves (up to four) with the fitted unloading law and its tangent at the start "
+    "of unloading, whose slope is the contact stiffness S_e (paper 001 Fig. 7)."
+)
 def _indentation(records, context):
     """Each curve (up to four) with its fitted unloading law and the tangent S_e (paper 001 Fig. 7)."""
     from ...plotting.indentation import plot_indentation_record

@@ -20,7 +20,8 @@ from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...contact.result import NormalContactResult
-from ..kind import CaseOutput, CaseParameters, Kind
+from ...units import format_si
+from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
 from .common import evenly_chosen, grouped, scalar_series
 
@@ -121,28 +122,36 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
     return CaseOutput(scalars, dataset, tuple(result.range_warnings()))
 
 
+@caption(
+    "Contact pressure (top) and gap (bottom) of up to four cases; each row shares one colour scale, "
+    "from 0 to the 99.5th percentile of its nonzero values. Titles give the case and the fraction of "
+    "the nominal area in contact."
+)
 def _contact_maps(records, context):
-    from ...plotting.layout import new_figure
-    from ...plotting.study import map_axes
+    from ...plotting.layout import colour_scale, new_figure
+    from ...plotting.study import map_axes, shared_colorbar
 
     chosen = evenly_chosen([r for r in records if r.fields_path is not None], 4)
     fields = [record.dataset() for record in chosen]
     if not chosen or "y" not in fields[0].dims:
         return None
     figure, axes = new_figure(2, len(chosen), width=3.6, height=3.2)
-    for column, (record, data) in enumerate(zip(chosen, fields, strict=True)):
-        pressure_axis, gap_axis = axes[0][column], axes[1][column]
-        map_axes(pressure_axis, data["pressure"], "pressure", "Pa", cmap="magma")
-        pressure_axis.set_title(
-            f"{record.label}\n{100 * record.scalars['contact_fraction']:.3g} % in contact"
-        )
-        map_axes(gap_axis, data["gap"], "gap", "m", cmap="viridis")
+    for row, (name, cmap) in enumerate((("pressure", "magma"), ("gap", "viridis"))):
+        unit = "Pa" if name == "pressure" else "m"
+        shared = colour_scale(*(data[name] for data in fields), from_zero=True)
+        for column, data in enumerate(fields):
+            image = map_axes(
+                axes[row][column], data[name], name, unit, cmap=cmap, scale=shared, colorbar=False
+            )
+        shared_colorbar(image, axes[row], name, unit, shared)
+    for record, ax in zip(chosen, axes[0], strict=True):
+        ax.set_title(f"{record.label}\n{100 * record.scalars['contact_fraction']:.3g} % in contact")
     return figure
 
 
 def _curve_of_cases(records, x: str, y: str, scales: tuple[float, float], labels: tuple[str, str, str]):
     """One scalar against another over the cases, a line per sample (None for fewer than 2 cases)."""
-    from ...plotting.layout import new_figure
+    from ...plotting.layout import legend, new_figure
 
     if len(records) < 2:
         return None
@@ -156,10 +165,14 @@ def _curve_of_cases(records, x: str, y: str, scales: tuple[float, float], labels
     ax.set_ylabel(labels[1])
     ax.set_title(labels[2])
     if any(groups):
-        ax.legend()
+        legend(ax)
     return figure
 
 
+@caption(
+    "Real contact area as a fraction of the nominal area against the nominal mean pressure, one line "
+    "per sample."
+)
 def _area_load(records, context):
     labels = (
         "nominal mean pressure (MPa)",
@@ -169,24 +182,31 @@ def _area_load(records, context):
     return _curve_of_cases(records, "mean_pressure", "contact_fraction", (1e-6, 100.0), labels)
 
 
+@caption("Normal force against the rigid approach counted from the first touch, one line per sample.")
 def _load_approach(records, context):
     labels = ("approach (nm)", "force (µN)", "load against approach")
     return _curve_of_cases(records, "approach", "force", (1e9, 1e6), labels)
 
 
+@caption(
+    "Von Mises stress at the first stored depth below the surface for up to four cases, on one colour "
+    "scale (0 to the 99.5th percentile of the nonzero values)."
+)
 def _von_mises(records, context):
-    from ...plotting.layout import new_figure
-    from ...plotting.study import map_axes
+    from ...plotting.layout import colour_scale, new_figure
+    from ...plotting.study import map_axes, shared_colorbar
 
     chosen = evenly_chosen([r for r in records if "max_von_mises" in r.scalars], 4)
     if not chosen:
         return None
     figure, axes = new_figure(1, len(chosen), width=3.6, height=3.2)
-    for column, record in enumerate(chosen):
-        field = record.dataset()["von_mises"].isel(depth=0)
+    fields = [record.dataset()["von_mises"].isel(depth=0) for record in chosen]
+    shared = colour_scale(*fields, from_zero=True)
+    for column, (record, field) in enumerate(zip(chosen, fields, strict=True)):
         ax = axes[0][column]
-        map_axes(ax, field, "von Mises stress", "Pa", cmap="inferno")
-        ax.set_title(f"{record.label}\nz = {float(field.depth) * 1e9:.3g} nm")
+        image = map_axes(ax, field, "von Mises stress", "Pa", cmap="inferno", scale=shared, colorbar=False)
+        ax.set_title(f"{record.label}\nz = {format_si(float(field.depth), 'm', digits=3)}")
+    shared_colorbar(image, axes[0], "von Mises stress", "Pa", shared)
     return figure
 
 

@@ -55,8 +55,10 @@ A, B, C of the last loop, or at the last reversals and step of your programme, i
 precision). With few steps in the pre-sliding part two points can share a step, which the
 ``stick_slip`` titles show by the displacement from the reversal.
 
-Figures: ``loops`` (every case's hysteresis loops, one panel per sample, with the measured loop of
-``[analysis.compare]``; Figs. 13-14), ``stick_slip`` (stick/slip maps of up to three cases,
+Figures: ``path`` (the displacement programme with the analysed last loop and the points A, B, C;
+Fig. 6), ``pressure`` (the contact pressure of up to three cases, whole field beside a zoom on
+the contact; Figs. 8-9), ``loops`` (every case's hysteresis loops, one panel per sample, with the
+measured loop of ``[analysis.compare]``; Figs. 13-14), ``stick_slip`` (stick/slip maps of up to three cases,
 zoomed to the contact; Figs. 11-12), ``lateral_stiffness`` (K_L at A, B, C against F0 with
 both Mindlin readings, one panel per sample; Fig. 15). Tables: ``lateral_stiffness`` (per case
 K_L simulated against Mindlin, with their ratios) and, with ``[analysis.compare]``,
@@ -66,7 +68,7 @@ its normal force).
 References
 ----------
 Seed paper 001, "Evaluation of pre-sliding behavior at a rough interface: modeling and experiment",
-J. Appl. Mech. (2020), eqs. 1-4 and 9-12, Figs. 6 and 10-15, Tables 1-2. doi:10.1115/1.4045900
+J. Appl. Mech. (2020), eqs. 1-4 and 9-12, Figs. 6, 8-15, Tables 1-2. doi:10.1115/1.4045900
 
 K. L. Johnson, *Contact Mechanics*, Cambridge University Press, 1985, secs. 7.2 and 7.4.
 """
@@ -84,7 +86,7 @@ from pydantic_core import PydanticCustomError
 from ...models.paper001 import MINDLIN_READINGS as READINGS
 from ...models.paper001 import POINT_NAMES as POINTS
 from ...models.paper001 import PreslidingResult
-from ..kind import CaseOutput, CaseParameters, Kind
+from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Force, ForceUnit, Length, LengthUnit, MaterialName, Strict, TopographyName
 from .common import evenly_chosen, grouped
 
@@ -256,6 +258,10 @@ def _compares_with(compare, sample: str) -> bool:
     return compare is not None and (compare.sample is None or compare.sample == sample)
 
 
+@caption(
+    "Friction force against tangential displacement of every case, one panel per sample, with the "
+    "measured loop of [analysis.compare] where given (paper 001 Figs. 13-14)."
+)
 def _loops(records, context):
     """Friction loops of every case, one panel per sample, with the measured loop (Figs. 13-14)."""
     from ...plotting.layout import new_figure
@@ -291,6 +297,10 @@ def _loops(records, context):
     return figure
 
 
+@caption(
+    "Normalised shear √(q_x² + q_y²)/(μ p) at the points A, B, C of the last loop (or the stored "
+    "steps), zoomed to the contact: 1 slips, below 1 sticks (paper 001 Figs. 11-12)."
+)
 def _stick_slip(records, context):
     """Normalised shear maps of up to three cases: A, B, C of the last loop, or kept steps (Figs. 11-12)."""
     chosen = evenly_chosen([r for r in records if r.fields_path is not None], 3)
@@ -299,8 +309,7 @@ def _stick_slip(records, context):
     panels = []
     for record in chosen:
         data = record.dataset()
-        name = f"{record.parameters.get('sample') or record.parameters['topography']} "
-        name += f"{_number(record, 'normal_force') * 1e3:g} mN"
+        name = _case_name(record)
         reversal = data.attrs.get("reversal_displacement")
         for index, label in enumerate(np.asarray(data["map"]).astype(str)):
             delta = float(data["delta_x"][int(data["map_step"][index])])
@@ -314,6 +323,30 @@ def _stick_slip(records, context):
     return shear_maps(panels, columns=columns)
 
 
+def _pixel_box(x, y) -> tuple[float, float, float, float]:
+    """Return the extent [m] of a map whose pixel centres are ``x``, ``y``."""
+    hx = x[1] - x[0] if x.size > 1 else 0.0
+    hy = y[1] - y[0] if y.size > 1 else 0.0
+    return (x[0] - hx / 2, x[-1] + hx / 2, y[0] - hy / 2, y[-1] + hy / 2)
+
+
+def _zoom(masks) -> tuple[float, float, float, float] | None:
+    """Return the box [m] of the pixels in any (mask on (x, y), x, y), widened by 10 %; None if none."""
+    boxes = []
+    for inside, x, y in masks:
+        if inside.any():
+            hx = x[1] - x[0] if x.size > 1 else 0.0
+            hy = y[1] - y[0] if y.size > 1 else 0.0
+            i, j = np.nonzero(inside)
+            boxes.append((x[i.min()] - hx, x[i.max()] + hx, y[j.min()] - hy, y[j.max()] + hy))
+    if not boxes:
+        return None
+    x0, x1 = min(b[0] for b in boxes), max(b[1] for b in boxes)
+    y0, y1 = min(b[2] for b in boxes), max(b[3] for b in boxes)
+    pad = 0.1 * max(x1 - x0, y1 - y0)
+    return (x0 - pad, x1 + pad, y0 - pad, y1 + pad)
+
+
 def shear_maps(panels, columns: int):
     """Draw stored normalised shear maps, zoomed to the contacts (paper 001 Figs. 11-12).
 
@@ -322,24 +355,82 @@ def shear_maps(panels, columns: int):
     """
     from ...plotting.presliding import plot_stick_slip_maps
 
-    maps, extents, boxes = {}, {}, []
+    maps, extents, masks = {}, {}, []
     for label, values, x, y in panels:
         values, x, y = np.asarray(values, dtype=float), np.asarray(x), np.asarray(y)
-        hx = x[1] - x[0] if x.size > 1 else 0.0
-        hy = y[1] - y[0] if y.size > 1 else 0.0
         maps[label] = values.T  # rows along y
-        extents[label] = (x[0] - hx / 2, x[-1] + hx / 2, y[0] - hy / 2, y[-1] + hy / 2)
-        inside = np.isfinite(values)
-        if inside.any():
-            i, j = np.nonzero(inside)
-            boxes.append((x[i.min()] - hx, x[i.max()] + hx, y[j.min()] - hy, y[j.max()] + hy))
-    zoom = None
-    if boxes:
-        x0, x1 = min(b[0] for b in boxes), max(b[1] for b in boxes)
-        y0, y1 = min(b[2] for b in boxes), max(b[3] for b in boxes)
-        pad = 0.1 * max(x1 - x0, y1 - y0)
-        zoom = (x0 - pad, x1 + pad, y0 - pad, y1 + pad)
-    return plot_stick_slip_maps(maps, extents, zoom=zoom, columns=columns)
+        extents[label] = _pixel_box(x, y)
+        masks.append((np.isfinite(values), x, y))
+    return plot_stick_slip_maps(maps, extents, zoom=_zoom(masks), columns=columns)
+
+
+def _case_name(record) -> str:
+    """Return the ball and its load, as the paper names its cases (``POM-like ball 25 mN``)."""
+    name = record.parameters.get("sample") or record.parameters["topography"]
+    return f"{name} {_number(record, 'normal_force') * 1e3:g} mN"
+
+
+@caption(
+    "Contact pressure of up to three cases: the whole computed field with the zoomed box (left) and "
+    "the zoom on the contact with its outline (right), on one colour scale (paper 001 Figs. 8-9)."
+)
+def _pressure(records, context):
+    """Draw the contact pressure of up to three cases, whole field and zoom on the contact (Figs. 8-9)."""
+    from ...plotting.presliding import plot_pressure_maps
+
+    chosen = evenly_chosen(_by_force([r for r in records if r.fields_path is not None]), 3)
+    if not chosen:
+        return None
+    maps, extents, masks = {}, {}, []
+    for record in chosen:
+        data = record.dataset()
+        pressure, x, y = (
+            np.asarray(data["pressure"], dtype=float),
+            np.asarray(data["x"]),
+            np.asarray(data["y"]),
+        )
+        maps[_case_name(record)] = pressure.T  # rows along y
+        extents[_case_name(record)] = _pixel_box(x, y)
+        masks.append((pressure > 0, x, y))
+    zoom = _zoom(masks)
+    return None if zoom is None else plot_pressure_maps(maps, extents, zoom=zoom)
+
+
+@caption(
+    "The tangential displacement programme δ_x applied step by step (paper 001 Fig. 6); the last "
+    "loop, which is analysed, is shaded and its points A, B, C marked."
+)
+def _path(records, context):
+    """Draw the tangential displacement programme, step by step, with the last loop (Fig. 6).
+
+    Cases that share one programme draw one line; the points A, B, C of the first case are marked.
+    """
+    from ...plotting.presliding import plot_displacement_path
+
+    chosen = [r for r in records if r.fields_path is not None]
+    if not chosen:
+        return None
+    paths: dict[str, np.ndarray] = {}
+    first = chosen[0].dataset()
+    for record in chosen:
+        delta = np.asarray(record.dataset()["delta_x"], dtype=float)
+        if not any(
+            d.shape == delta.shape and np.allclose(d, delta, rtol=1e-9, atol=0) for d in paths.values()
+        ):
+            paths["programme" if not paths else _case_name(record)] = delta
+    if len(paths) > 1:
+        paths = {_case_name(chosen[0]) if k == "programme" else k: v for k, v in paths.items()}
+    start, stop = first.attrs.get("last_loop_start"), first.attrs.get("last_loop_stop")
+    points = {
+        str(name): int(step)
+        for name, step in zip(
+            np.asarray(first["map"]).astype(str), np.asarray(first["map_step"]), strict=True
+        )
+        if str(name) in POINTS
+    }
+    return plot_displacement_path(
+        paths, last_loop=None if start is None else (int(start), int(stop)), points=points
+    )
 
 
 def _mindlin_curves(group, loads: np.ndarray) -> dict[str, dict[str, np.ndarray]] | None:
@@ -362,9 +453,13 @@ def _mindlin_curves(group, loads: np.ndarray) -> dict[str, dict[str, np.ndarray]
     }
 
 
+@caption(
+    "Lateral stiffness K_L at the points A, B, C against the normal force, simulated beside Mindlin's "
+    "smooth ball in both readings of eq. 12, one panel per sample (paper 001 Fig. 15)."
+)
 def _lateral_stiffness(records, context):
     """Draw K_L at A, B, C against F0 with Mindlin in both readings, one panel per sample (Fig. 15)."""
-    from ...plotting.layout import new_figure
+    from ...plotting.layout import legend, new_figure
     from ...plotting.presliding import POINT_COLOURS, plot_lateral_stiffness
 
     groups = grouped(records)
@@ -402,7 +497,7 @@ def _lateral_stiffness(records, context):
                     label=f"{point} measured loop",
                 )
         ax.set_title(f"({chr(ord('a') + number)}) {sample or context.analysis}")
-        ax.legend(fontsize="x-small", ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.15))
+        legend(ax, fontsize="x-small", ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.15))
     return figure
 
 
@@ -490,7 +585,13 @@ KIND = Kind(
     parameters=PreslidingParameters,
     run=run,
     units=PreslidingResult.UNITS,
-    figures={"loops": _loops, "stick_slip": _stick_slip, "lateral_stiffness": _lateral_stiffness},
+    figures={
+        "path": _path,
+        "pressure": _pressure,
+        "loops": _loops,
+        "stick_slip": _stick_slip,
+        "lateral_stiffness": _lateral_stiffness,
+    },
     tables={"lateral_stiffness": _lateral_stiffness_table, "measured_loop": _measured_loop_table},
     compare=PreslidingCompare,
     check=check,

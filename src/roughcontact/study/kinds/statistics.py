@@ -16,7 +16,7 @@ import numpy as np
 
 from ...topography.statistics import SUMMARY
 from ...units import format_si
-from ..kind import CaseOutput, CaseParameters, Kind
+from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import TopographyName
 from .common import evenly_chosen, grid
 
@@ -53,8 +53,12 @@ def run(parameters: StatisticsParameters, inputs) -> CaseOutput:
     return CaseOutput(scalars, dataset)
 
 
+@caption(
+    "Height maps of up to four surfaces about their mean plane, as used (levelled files, generated "
+    "surfaces as made); colours clipped to the 0.5-99.5 percentiles of each map, titles give Sq."
+)
 def _heights(records, context):
-    from ...plotting.layout import new_figure
+    from ...plotting.layout import legend, new_figure
     from ...plotting.study import map_axes
 
     chosen = evenly_chosen(records, 4)
@@ -65,7 +69,7 @@ def _heights(records, context):
             axes[0][0].plot(data["x"] * 1e6, data["heights"] * 1e9, label=record.label)
         axes[0][0].set_xlabel("x (µm)")
         axes[0][0].set_ylabel("height (nm)")
-        axes[0][0].legend()
+        legend(axes[0][0])
         return figure
     figure, axes = new_figure(1, len(chosen), width=3.8, height=3.2)
     for column, (record, data) in enumerate(zip(chosen, fields, strict=True)):
@@ -74,8 +78,12 @@ def _heights(records, context):
     return figure
 
 
+@caption(
+    "Power spectral density C(q) of every surface against the wavevector q = 2π/λ (radially averaged "
+    "for maps; normalised so that it integrates to the mean square height, Jacobs et al. 2017)."
+)
 def _psd(records, context):
-    from ...plotting.layout import new_figure
+    from ...plotting.layout import legend, new_figure
 
     figure, axes = new_figure(1, 1)
     ax = axes[0][0]
@@ -86,7 +94,7 @@ def _psd(records, context):
     ax.set_ylabel(f"PSD ({records[0].dataset()['psd'].attrs['units']})")
     ax.set_title("power spectral density")
     if 1 < len(records) <= 12:
-        ax.legend(fontsize="small")
+        legend(ax, fontsize="small")
     return figure
 
 

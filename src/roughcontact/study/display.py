@@ -1,0 +1,170 @@
+"""Numbers for a reader: engineering units, one unit per column (or per quantity), named beside them.
+
+The stored tables (``results.csv``, ``tables/*.csv``) keep SI numbers under headers ``name [unit]``
+(:func:`header`), for programs. The report and the commands' printed tables show the same
+numbers through this module: the values of one quantity share the SI prefix that puts the
+largest of them between 1 and 1000, and the prefixed unit goes in the header (``Sq (nm)`` over
+``1.614``, not ``Sq [m]`` over ``1.614e-09``).
+
+A table whose rows are quantities (a comparison with a paper: columns ``quantity``, ``unit``,
+``paper``, ``this_case``, ...) carries each row's unit in its ``unit`` column; the value columns of
+such a table (:data:`PER_ROW_UNIT`) are shown in that row's unit, with the unit in each cell.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+from ..units import format_si, prefixed_scale
+
+DIGITS = 4
+"""Significant digits of every number shown."""
+
+PER_ROW_UNIT = ("paper", "this_case", "printed_inputs", "ours")
+"""Columns (or column-name prefixes) of a quantity table that take their row's ``unit``."""
+
+
+def header(name: str, unit: str | None) -> str:
+    """Return the stored header of a column: ``name [unit]``, or ``name`` for a dimensionless one."""
+    return f"{name} [{unit}]" if unit else name
+
+
+def split_header(text: str) -> tuple[str, str | None]:
+    """Inverse of :func:`header`: ``"Sq [m]"`` -> ``("Sq", "m")``, ``"mu"`` -> ``("mu", None)``."""
+    if text.endswith("]") and " [" in text:
+        name, _, unit = text[:-1].rpartition(" [")
+        return name, unit or None
+    return text, None
+
+
+def number(value: Any) -> float | int | None:
+    """Return the value as a number (an int stays one), or None for text, booleans, blanks and NaN."""
+    if isinstance(value, bool) or value is None:
+        return None
+    if isinstance(value, int):
+        return value
+    if isinstance(value, str):
+        text = value.strip()
+        if text.lstrip("+-").isdigit():
+            return int(text)
+        try:
+            value = float(text)
+        except ValueError:
+            return None
+    try:
+        value = float(value)
+    except (TypeError, ValueError):
+        return None
+    return value if math.isfinite(value) else None
+
+
+def blank(value: Any) -> bool:
+    """Tell whether a table shows the value as an empty cell: None, "", NaN (as a number or as text)."""
+    if value is None or (isinstance(value, str) and value.strip().lower() in ("", "nan")):
+        return True
+    return isinstance(value, float) and math.isnan(value)
+
+
+def _text(value: float | int | None, scale: float = 1.0) -> str:
+    """Write the value in units of ``scale`` to :data:`DIGITS` significant digits (20190, not 2.019e+04)."""
+    if value is None:
+        return ""
+    if isinstance(value, int) and scale == 1.0:
+        return str(value)
+    text = f"{value / scale:.{DIGITS}g}"
+    rounded = float(text)
+    if "e+" in text and abs(rounded) < 1e6:
+        return f"{rounded:.0f}"
+    return text
+
+
+def scaled(values: Sequence[Any], unit: str | None) -> tuple[str, list[str]] | None:
+    """Return cells of values of one quantity in the prefix of the largest; None unless all are numbers.
+
+    Blanks (None, "", NaN) are allowed and shown empty.
+
+    Returns
+    -------
+    (label, cells) or None
+        The prefixed unit ("" for a dimensionless quantity) and each value as text.
+    """
+    numbers = [number(v) for v in values]
+    if any(n is None and not blank(v) for n, v in zip(numbers, values, strict=True)):
+        return None
+    finite = [abs(n) for n in numbers if n is not None]
+    if not unit:
+        return "", [_text(n) for n in numbers]
+    scale, label = prefixed_scale(max(finite, default=0.0), unit)
+    return label, [_text(n, scale) for n in numbers]
+
+
+def shown(value: Any, unit: str | None) -> str:
+    """One value as text with its own SI prefix and unit (``2.81 µm``); labels as they are."""
+    if isinstance(value, list):
+        return ", ".join(shown(v, unit) for v in value)
+    numeric = number(value)
+    if numeric is None:
+        return "-" if blank(value) or isinstance(value, float) else str(value)
+    if isinstance(numeric, int) and not unit:
+        return str(numeric)
+    return format_si(numeric, unit, digits=DIGITS) if unit else f"{numeric:.{DIGITS}g}"
+
+
+def columns(
+    rows: Sequence[Mapping[str, Any]], units: Mapping[str, str] | None = None
+) -> tuple[list[str], list[list[str]]]:
+    """Return the titles and cells of a table of rows, each numeric column in one engineering unit.
+
+    Parameters
+    ----------
+    rows : sequence of mapping
+        One mapping per row; keys are stored headers (``name [unit]``) or plain names, whose
+        unit, if any, comes from ``units``.
+    units : mapping, optional
+        SI unit of plain-named columns.
+
+    Columns with no value in any row are left out, and so is a ``case`` column that holds one
+    case id in every row.
+
+    Returns
+    -------
+    titles : list of str
+        ``name (prefixed unit)`` for a column with a unit, else the name.
+    cells : list of list of str
+        One list per row.
+    """
+    names = list(dict.fromkeys(key for row in rows for key in row))
+    names = [n for n in names if not all(blank(row.get(n)) for row in rows)]
+    if len(rows) > 1 and len({str(row.get("case")) for row in rows}) == 1:
+        names = [n for n in names if n != "case"]  # rows of one case: its id says nothing
+    titles, by_column = [], []
+    for key in names:
+        name, unit = split_header(key)
+        unit = unit or (units or {}).get(key)
+        values = [row.get(key) for row in rows]
+        if key.startswith(PER_ROW_UNIT) and any("unit" in row for row in rows):
+            titles.append(name)
+            row_units = [row.get("unit") or None for row in rows]
+            by_column.append(
+                ["" if blank(v) else shown(v, u) for v, u in zip(values, row_units, strict=True)]
+            )
+            continue
+        result = scaled(values, unit)
+        if result is None:
+            titles.append(name)
+            by_column.append(["" if blank(v) else str(v) for v in values])
+            continue
+        label, cells = result
+        titles.append(f"{name} ({label})" if label else name)
+        by_column.append(cells)
+    return titles, [list(cells) for cells in zip(*by_column, strict=True)] if by_column else []
+
+
+def text_table(titles: Sequence[str], cells: Sequence[Sequence[str]], indent: str = "") -> list[str]:
+    """Titles and cells as aligned text lines (right-aligned columns)."""
+    widths = [max(len(t), *(len(row[i]) for row in cells)) for i, t in enumerate(titles)]
+    lines = ["  ".join(f"{t:>{w}}" for t, w in zip(titles, widths, strict=True))]
+    lines += ["  ".join(f"{c:>{w}}" for c, w in zip(row, widths, strict=True)) for row in cells]
+    return [indent + line for line in lines]
