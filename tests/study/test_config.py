@@ -136,10 +136,28 @@ def test_missing_study_file(tmp_path):
         load_study(tmp_path / "absent.toml")
 
 
-def test_bad_value_in_one_case_of_a_sweep_is_found_before_running(tmp_path):
+def test_bad_value_in_one_case_of_a_sweep_names_the_sweep_key_and_a_good_value(tmp_path):
     text = BASE + '[analysis.sweep]\nmean_pressure = ["10 MPa", "20 MPa", "-30 kN"]\n'
-    ((field, problem, _),) = problems(tmp_path, text)[0]
-    assert "case 2" in field and "-30 kN" in field + problem
+    ((field, problem, fix),) = problems(tmp_path, text)[0]
+    assert field == "analysis[0] (contact).sweep.mean_pressure" and "-30 kN" in problem
+    assert "give a pressure" in fix and "'10 MPa'" in fix  # another value of the sweep as the example
+
+
+def test_one_typo_is_one_problem_however_many_cases_use_it(tmp_path):
+    sweep = '[analysis.sweep]\nmean_pressure = ["10 MPa", "20 MPa"]\n'
+    text = BASE.replace("material =", "materail =") + sweep
+    found, message = problems(tmp_path, text)
+    assert [(f, p, x) for f, p, x in found] == [
+        ("analysis[0] (contact).materail", "is not a known key.", "did you mean 'material'?")
+    ]
+    assert message.count("materail") == 1
+
+
+def test_a_range_whose_ends_differ_in_kind_says_how_to_write_it(tmp_path):
+    text = BASE + '[analysis.sweep]\nmean_pressure = {start = "10 MPa", stop = "40 nm", num = 3}\n'
+    ((field, problem, fix),) = problems(tmp_path, text)[0]
+    assert field.endswith("sweep.mean_pressure.stop") and "'40 nm'" in problem
+    assert fix == "write start and stop in units of one kind, e.g. stop = '40 MPa'."
 
 
 def test_ranges_and_products():
@@ -168,7 +186,7 @@ def test_ranges_and_products():
     [
         ({"x": []}, {}, "non-empty list"),
         ({"x": {"start": 1, "stop": 2}}, {}, "one of num or step"),
-        ({"x": {"start": "1 uN", "stop": "2 nm", "num": 2}}, {}, "dimension"),
+        ({"x": {"start": "1 uN", "stop": "2 nm", "num": 2}}, {}, "same kind of quantity"),
         ({"x": {"start": 0, "stop": 1, "num": 3, "spacing": "log"}}, {}, "log spacing"),
         ({}, {"a": [1, 2], "b": [1]}, "differ in length"),
         ({"a": [1]}, {"a": [1]}, "both swept and zipped"),

@@ -461,10 +461,12 @@ class _Builder:
             axis = error.field.removeprefix(where.label + ".").split(".")
             self.problem(Where((*where.path, *axis), error.field), error.problem, error.fix)
             return None
+        sections = {axis: "sweep" for axis in sweep} | {axis: "zip" for axis in zipped}
+        sections |= {f"{axis} values": list(dict.fromkeys(row[axis] for row in rows)) for axis in sections}
         cases = []
         before = len(self.problems)
         for number, axes in enumerate(rows):
-            case = self.case(name, kind, number, base, axes, where)
+            case = self.case(name, kind, number, base, axes, where, sections)
             if case is not None:
                 cases.append(case)
             if len(self.problems) > before + 5:  # one bad axis fails every case: say it a few times
@@ -505,12 +507,50 @@ class _Builder:
         return spec.model_copy(update=updates)
 
     def case(
+        self, analysis: str, kind: Kind, index: int, base: dict, axes: dict, where: Where, sections: dict
+    ) -> Case | None:
+        """Validate one case of an analysis (its ``axes`` the swept values, ``sections`` their tables).
+
+        Its problems are said once for the analysis, not once per case: a problem of a key every
+        case shares reads the same in each (the study reports it once), and a problem of a swept
+        value names the sweep key and the value (``analysis[0] (contact).sweep.mean_pressure:
+        '20 uN' is a force ...``), with a value of the same sweep that was fine as the example.
+        """
+        before = len(self.problems)
+        made = self._case(analysis, kind, index, base, axes, where)
+        self.problems[before:] = [self._swept(p, where, axes, sections) for p in self.problems[before:]]
+        return made
+
+    @staticmethod
+    def _swept(problem: Problem, where: Where, axes: dict, sections: dict) -> Problem:
+        """Return ``problem`` placed at its sweep key when it is about a swept value."""
+        inside = problem.path[len(where.path) :] if problem.path[: len(where.path)] == where.path else ()
+        axis = (
+            ".".join(map(str, problem.path))
+            if problem.path[:1] in (("topographies",), ("materials",))
+            else None
+        )
+        axis = axis if axis in axes else (str(inside[0]) if inside and str(inside[0]) in axes else None)
+        if axis is None:
+            return problem
+        section = sections.get(axis, "sweep")
+        fix = problem.fix or ""
+        others = [v for v in sections.get(f"{axis} values", ()) if v != axes[axis]]
+        if others and (
+            "kind" in problem.problem or "unit" in problem.problem or "expected" in problem.problem
+        ):
+            fix = f"{fix} (other values of this {section}: {others[0]!r})".strip()
+        return Problem(
+            f"{where.label}.{section}.{axis}", problem.problem, fix or None, (*where.path, section, axis)
+        )
+
+    def _case(
         self, analysis: str, kind: Kind, index: int, base: dict, axes: dict, where: Where
     ) -> Case | None:
         parameters = copy.deepcopy(base)
         topographies = copy.deepcopy(self.raw_topographies)
         materials = copy.deepcopy(self.raw_materials)
-        label = Where(where.path, where.label + (f" case {index} {axes}" if axes else ""))
+        label = where
         for axis, value in axes.items():
             section, _, rest = axis.partition(".")
             if section in ("topographies", "materials") and rest:

@@ -117,12 +117,31 @@ def from_validation_error(
         elif item["type"] in ("quantity", "shape", "topography", "material"):
             problem = context.get("problem") or item["msg"]
             problem = problem.rstrip(".") + "."
-            shown = "" if repr(value) in problem else shown
+            shown = "" if repr(value) in problem or str(value) in problem else shown
         else:
             problem = item["msg"].removeprefix("Value error, ").rstrip(".") + "."
             fix = fix or _generic_fix(item["type"], context)
         problems.append(Problem(_label(where, item["loc"]), problem + shown, fix, _path(where, item["loc"])))
-    return problems
+    return _one_per_typo(problems)
+
+
+def _one_per_typo(problems: list[Problem]) -> list[Problem]:
+    """Drop "is required but missing" where an unknown key beside it is that key misspelt.
+
+    ``materail = "SiO2"`` is one typo: its fix ("did you mean 'material'?") says all; that
+    ``material`` is then missing is the same problem again.
+    """
+    meant = {
+        (p.path[:-1], p.fix.removeprefix("did you mean ").rstrip("?").strip("'\""))
+        for p in problems
+        if p.problem == "is not a known key." and p.fix and p.fix.startswith("did you mean ")
+    }
+    return [p for p in problems if not (p.problem == "is required but missing." and _at(p) in meant)]
+
+
+def _at(problem: Problem) -> tuple:
+    """Return (the table's path, the key) of a problem."""
+    return problem.path[:-1], problem.path[-1] if problem.path else None
 
 
 def _generic_fix(kind: str, context: dict) -> str | None:

@@ -284,7 +284,8 @@ def _von_mises(records, context):
     rows = -(-count // columns)
     figure, axes = new_figure(rows, columns, width=4.2, height=3.6)
     flat = [ax for row in axes for ax in row]
-    shared = colour_scale(data["von_mises"], from_zero=True)  # one scale: the panels compare
+    # one scale, the full range: the panels compare, and a smooth stress field has no spike to clip
+    shared = colour_scale(data["von_mises"], from_zero=True, percentiles=(0, 100))
     image = None
     for index, ax in enumerate(flat):
         if index >= count:

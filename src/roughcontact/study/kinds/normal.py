@@ -190,7 +190,7 @@ def _load_approach(records, context):
 
 @caption(
     "Von Mises stress at the first stored depth below the surface for up to four cases, on one colour "
-    "scale (0 to the 99.5th percentile of the nonzero values)."
+    "scale from 0 to the largest value of all the panels."
 )
 def _von_mises(records, context):
     from ...plotting.layout import colour_scale, new_figure
@@ -201,7 +201,7 @@ def _von_mises(records, context):
         return None
     figure, axes = new_figure(1, len(chosen), width=3.6, height=3.2)
     fields = [record.dataset()["von_mises"].isel(depth=0) for record in chosen]
-    shared = colour_scale(*fields, from_zero=True)
+    shared = colour_scale(*fields, from_zero=True, percentiles=(0, 100))  # smooth: the full range
     for column, (record, field) in enumerate(zip(chosen, fields, strict=True)):
         ax = axes[0][column]
         image = map_axes(ax, field, "von Mises stress", "Pa", cmap="inferno", scale=shared, colorbar=False)
