@@ -451,6 +451,19 @@ def test_local_dask_cluster_gives_the_in_process_numbers(reference, tmp_path, cl
     assert_same_results(expected, output)
 
 
+def test_dask_says_nothing_of_its_own_on_the_terminal(reference, tmp_path):
+    """A run on a local cluster prints our lines only: no log line of Dask's, from any process."""
+    import subprocess
+    import sys
+
+    study_path, _ = reference
+    command = [sys.executable, "-m", "roughcontact", "run", str(study_path), "-o", str(tmp_path / "E")]
+    done = subprocess.run([*command, "--workers", "2"], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    lines = (done.stdout + done.stderr).splitlines()
+    assert lines and not [line for line in lines if "distributed" in line or "dask." in line.lower()]
+
+
 @pytest.fixture(scope="module")
 def cluster():
     """A real local Dask cluster on loopback: 2 single-threaded worker processes, each under a nanny."""

@@ -56,21 +56,26 @@ def _output_folder(folder: Path, command: CommandStudy, overwrite: bool) -> bool
 
 def _run(study, command: CommandStudy, output: Path | None, dpi: int, overwrite: bool = False):
     """Run every case; return the analyses with their records and the report path (None without -o)."""
+    from ..progress import shown
     from ..study.kind import CaseRecord
     from ..study.outputs import in_memory, read_study
     from ..study.report import write_report
-    from ..study.run import execute, make_task, run_study
+    from ..study.run import case_progress, execute, make_task, run_study
 
+    terminal = sys.stderr.isatty()  # progress bars (of the cases, and of a long case's steps) only there
     try:
-        if output is None:
-            records: dict[str, list] = {}
-            for case in study.cases:
-                record, _ = execute(make_task(study, case, raise_errors=True))
-                records.setdefault(case.analysis, []).append(CaseRecord(record, Path.cwd()))
-            return in_memory(study, records), None
-        folder = output.expanduser().resolve()
-        resume = _output_folder(folder, command, overwrite)
-        run_study(study, folder, resume=resume, progress=sys.stderr.isatty(), raise_errors=True)
+        with shown(terminal):
+            if output is None:
+                records: dict[str, list] = {}
+                with case_progress(len(study.cases), terminal and len(study.cases) > 1) as bar:
+                    for case in study.cases:
+                        record, _ = execute(make_task(study, case, raise_errors=True))
+                        records.setdefault(case.analysis, []).append(CaseRecord(record, Path.cwd()))
+                        bar.update()
+                return in_memory(study, records), None
+            folder = output.expanduser().resolve()
+            resume = _output_folder(folder, command, overwrite)
+            run_study(study, folder, resume=resume, progress=terminal, raise_errors=True)
         report = write_report(folder, dpi=dpi)
         return read_study(folder)[1], report
     except InputError as error:

@@ -49,6 +49,7 @@ from ..elasticity.halfspace import SurfaceCompliance
 from ..elasticity.tangential import TractionCompliance
 from ..errors import ConvergenceError, InputError
 from ..materials import Material, contact_modulus
+from ..progress import tracked
 from . import _constrained_cg, _shear_apg, _shear_cg
 from .normal import compliance_for
 from .paths import as_path
@@ -252,7 +253,7 @@ def solve_tangential(
         preconditioner=_preconditioning(precondition, operator) if apg is None else None,
         apg=apg,
     )
-    for step, target in enumerate(path):
+    for step, target in enumerate(tracked(path, what="tangential steps")):
         control = {"force": tuple(target)} if load_control else {"displacement": tuple(target)}
         pressure, slip_from_p, increment, iterations[step], passes[step] = stepper.step(
             pressure, slip_from_p, (qx, qy), (slip_x, slip_y), control

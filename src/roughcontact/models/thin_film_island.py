@@ -42,6 +42,7 @@ from ..elasticity.halfspace import ElasticLayer
 from ..elasticity.stress import StressField, subsurface_stress
 from ..errors import InputError
 from ..materials import Material
+from ..progress import tracked
 from ..topography import Topography
 from . import paper002
 
@@ -218,7 +219,7 @@ def compress_island(
     options = dict(hardness=hardness, compliance=compliance, tolerance=tolerance)
 
     steps, previous = [], None
-    for force in loading:
+    for force in tracked(loading, what="loading steps"):
         previous = solve_normal(topography, force=float(force), initial=previous, **options)
         steps.append(previous)
     plastic = previous.plastic_deformation
@@ -226,7 +227,7 @@ def compress_island(
     # The flattened surface's first touch lies this much further than the original one's.
     offset = float(np.min(topography.heights.max() - topography.heights + plastic))
     previous = None
-    for force in unloading:
+    for force in tracked(unloading, what="unloading steps"):
         previous = solve_normal(flattened, force=float(force), initial=previous, **options)
         steps.append(previous)
 

@@ -278,7 +278,8 @@ def _on_dask(client, tasks: list[Task]) -> Iterator[tuple[dict, Any]]:
         client.cancel(list(futures))
 
 
-def _progress(total: int, enabled: bool):
+def case_progress(total: int, enabled: bool):
+    """Return a progress bar of ``total`` cases on standard error (a silent one unless ``enabled``)."""
     from tqdm.auto import tqdm
 
     return tqdm(total=total, disable=not enabled, unit="case", desc="cases", file=sys.stderr, leave=False)
@@ -357,7 +358,7 @@ def run_study(
     tasks = [make_task(study, case, storage, raise_errors=raise_errors) for case in pending]
     started = datetime.now(UTC)
     clock = time.perf_counter()
-    bar = _progress(len(tasks), progress)
+    bar = case_progress(len(tasks), progress)
     # Cases are stored on one background thread, in order, while the next case solves (the
     # solvers release the GIL): a small case's NetCDF and JSON writes would otherwise add ~5 % to
     # a sweep. Every write is waited for before the table is written, also after Ctrl-C.
