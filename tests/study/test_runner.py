@@ -395,7 +395,8 @@ def test_a_failing_case_is_recorded_the_others_finish_and_resume_retries_only_it
     assert status == EXIT_CASES_FAILED
     assert "2 cases run, 0 reused, 1 failed" in out
     (failed,) = [c for c in load_study(study_path).cases if c.parameters.mean_pressure > 15e6]
-    assert f"failed: contact/{failed.case_id}: InputError: force:" in err
+    label = ", ".join(f"{axis.rsplit('.', 1)[-1]}={value}" for axis, value in failed.axes.items())
+    assert f"failed: contact ({label}): force:" in err and failed.case_id not in err
 
     rows = {r["case"]: r for r in read_table(output / "results.csv")}
     assert len(rows) == 3
@@ -404,7 +405,7 @@ def test_a_failing_case_is_recorded_the_others_finish_and_resume_retries_only_it
     assert all(r["error"] == "" and float(r["contact_fraction"]) > 0 for r in list(rows.values())[:2])
     record = json.loads(record_path(output, "contact", failed.case_id).read_text())
     assert record["status"] == "failed" and record["scalars"] == {} and record["fields"] is None
-    assert record["error"].startswith("InputError: force:") and "hardness" in record["error"]
+    assert record["error"].startswith("force:") and "hardness" in record["error"]
     assert "_capped_at_force" in record["traceback"]
     assert provenance(output)["cases"] == {"total": 3, "reused": 0, "done": 2, "failed": 1, "pending": 0}
 

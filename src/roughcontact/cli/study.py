@@ -46,7 +46,8 @@ def finish(folder: Path, summary) -> int:
 
     report = write_report(folder)
     print(
-        f"{summary.done} cases run, {summary.skipped} reused, {summary.failed} failed "
+        f"{summary.done} case{'s' if summary.done != 1 else ''} run, {summary.skipped} reused, "
+        f"{summary.failed} failed "
         f"in {summary.wall_seconds:.1f} s ({summary.executor})"
     )
     for failure in summary.failures:

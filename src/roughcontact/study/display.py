@@ -126,7 +126,7 @@ def columns(
         SI unit of plain-named columns.
 
     Columns with no value in any row are left out, and so is a ``case`` column that holds one
-    case id in every row.
+    case id in every row, and the ``unit`` column of a quantity table (its cells carry the unit).
 
     Returns
     -------
@@ -137,6 +137,8 @@ def columns(
     """
     names = list(dict.fromkeys(key for row in rows for key in row))
     names = [n for n in names if not all(blank(row.get(n)) for row in rows)]
+    if "unit" in names and any(n.startswith(PER_ROW_UNIT) for n in names):
+        names.remove("unit")  # every value cell of such a table carries its row's unit
     if len(rows) > 1 and len({str(row.get("case")) for row in rows}) == 1:
         names = [n for n in names if n != "case"]  # rows of one case: its id says nothing
     titles, by_column = [], []

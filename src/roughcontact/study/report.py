@@ -34,7 +34,7 @@ body { font-family: system-ui, sans-serif; margin: 2em auto; max-width: 75em; co
 h1 { margin-bottom: 0.2em; } h2 { border-bottom: 1px solid #ccc; padding-bottom: 0.2em; margin-top: 2em; }
 table { border-collapse: collapse; margin: 0.8em 0; font-size: 0.85em; }
 th, td { border: 1px solid #ddd; padding: 0.25em 0.5em; text-align: right; }
-th { background: #f3f3f3; } td.text, th.text { text-align: left; }
+th { background: #f3f3f3; } td.text, th.text { text-align: left; } td:not(.text) { white-space: nowrap; }
 .failed { color: #a00; } .pending { color: #a60; } .done { color: #070; }
 figure { margin: 1em 0; } figure img { max-width: 100%; border: 1px solid #eee; }
 pre { background: #f7f7f7; padding: 0.8em; overflow-x: auto; font-size: 0.85em; }
@@ -44,6 +44,8 @@ pre { background: #f7f7f7; padding: 0.8em; overflow-x: auto; font-size: 0.85em; 
 
 TRANSPOSED_UP_TO = 8
 """Analyses of up to this many cases list every quantity as a row, one column per case."""
+WIDE = 6
+"""A table of one row and more columns than this is shown as a column of (quantity, value)."""
 
 
 def _html_table(titles: list[str], cells: list[list[str]], text_columns: set[int] = frozenset()) -> str:
@@ -70,6 +72,9 @@ def _table(rows: list[dict[str, Any]], drop: tuple[str, ...] = ()) -> str:
     if not rows:
         return "<p>(no rows)</p>"
     titles, cells = columns([{k: v for k, v in row.items() if k not in drop} for row in rows])
+    if len(cells) == 1 and len(titles) > WIDE:  # one long row: read down, not across
+        pairs = [[title, cell] for title, cell in zip(titles, cells[0], strict=True)]
+        return _html_table(["quantity", "value"], pairs, {0})
     text = {i for i, t in enumerate(titles) if not any(number(row[i]) is not None for row in cells)}
     return _html_table(titles, cells, text)
 

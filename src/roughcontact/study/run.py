@@ -39,7 +39,7 @@ from typing import Any
 from ..errors import InputError
 from .config import Case, Study
 from .inputs import CaseInputs
-from .kind import CaseParameters
+from .kind import CaseParameters, CaseRecord
 from .schema import FileTopography, MaterialSpec, unit_of
 from .store import (
     clean_partial_files,
@@ -125,7 +125,8 @@ def execute(task: Task) -> tuple[dict[str, Any], Any]:
     except Exception as error:  # recorded, the study goes on
         if task.raise_errors:
             raise
-        record["error"] = f"{type(error).__name__}: {error}"
+        # a user's problem reads as the message; anything else is a bug and is named as such
+        record["error"] = str(error) if isinstance(error, InputError) else f"{type(error).__name__}: {error}"
         record["traceback"] = traceback.format_exc(limit=-4)
     record["seconds"] = time.perf_counter() - start
     if dataset is not None and task.worker_storage is not None:
@@ -381,7 +382,8 @@ def run_study(
                     summary.done += 1
                 else:
                     summary.failed += 1
-                    summary.failures.append(f"{record['analysis']}/{record['case']}: {record['error']}")
+                    label = CaseRecord(record, folder).label  # its swept values, not its hash
+                    summary.failures.append(f"{record['analysis']} ({label}): {record['error']}")
                 bar.update()
                 if on_record is not None:
                     on_record(record)
