@@ -155,6 +155,11 @@ def test_demo_runs_the_embedded_study_and_writes_its_report(capsys, tmp_path):
     assert "roughcontact demo" in report and report.count("data:image/png;base64,") >= 4
     status, out, _ = run(capsys, "demo", "-o", tmp_path)  # a second run reuses every case
     assert status == 0 and "0 cases run" in out
+    assert f"sample AFM scan for your first commands: {tmp_path / 'top-1.top'}" in out
+    status, out, err = run(capsys, "validate", tmp_path / "study.toml")  # reruns from its own folder
+    assert status == 0, err
+    status, out, err = run(capsys, "inspect", tmp_path / "top-1.top")
+    assert status == 0 and "600 nm x 600 nm" in out
 
 
 def test_console_script_runs_as_module():

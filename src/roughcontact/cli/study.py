@@ -188,6 +188,10 @@ def plot_study(folder: Path) -> int:
     return 0 if not problems else EXIT_CASES_FAILED
 
 
+SAMPLE = "top-1.top"
+"""The AFM scan the demo uses, shipped with roughcontact (WSxM, 600 nm x 600 nm, heights in nm)."""
+
+
 def demo_study() -> Path:
     """Path of the embedded demo study (``roughcontact/data/demo.toml``, also ``examples/demo.toml``)."""
     from importlib.resources import files
@@ -199,12 +203,22 @@ def demo_study() -> Path:
 
 
 def _demo(args: argparse.Namespace) -> int:
+    import shutil
+
     from ..study import load_study
 
     path = demo_study()
     study = load_study(path)
     print(f"demo study {study.name!r}: {len(study.cases)} cases ({path})")
-    return run_and_report(study, args.output, progress=sys.stderr.isatty(), resume=True)
+    status = run_and_report(study, args.output, progress=sys.stderr.isatty(), resume=True)
+    # the sample scan beside OUT/study.toml: the study reruns from there, and a first user has a
+    # real instrument file to try every command on
+    sample = Path(args.output).expanduser().resolve() / SAMPLE
+    if status != EXIT_INTERRUPTED and not sample.exists():
+        shutil.copyfile(path.parent / SAMPLE, sample)
+    if status == 0:
+        print(f"sample AFM scan for your first commands: {sample} (try: roughcontact inspect {sample})")
+    return status
 
 
 def add_commands(commands) -> None:

@@ -432,6 +432,10 @@ def _comparison_table(records, context):
 
 
 def _by_sample(records, context):
+    """Mean, spread and range of mu per sample and load over its replicates (None without replicates).
+
+    With one case per sample and load the table would only repeat the cases' own rows.
+    """
     rows = []
     for sample, group in grouped(records).items():
         for load in _loads(group):
@@ -452,7 +456,7 @@ def _by_sample(records, context):
                 if values:
                     row[f"{name}_mean [N]"] = float(np.mean(values))
             rows.append(row)
-    return rows
+    return rows if any(row["n"] > 1 for row in rows) else None
 
 
 def _mean_by_load(group: Sequence[CaseRecord], name: str) -> tuple[np.ndarray, np.ndarray]:

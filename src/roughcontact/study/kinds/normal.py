@@ -135,7 +135,7 @@ def _contact_maps(records, context):
     fields = [record.dataset() for record in chosen]
     if not chosen or "y" not in fields[0].dims:
         return None
-    figure, axes = new_figure(2, len(chosen), width=3.6, height=3.2)
+    figure, axes = new_figure(2, len(chosen), width=3.6 if len(chosen) > 1 else 4.6, height=3.2)
     for row, (name, cmap) in enumerate((("pressure", "magma"), ("gap", "viridis"))):
         unit = "Pa" if name == "pressure" else "m"
         shared = colour_scale(*(data[name] for data in fields), from_zero=True)
@@ -199,7 +199,7 @@ def _von_mises(records, context):
     chosen = evenly_chosen([r for r in records if "max_von_mises" in r.scalars], 4)
     if not chosen:
         return None
-    figure, axes = new_figure(1, len(chosen), width=3.6, height=3.2)
+    figure, axes = new_figure(1, len(chosen), width=3.6 if len(chosen) > 1 else 4.6, height=3.2)
     fields = [record.dataset()["von_mises"].isel(depth=0) for record in chosen]
     shared = colour_scale(*fields, from_zero=True, percentiles=(0, 100))  # smooth: the full range
     for column, (record, field) in enumerate(zip(chosen, fields, strict=True)):
