@@ -88,3 +88,20 @@ def test_one_spike_does_not_set_the_colour_scale():
 def test_panels_share_one_scale(fields):
     shared = colour_scale(*fields, from_zero=True, percentiles=(0, 100))
     assert (shared.low, shared.high) == (0, 3)
+
+
+def test_specks_amid_undefined_points_do_not_set_a_height_scale():
+    """A few stray pixels inside a lost region (frt-2.frt: 0.75 % of its points) keep the map readable."""
+    from roughcontact.plotting.topography import plot_heights
+    from roughcontact.topography import Topography
+
+    rng = np.random.default_rng(1)
+    heights = rng.normal(0.0, 1e-9, (60, 60))
+    undefined = np.zeros(heights.shape, dtype=bool)
+    undefined[:, :20] = True
+    undefined[::6, 2:18:6] = False  # 30 isolated pixels (0.7 % of the defined ones), far off
+    heights[::6, 2:18:6] = -70e-6
+    fig, ax = plot_heights(Topography(heights, 1e-6), undefined=undefined)
+    low, high = ax.collections[0].get_clim()
+    assert -5 < low < 0 < high < 5  # nm: set by the real surface, not by the -70 um specks
+    assert "30 specks" in ax.get_title()

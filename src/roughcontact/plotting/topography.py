@@ -21,6 +21,26 @@ def _title(topography: Topography) -> str:
     return str(topography.info.get("name") or topography.info.get("source") or "topography")
 
 
+SPECK = 10
+"""Defined points in a group smaller than this, amid undefined ones, do not set a map's colour scale."""
+
+
+def _specks(undefined: np.ndarray) -> np.ndarray:
+    """Return the defined points in connected groups of fewer than :data:`SPECK` points.
+
+    An instrument that loses most of a region often keeps scattered single pixels there, of any
+    height (SurfaceTopography's frt-2.frt: 244 such points, 0.75 % of its defined ones, down to
+    -70 um on a surface that spans 5 um); they are drawn, but would set the colour scale.
+    """
+    from scipy import ndimage
+
+    labels, count = ndimage.label(~undefined)
+    if count == 0:
+        return np.zeros(undefined.shape, dtype=bool)
+    sizes = ndimage.sum(~undefined, labels, np.arange(1, count + 1))
+    return np.isin(labels, 1 + np.flatnonzero(sizes < SPECK))
+
+
 def plot_heights(
     topography: Topography,
     ax: Axes | None = None,
@@ -44,7 +64,8 @@ def plot_heights(
     cmap : str
         Colour map of the height map.
     undefined : ndarray of bool, optional
-        Points the instrument did not record: drawn grey and left out of the colour scale.
+        Points the instrument did not record: drawn grey and left out of the colour scale, as are
+        the defined points in specks of fewer than :data:`SPECK` amid them (:func:`_specks`).
     percentiles : (float, float)
         Percentiles of the heights at the two ends of the colour scale ((0, 100): the full range).
 
@@ -55,11 +76,15 @@ def plot_heights(
     """
     fig, ax = axes_for(ax)
     heights = np.array(topography.heights, dtype=float)
+    specks = None
     if undefined is not None:
         heights[undefined] = np.nan
-    heights -= np.nanmean(heights)
+        specks = _specks(undefined)
+    surface = heights if specks is None else np.where(specks, np.nan, heights)  # what sets the scale
+    mean = np.nanmean(surface)
+    heights -= mean
     size_scale, size_label = prefixed_scale(max(topography.size), "m")
-    scale = colour_scale(heights, percentiles=percentiles)
+    scale = colour_scale(surface - mean, percentiles=percentiles)
     low, high = scale.low, scale.high
     height_scale, height_label = prefixed_scale(max(abs(low), abs(high)) or 1e-9, "m")
     coords = [c / size_scale for c in topography.coordinates()]
@@ -80,12 +105,14 @@ def plot_heights(
         )
         ax.set_aspect("equal")
         ax.set_ylabel(f"y ({size_label})")
-        words = f", {scale.words}" if scale.words else ""
+        words = f"\n{scale.words}" if scale.words else ""
         fig.colorbar(image, ax=ax, extend=scale.extend, label=f"height ({height_label}){words}")
     ax.set_xlabel(f"x ({size_label})")
     title = _title(topography)
     if undefined is not None and undefined.any():
         title += f"\n{100 * np.count_nonzero(undefined) / undefined.size:.3g} % undefined (grey)"
+        if specks.any():
+            title += f"\n{np.count_nonzero(specks)} specks amid them off the colour scale"
     ax.set_title(title)
     return fig, ax
 
