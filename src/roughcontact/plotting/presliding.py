@@ -291,7 +291,7 @@ def plot_displacement_path(
         Label to delta_x [m] at each step (step 0 the unloaded start). Cases that share one
         programme need only one entry.
     last_loop : (start, stop), optional
-        Steps of the analysed (last) loop, shaded.
+        Steps of the analysed (last) loop of the first path, shaded.
     points : dict of str to int, optional
         Steps of the points A, B, C of the last loop, marked on the first path.
     ax : matplotlib Axes, optional
@@ -306,7 +306,10 @@ def plot_displacement_path(
         delta = np.asarray(delta, dtype=float)
         ax.plot(np.arange(delta.size), delta / _LENGTH_SCALE, "-", linewidth=1.5, label=label)
     if last_loop is not None:
-        ax.axvspan(last_loop[0], last_loop[1] - 1, color="0.9", zorder=0, label="last loop (analysed)")
+        whose = "" if len(paths) == 1 else f" of {next(iter(paths))}"
+        ax.axvspan(
+            last_loop[0], last_loop[1] - 1, color="0.9", zorder=0, label=f"last loop{whose} (analysed)"
+        )
     first = np.asarray(next(iter(paths.values())), dtype=float)
     for name, step in (points or {}).items():
         colour = POINT_COLOURS.get(name, "black")
@@ -314,7 +317,7 @@ def plot_displacement_path(
     ax.set_xlabel("step")
     ax.set_ylabel(f"tangential displacement δ_x ({_LENGTH_UNIT})")
     if len(paths) > 1 or last_loop is not None or points:
-        legend(ax, fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0))  # beside the path
+        legend(ax, fontsize="small", loc="upper center", bbox_to_anchor=(0.5, -0.2))  # below the path
     return fig
 
 

@@ -410,16 +410,17 @@ def _path(records, context):
     chosen = [r for r in records if r.fields_path is not None]
     if not chosen:
         return None
-    paths: dict[str, np.ndarray] = {}
     first = chosen[0].dataset()
+    distinct: list[tuple[object, np.ndarray]] = []  # (record, delta_x) of each different programme
     for record in chosen:
         delta = np.asarray(record.dataset()["delta_x"], dtype=float)
-        if not any(
-            d.shape == delta.shape and np.allclose(d, delta, rtol=1e-9, atol=0) for d in paths.values()
-        ):
-            paths["programme" if not paths else _case_name(record)] = delta
-    if len(paths) > 1:
-        paths = {_case_name(chosen[0]) if k == "programme" else k: v for k, v in paths.items()}
+        if not any(d.shape == delta.shape and np.allclose(d, delta, rtol=1e-9, atol=0) for _, d in distinct):
+            distinct.append((record, delta))
+    if len(distinct) == 1:
+        paths = {"programme": distinct[0][1]}
+    else:  # named by what differs between the cases (their swept values), else by ball and load
+        names = [record.label if record.data.get("axes") else _case_name(record) for record, _ in distinct]
+        paths = dict(zip(names, (delta for _, delta in distinct), strict=True))
     start, stop = first.attrs.get("last_loop_start"), first.attrs.get("last_loop_stop")
     points = {
         str(name): int(step)
