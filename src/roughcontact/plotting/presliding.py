@@ -301,7 +301,8 @@ def plot_displacement_path(
     -------
     Figure
     """
-    fig, ax = axes_for(ax, figsize=(6.0, 3.4))
+    entries = len(paths) + (last_loop is not None) + len(points or {})
+    fig, ax = axes_for(ax, figsize=(6.5, 3.6 + 0.25 * -(-entries // 2)))  # legend rows below
     for label, delta in paths.items():
         delta = np.asarray(delta, dtype=float)
         ax.plot(np.arange(delta.size), delta / _LENGTH_SCALE, "-", linewidth=1.5, label=label)
@@ -317,7 +318,9 @@ def plot_displacement_path(
     ax.set_xlabel("step")
     ax.set_ylabel(f"tangential displacement δ_x ({_LENGTH_UNIT})")
     if len(paths) > 1 or last_loop is not None or points:
-        legend(ax, fontsize="small", loc="upper center", bbox_to_anchor=(0.5, -0.2))  # below the path
+        legend(
+            ax, fontsize="small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2 if entries > 3 else 1
+        )
     return fig
 
 

@@ -418,8 +418,10 @@ def _path(records, context):
             distinct.append((record, delta))
     if len(distinct) == 1:
         paths = {"programme": distinct[0][1]}
-    else:  # named by what differs between the cases (their swept values), else by ball and load
-        names = [record.label if record.data.get("axes") else _case_name(record) for record, _ in distinct]
+    else:  # named by ball and load, or by the swept values where those do not tell them apart
+        names = [_case_name(record) for record, _ in distinct]
+        if len(set(names)) < len(names):
+            names = [record.label for record, _ in distinct]
         paths = dict(zip(names, (delta for _, delta in distinct), strict=True))
     start, stop = first.attrs.get("last_loop_start"), first.attrs.get("last_loop_stop")
     points = {
