@@ -8,6 +8,8 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
+from ..units import prefixed_scale
+
 
 def axes_for(ax: Axes | None, figsize=(5.0, 4.0)) -> tuple[Figure, Axes]:
     """Return ``ax`` and its figure, or a new figure of ``figsize`` inches with one axes."""
@@ -46,6 +48,21 @@ class ColourScale:
     high: float
     words: str = ""
     extend: str = "neither"
+
+    def prefixed(self, unit: str) -> tuple[float, str]:
+        """Return (SI value of one shown unit, its label): the prefix for the larger end of the scale."""
+        return prefixed_scale(max(abs(self.low), abs(self.high)) or 1.0, unit)
+
+
+def shared_colorbar(image, axes, label: str, unit: str, scale: ColourScale, **options) -> None:
+    """Draw one colour bar for ``axes`` drawn with ``scale``: label, prefixed unit, what the ends clip.
+
+    ``options`` go to :meth:`matplotlib.figure.Figure.colorbar` (``shrink``, say).
+    """
+    shown = scale.prefixed(unit)[1]
+    text = f"{label} ({shown})" if shown else label
+    text += f"\n{scale.words}" if scale.words else ""
+    image.figure.colorbar(image, ax=axes, extend=scale.extend, label=text, **options)
 
 
 def clipped_limits(

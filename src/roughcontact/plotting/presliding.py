@@ -25,7 +25,7 @@ from matplotlib.patches import Rectangle
 
 from ..errors import InputError
 from ..units import prefixed_scale, unit_factor
-from .layout import axes_for, colour_scale, legend
+from .layout import axes_for, colour_scale, legend, shared_colorbar
 
 _LENGTH_UNIT, _FORCE_UNIT, _STIFFNESS_UNIT = "µm", "mN", "mN/µm"  # fixed, as in paper 001 Figs. 13-15
 _LENGTH_SCALE, _FORCE_SCALE, _STIFFNESS_SCALE = (
@@ -241,7 +241,7 @@ def plot_pressure_maps(
     if not maps:
         raise InputError("maps", "is empty.", "pass {label: 2-D array}.")
     shared = colour_scale(*maps.values(), from_zero=True)
-    factor, unit = prefixed_scale(shared.high, "Pa")
+    factor, _ = shared.prefixed("Pa")
     fig = Figure(figsize=(7.6, 3.4 * len(maps)), layout="constrained")
     axes = fig.subplots(len(maps), 2, squeeze=False)
     image = None
@@ -271,8 +271,7 @@ def plot_pressure_maps(
         side = prefixed_scale(within[1] - within[0], "m")
         width, height = (within[1] - within[0]) / side[0], (within[3] - within[2]) / side[0]
         zoomed.set_title(f"zoom {width:.3g} x {height:.3g} {side[1]}", fontsize="medium")
-    label = f"contact pressure ({unit})" + (f"\n{shared.words}" if shared.words else "")
-    fig.colorbar(image, ax=list(axes.ravel()), extend=shared.extend, shrink=0.9, label=label)
+    shared_colorbar(image, list(axes.ravel()), "contact pressure", "Pa", shared, shrink=0.9)
     return fig
 
 

@@ -11,7 +11,7 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import prefixed_scale
-from .layout import ColourScale, colour_scale
+from .layout import ColourScale, colour_scale, shared_colorbar
 
 
 def map_axes(
@@ -31,12 +31,13 @@ def map_axes(
     ``scale`` gives the ends (one scale for every panel of a figure); without it the field's own
     0.5-99.5 percentiles (:func:`~roughcontact.plotting.layout.colour_scale`). The colour bar says
     when its ends clip the data. With ``colorbar=False`` none is drawn: the caller draws one for
-    several panels of the same scale (:func:`shared_colorbar`). Returns the drawn mesh.
+    several panels of the same scale (:func:`~roughcontact.plotting.layout.shared_colorbar`).
+    Returns the drawn mesh.
     """
     x, y = np.asarray(field["x"]), np.asarray(field["y"])
     values = np.asarray(field, dtype=float).T
     scale = scale or colour_scale(values)
-    factor, _ = _unit(scale, unit)
+    factor, _ = scale.prefixed(unit)
     size_scale, size_unit = prefixed_scale(max(x.max() - x.min(), y.max() - y.min()) or 1e-9, "m")
     image = ax.pcolormesh(
         x / size_scale,
@@ -54,15 +55,3 @@ def map_axes(
     if colorbar:
         shared_colorbar(image, [ax], label, unit, scale)
     return image
-
-
-def _unit(scale: ColourScale, unit: str) -> tuple[float, str]:
-    return prefixed_scale(max(abs(scale.low), abs(scale.high)) or 1.0, unit)
-
-
-def shared_colorbar(image, axes: list[Axes], label: str, unit: str, scale: ColourScale) -> None:
-    """One colour bar for ``axes`` drawn with ``scale``: the label, its prefixed unit, what the ends clip."""
-    shown = _unit(scale, unit)[1]
-    text = f"{label} ({shown})" if shown else label
-    text += f"\n{scale.words}" if scale.words else ""
-    image.figure.colorbar(image, ax=axes, extend=scale.extend, label=text)

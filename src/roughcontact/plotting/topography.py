@@ -14,7 +14,7 @@ from matplotlib.figure import Figure
 from ..topography import Topography
 from ..topography.statistics import psd_1d, psd_radial
 from ..units import prefixed_scale
-from .layout import CLIP_PERCENTILES, axes_for, colour_scale
+from .layout import CLIP_PERCENTILES, axes_for, colour_scale, shared_colorbar
 
 
 def _title(topography: Topography) -> str:
@@ -85,8 +85,7 @@ def plot_heights(
     heights -= mean
     size_scale, size_label = prefixed_scale(max(topography.size), "m")
     scale = colour_scale(surface - mean, percentiles=percentiles)
-    low, high = scale.low, scale.high
-    height_scale, height_label = prefixed_scale(max(abs(low), abs(high)) or 1e-9, "m")
+    height_scale, height_label = scale.prefixed("m")
     coords = [c / size_scale for c in topography.coordinates()]
     if topography.dim == 1:
         ax.plot(coords[0], heights / height_scale, lw=0.8)
@@ -100,13 +99,12 @@ def plot_heights(
             cmap=colours,
             shading="auto",
             rasterized=True,
-            vmin=low / height_scale,
-            vmax=high / height_scale,
+            vmin=scale.low / height_scale,
+            vmax=scale.high / height_scale,
         )
         ax.set_aspect("equal")
         ax.set_ylabel(f"y ({size_label})")
-        words = f"\n{scale.words}" if scale.words else ""
-        fig.colorbar(image, ax=ax, extend=scale.extend, label=f"height ({height_label}){words}")
+        shared_colorbar(image, ax, "height", "m", scale)
     ax.set_xlabel(f"x ({size_label})")
     title = _title(topography)
     if undefined is not None and undefined.any():

@@ -272,8 +272,8 @@ def _load_interference(records, context):
 )
 def _von_mises(records, context):
     """Paper 002 Figs. 8-9: the stored von Mises maps of the first case, loading then unloading."""
-    from ...plotting.layout import colour_scale, new_figure
-    from ...plotting.study import map_axes, shared_colorbar
+    from ...plotting.layout import colour_scale, new_figure, shared_colorbar
+    from ...plotting.study import map_axes
 
     record = next((r for r in records if r.fields_path is not None), None)
     data = None if record is None else record.dataset()

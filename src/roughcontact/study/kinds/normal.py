@@ -128,8 +128,8 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
     "the nominal area in contact."
 )
 def _contact_maps(records, context):
-    from ...plotting.layout import colour_scale, new_figure
-    from ...plotting.study import map_axes, shared_colorbar
+    from ...plotting.layout import colour_scale, new_figure, shared_colorbar
+    from ...plotting.study import map_axes
 
     chosen = evenly_chosen([r for r in records if r.fields_path is not None], 4)
     fields = [record.dataset() for record in chosen]
@@ -193,8 +193,8 @@ def _load_approach(records, context):
     "scale from 0 to the largest value of all the panels."
 )
 def _von_mises(records, context):
-    from ...plotting.layout import colour_scale, new_figure
-    from ...plotting.study import map_axes, shared_colorbar
+    from ...plotting.layout import colour_scale, new_figure, shared_colorbar
+    from ...plotting.study import map_axes
 
     chosen = evenly_chosen([r for r in records if "max_von_mises" in r.scalars], 4)
     if not chosen:
