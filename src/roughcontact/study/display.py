@@ -100,6 +100,15 @@ def scaled(values: Sequence[Any], unit: str | None) -> tuple[str, list[str]] | N
     return label, [_text(n, scale) for n in numbers]
 
 
+def column_cells(values: Sequence[Any], unit: str | None) -> tuple[str, list[str]]:
+    """Return the values of one quantity as (prefixed unit, cells); a quantity with any text stays text.
+
+    Numbers share the prefix of the largest (:func:`scaled`); otherwise every value is shown as
+    written (label "") and blanks are empty.
+    """
+    return scaled(values, unit) or ("", ["" if blank(v) else str(v) for v in values])
+
+
 def shown(value: Any, unit: str | None) -> str:
     """One value as text with its own SI prefix and unit (``2.81 µm``); labels as they are."""
     if isinstance(value, list):
@@ -153,15 +162,10 @@ def columns(
                 ["" if blank(v) else shown(v, u) for v, u in zip(values, row_units, strict=True)]
             )
             continue
-        result = scaled(values, unit)
-        if result is None:
-            titles.append(name)
-            by_column.append(["" if blank(v) else str(v) for v in values])
-            continue
-        label, cells = result
+        label, column = column_cells(values, unit)
         titles.append(f"{name} ({label})" if label else name)
-        by_column.append(cells)
-    return titles, [list(cells) for cells in zip(*by_column, strict=True)] if by_column else []
+        by_column.append(column)
+    return titles, [list(row) for row in zip(*by_column, strict=True)] if by_column else []
 
 
 def text_table(titles: Sequence[str], cells: Sequence[Sequence[str]], indent: str = "") -> list[str]:

@@ -15,7 +15,7 @@ from typing import Any
 
 from ..topography.process import LEVELLING
 from ..units import format_si
-from .display import columns, number, scaled
+from .display import column_cells, columns, number
 from .kind import figure_caption
 from .outputs import (
     StoredAnalysis,
@@ -83,12 +83,12 @@ def _quantities(records: list, units: dict[str, str], caption: str) -> str:
     """Every scalar of up to a few cases as rows, in engineering units per row (unit in its own column)."""
     names = list(dict.fromkeys(name for record in records for name in record.scalars))
     titles = ["quantity", "unit"] + (["value"] if len(records) == 1 else [r.label for r in records])
-    cells = []
+    rows = []
     for name in names:
         values = [record.scalars.get(name) for record in records]
-        label, shown = scaled(values, units.get(name)) or ("", [str(v) for v in values])
-        cells.append([name, label, *shown])
-    return f"<p>{html.escape(caption)}</p>" + _html_table(titles, cells, {0, 1})
+        label, shown = column_cells(values, units.get(name))
+        rows.append([name, label, *shown])
+    return f"<p>{html.escape(caption)}</p>" + _html_table(titles, rows, {0, 1})
 
 
 def _image(path: Path, caption: str) -> str:
