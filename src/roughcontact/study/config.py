@@ -462,11 +462,14 @@ class _Builder:
             self.problem(Where((*where.path, *axis), error.field), error.problem, error.fix)
             return None
         sections = {axis: "sweep" for axis in sweep} | {axis: "zip" for axis in zipped}
-        sections |= {f"{axis} values": list(dict.fromkeys(row[axis] for row in rows)) for axis in sections}
+        swept = {
+            axis: (section, list(dict.fromkeys(row[axis] for row in rows)))
+            for axis, section in sections.items()
+        }
         cases = []
         before = len(self.problems)
         for number, axes in enumerate(rows):
-            case = self.case(name, kind, number, base, axes, where, sections)
+            case = self.case(name, kind, number, base, axes, where, swept)
             if case is not None:
                 cases.append(case)
             if len(self.problems) > before + 5:  # one bad axis fails every case: say it a few times
@@ -507,9 +510,9 @@ class _Builder:
         return spec.model_copy(update=updates)
 
     def case(
-        self, analysis: str, kind: Kind, index: int, base: dict, axes: dict, where: Where, sections: dict
+        self, analysis: str, kind: Kind, index: int, base: dict, axes: dict, where: Where, swept: dict
     ) -> Case | None:
-        """Validate one case of an analysis (its ``axes`` the swept values, ``sections`` their tables).
+        """Validate one case of an analysis: ``axes`` its swept values, ``swept`` each axis' table and values.
 
         Its problems are said once for the analysis, not once per case: a problem of a key every
         case shares reads the same in each (the study reports it once), and a problem of a swept
@@ -518,12 +521,15 @@ class _Builder:
         """
         before = len(self.problems)
         made = self._case(analysis, kind, index, base, axes, where)
-        self.problems[before:] = [self._swept(p, where, axes, sections) for p in self.problems[before:]]
+        self.problems[before:] = [self._swept(p, where, axes, swept) for p in self.problems[before:]]
         return made
 
     @staticmethod
-    def _swept(problem: Problem, where: Where, axes: dict, sections: dict) -> Problem:
-        """Return ``problem`` placed at its sweep key when it is about a swept value."""
+    def _swept(problem: Problem, where: Where, axes: dict, swept: dict) -> Problem:
+        """Return ``problem`` placed at its sweep key when it is about a swept value.
+
+        ``swept`` maps each axis to its table ("sweep" or "zip") and its values as written.
+        """
         inside = problem.path[len(where.path) :] if problem.path[: len(where.path)] == where.path else ()
         axis = (
             ".".join(map(str, problem.path))
@@ -533,9 +539,9 @@ class _Builder:
         axis = axis if axis in axes else (str(inside[0]) if inside and str(inside[0]) in axes else None)
         if axis is None:
             return problem
-        section = sections.get(axis, "sweep")
+        section, values = swept.get(axis, ("sweep", []))
         fix = problem.fix or ""
-        others = [v for v in sections.get(f"{axis} values", ()) if v != axes[axis]]
+        others = [v for v in values if v != axes[axis]]
         if others and (
             "kind" in problem.problem or "unit" in problem.problem or "expected" in problem.problem
         ):

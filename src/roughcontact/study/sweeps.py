@@ -44,15 +44,10 @@ def _range_values(spec: dict, where: str) -> list:
         factor, dimension = unit_factor(stop_unit)
         own_factor, own_dimension = unit_factor(unit)
         if dimension != own_dimension:
-            number = (
-                spec["stop"]
-                if isinstance(spec["stop"], int | float)
-                else _split_quantity(spec["stop"], where)[0]
-            )
             raise InputError(
                 f"{where}.stop",
                 f"{spec['stop']!r} is not the same kind of quantity as start = {spec['start']!r}.",
-                f"write start and stop in units of one kind, e.g. stop = '{number:g} {unit}'."
+                f"write start and stop in units of one kind, e.g. stop = '{stop:g} {unit}'."
                 if unit
                 else "give start a unit too, or neither a unit.",
             )
