@@ -143,3 +143,19 @@ def test_file_with_measured_summit_heights(capsys, shared_topographies, scalars)
     assert parameters["summit_radius"] > 0
     assert parameters["peak_interference"] > 0
     assert json.loads(out)["analyses"][0]["cases"][0]["parameters"]["nominal_area"] == pytest.approx(1e-10)
+
+
+def test_bem_with_volume_plasticity_draws_the_section(capsys, tmp_path):
+    out = tmp_path / "out"
+    status, _, err = run(
+        capsys, "asperity", "--paper002", "--bem", "--plasticity", "volume", "--layers", "6",
+        "--grid", "24", "--steps", "4", "-o", out, "--dpi", "40",
+    )  # fmt: skip
+    assert status == 0, err
+    for name in ("bem_load_interference", "bem_von_mises", "bem_von_mises_section"):
+        assert (out / "figures" / f"{name}.png").stat().st_size > 0
+
+
+def test_volume_options_need_volume_plasticity(capsys):
+    status, _, err = run(capsys, "asperity", "--paper002", "--bem", "--grid", "24", "--layers", "6")
+    assert status == EXIT_INPUT_ERROR and "--layers" in err and "--plasticity volume" in err

@@ -237,3 +237,51 @@ def test_a_curve_needs_max_force_and_nominal_area_together():
         kind.parameters.model_validate(
             {"m0": "0.002 um^2", "m2": 0.002, "m4": "0.017 1/um^2", "material": "SU-8", "max_force": "1 mN"}
         )
+
+
+def test_load_unload_with_volume_plasticity_equals_compress_island_and_keeps_residual_stress():
+    inputs = CaseInputs(
+        {"island": Paper002Island(generate="paper002_island", shape=(48, 48), seed=4)}, {}, MATERIALS
+    )
+    kind = get_kind("load_unload")
+    parameters = kind.parameters.model_validate(
+        {
+            "topography": "island",
+            "material": "SU-8",
+            "substrate": "silicon wafer",
+            "film_thickness": "6.3 um",
+            "peak_force": "1000 uN",
+            "reference_force": "25 uN",
+            "plasticity": "volume",
+            "layers": 8,
+        }
+    )
+    output = kind.run(parameters, inputs)
+    direct = compress_island(
+        paper002_island(48, seed=4),
+        SU8,
+        substrate=SILICON,
+        film_thickness=6.3e-6,
+        plasticity="volume",
+        layers=8,
+    )
+    np.testing.assert_allclose(output.dataset["approach"], direct.interference, rtol=1e-12, atol=0)
+    assert output.scalars["residual_interference"] == direct.residual_interference
+    assert output.scalars["yield_strength"] == SU8.yield_strength  # paper 002 Table I, the default
+    assert output.scalars["plastic_dissipation"] > 0
+    # the last map, 0 uN after unloading, shows the residual stress; the first, 0 uN before loading, nothing
+    maps = output.dataset["von_mises"]
+    assert float(maps.isel(map=0).max()) == 0.0 and float(maps.isel(map=-1).max()) > 0.0
+    section = output.dataset["von_mises_section"]
+    assert section.sizes["map"] == maps.sizes["map"] and section.sizes["z"] == 8
+    assert output.dataset.attrs["stress_depth"] == pytest.approx(direct.path.depths[0])
+
+
+def test_load_unload_refuses_an_unknown_plasticity(tmp_path):
+    path = tmp_path / "bad.toml"
+    path.write_text(
+        STUDY_HEAD.replace('model = "asperity"\nmaterial = "SU-8"\n', 'model = "load_unload"\n')
+        + 'topography = "rough"\nmaterial = "SU-8"\npeak_force = "1000 uN"\nplasticity = "bulk"\n'
+    )
+    with pytest.raises(StudyError, match="plasticity"):
+        load_study(path)

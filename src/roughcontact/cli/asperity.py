@@ -94,8 +94,27 @@ def _island(command: CommandStudy, args: argparse.Namespace, material, max_force
             "peak_force": (max_force, "--max-force"),
             "reference_force": (reference, "--reference-force"),
             "hardness": (args.hardness, "--hardness"),
-        },
+            "plasticity": (args.plasticity, "--plasticity"),
+        }
+        | _volume_options(args),
     )
+
+
+def _volume_options(args: argparse.Namespace) -> dict:
+    """Return the keys of ``--plasticity volume`` (--yield-strength is shared with --law jackson_green)."""
+    flags = {
+        "--yield-strength": "yield_strength",
+        "--hardening-modulus": "hardening_modulus",
+        "--depth": "depth",
+        "--layers": "layers",
+    }
+    given = {key: (getattr(args, key), flag) for flag, key in flags.items() if getattr(args, key) is not None}
+    if args.plasticity != "volume":
+        extra = [flag for flag, key in flags.items() if key in given and key != "yield_strength"]
+        if extra:
+            raise InputError(extra[0], "applies to --plasticity volume only.", "add --plasticity volume.")
+        return {}
+    return given
 
 
 def add_commands(commands) -> None:
@@ -146,6 +165,15 @@ def add_commands(commands) -> None:
     asperity.add_argument(
         "--film-thickness", default="6.3 um", help="film thickness for --bem with --substrate"
     )
+    asperity.add_argument(
+        "--plasticity",
+        choices=("surface", "volume"),
+        default="surface",
+        help="--bem plastic model: pressure cap at the hardness (surface) or J2 plasticity below it (volume)",
+    )
+    asperity.add_argument("--hardening-modulus", help="--plasticity volume: hardening slope, e.g. '0 GPa'")
+    asperity.add_argument("--depth", help="--plasticity volume: depth of the plastic volume, e.g. '2 um'")
+    asperity.add_argument("--layers", type=int, help="--plasticity volume: cells through the depth (16)")
     asperity.add_argument(
         "--measured", type=Path, help="CSV of a measured load-interference curve: interference_m,force_N"
     )

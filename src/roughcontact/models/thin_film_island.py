@@ -38,6 +38,7 @@ import numpy as np
 from .._deprecation import moved
 from ..contact import NormalContactResult, compliance_for, solve_normal
 from ..contact.plastic import LOAD_UNLOAD_UNITS, load_unload_curve, load_unload_dataset, load_unload_scalars
+from ..contact.volume_plastic import VOLUME_UNITS, VolumePlasticResult, solve_elastic_plastic
 from ..elasticity.halfspace import ElasticLayer
 from ..elasticity.stress import StressField, subsurface_stress
 from ..errors import InputError
@@ -45,6 +46,9 @@ from ..materials import Material
 from ..progress import tracked
 from ..topography import Topography
 from . import paper002
+
+PLASTICITY = ("surface", "volume")
+"""Plasticity models of :func:`compress_island`: the surface cap at the hardness, or J2 in the volume."""
 
 
 @dataclass(frozen=True)
@@ -142,6 +146,86 @@ class IslandCompression:
         )
 
 
+@dataclass(frozen=True)
+class IslandVolumeCompression:
+    """Load-unload of an island with plasticity in the volume (``compress_island(plasticity="volume")``).
+
+    Attributes
+    ----------
+    path : VolumePlasticResult
+        The steps, loading then unloading, with their fields (pressure, von Mises and plastic
+        strain at every depth, residual stress at the end).
+    interference : ndarray
+        omega [m] per step in the experiment's convention (zero at ``reference_force`` on loading).
+    residual_interference : float
+        omega at which the unloaded surface first touches the punch [m].
+    reference_force : float
+        Load of zero interference [N].
+    """
+
+    path: VolumePlasticResult
+    interference: np.ndarray
+    residual_interference: float
+    reference_force: float
+
+    UNITS: ClassVar[dict[str, str]] = VOLUME_UNITS
+    """SI unit of each dimensional scalar of :meth:`scalars`."""
+
+    @property
+    def peak(self) -> int:
+        """Index of the peak load."""
+        return self.path.peak
+
+    @property
+    def branch(self) -> np.ndarray:
+        """Branch of each step: "loading" or "unloading"."""
+        return self.path.branch
+
+    @property
+    def force(self) -> np.ndarray:
+        """Load of each step [N]."""
+        return self.path.force
+
+    @property
+    def converged(self) -> bool:
+        """True when every step met its tolerance (the solver raises otherwise)."""
+        return self.path.converged
+
+    @property
+    def iterations(self) -> int:
+        """Fixed-point iterations of all steps."""
+        return self.path.iterations
+
+    @property
+    def residual(self) -> float:
+        """Largest final residual of the steps."""
+        return self.path.residual
+
+    def curve(self) -> dict[str, np.ndarray]:
+        """Return the path, one entry per step; ``approach`` is the interference (zero at the reference)."""
+        return self.path.curve() | {"approach": self.interference}
+
+    def scalars(self) -> dict[str, float]:
+        """Return the path's scalars with the interferences in the experiment's convention (SI)."""
+        return self.path.scalars() | {
+            "peak_interference": float(self.interference[self.peak]),
+            "residual_interference": self.residual_interference,
+        }
+
+    def to_xarray(self):
+        """Return the curve as an ``xarray.Dataset`` on the dimension ``point`` (SI, with units)."""
+        data = self.path.to_xarray()
+        data["approach"] = ("point", self.interference, {"units": "m"})
+        data.attrs.update(self.scalars() | {"reference_force": self.reference_force})
+        return data
+
+
+def _volume_depth(topography: Topography, layers: int, substrate, film_thickness: float) -> float:
+    """Default depth of the plastic volume: cells as thick as a pixel, within the film if there is one."""
+    depth = layers * min(topography.spacing)
+    return depth if substrate is None else min(depth, film_thickness)
+
+
 def _default_loading(peak_force: float, reference_force: float) -> np.ndarray:
     return np.unique(np.concatenate([np.linspace(0.0, peak_force, 11), [reference_force]]))
 
@@ -158,7 +242,12 @@ def compress_island(
     unloading_forces=None,
     reference_force: float = paper002.REFERENCE_FORCE,
     tolerance: float = 1e-8,
-) -> IslandCompression:
+    plasticity: str = "surface",
+    yield_strength: float | None = None,
+    hardening_modulus: float = 0.0,
+    depth: float | None = None,
+    layers: int = 16,
+) -> IslandCompression | IslandVolumeCompression:
     """Load an island to ``peak_force`` with a rigid flat punch and unload it (paper 002 Figs. 7-9).
 
     Parameters
@@ -184,10 +273,16 @@ def compress_island(
         Load of zero interference [N] (25 uN); it must be one of the loading targets.
     tolerance : float
         Solver tolerance (:func:`~roughcontact.contact.solve_normal`).
+    plasticity : {"surface", "volume"}
+        "surface": the pressure cap at the hardness (the cheaper approximation, module docstring);
+        "volume": J2 plasticity below the surface
+        (:func:`~roughcontact.contact.volume_plastic.solve_elastic_plastic`), with the film's
+        ``yield_strength`` (default the material's), ``hardening_modulus`` [Pa] and a volume
+        ``depth`` [m] of ``layers`` cells (default: cells as thick as a pixel, within the film).
 
     Returns
     -------
-    IslandCompression
+    IslandCompression or IslandVolumeCompression
 
     Raises
     ------
@@ -197,9 +292,8 @@ def compress_island(
     ConvergenceError
         A step did not converge.
     """
-    hardness = material.hardness if hardness is None else hardness
-    if hardness is None:
-        raise InputError("hardness", "the material has no hardness.", "pass hardness= in Pa.")
+    if plasticity not in PLASTICITY:
+        raise InputError("plasticity", f"unknown plasticity {plasticity!r}.", f"use one of {PLASTICITY}.")
     if loading_forces is None:
         loading = _default_loading(peak_force, reference_force)
     else:
@@ -211,6 +305,28 @@ def compress_island(
         raise InputError("unloading_forces", "must fall strictly from peak_force.", "e.g. [8e-4, ..., 0].")
     if not np.any(loading == reference_force):
         raise InputError("reference_force", "is not among the loading targets.", "add it to loading_forces.")
+    if plasticity == "volume":
+        path = solve_elastic_plastic(
+            topography,
+            material,
+            forces=np.concatenate([loading, unloading]),
+            yield_strength=yield_strength,
+            hardening_modulus=hardening_modulus,
+            depth=_volume_depth(topography, layers, substrate, film_thickness) if depth is None else depth,
+            layers=layers,
+            substrate=substrate,
+            film_thickness=film_thickness if substrate is not None else None,
+            boundary="free",
+            contact_tolerance=tolerance,
+            branch=["loading"] * loading.size + ["unloading"] * unloading.size,
+        )
+        zero = path.approach[int(np.flatnonzero(loading == reference_force)[0])]
+        return IslandVolumeCompression(
+            path, path.approach - zero, path.residual_interference - zero, reference_force
+        )
+    hardness = material.hardness if hardness is None else hardness
+    if hardness is None:
+        raise InputError("hardness", "the material has no hardness.", "pass hardness= in Pa.")
     if substrate is None:
         compliance = compliance_for(topography, material, boundary="free")
     else:

@@ -14,14 +14,23 @@ loading branch carries ``reference_force`` (paper 002: 25 uN, the smallest load 
 resolves; default here 0, the first touch). The body is a film of ``film_thickness`` bonded to a
 ``substrate`` (paper 002: SU-8, 6.3 um, on silicon), or a half-space of ``material``.
 
-The von Mises stress (paper 002 eq. 12) is that of an elastic half-space under each step's surface
-pressure, on the plane ``stress_depth`` below the surface (0: the surface, as the paper's maps).
+``plasticity`` chooses the plastic model. ``"surface"`` (default, the cheaper approximation): the
+pressure capped at the hardness as above; its von Mises stress (paper 002 eq. 12) is that of an
+elastic half-space under each step's surface pressure, on the plane ``stress_depth`` below the
+surface (0: the surface, as the paper's maps). ``"volume"``: J2 plasticity with linear hardening
+in a volume of ``layers`` cells down to ``depth`` below the surface
+(:mod:`roughcontact.contact.volume_plastic`; ``yield_strength`` default the material's, paper 002
+Table I: 0.165 GPa for SU-8; ``hardening_modulus`` default 0), in the film on its substrate where
+one is given. Its maps are of the total stress (pressure plus residual) of the cell layer nearest
+``stress_depth`` (the top cell's centre for 0), and a section through the peak pressure shows the
+stress in depth; at zero load after unloading they show the residual stress (paper 002 Fig. 9e).
 
-Assumptions (those of the model; see :mod:`roughcontact.models.thin_film_island`): plasticity is
-confined to the surface (no subsurface plastic zone, no hardening, no residual stress after
-unloading, so a map at 0 N on unloading is empty where the paper's FEM shows residual stress); the
-film is laterally infinite (the island's free side walls are not modelled); strains are small and
-the load quasi-static; the punch is rigid (diamond is ~150 times stiffer than SU-8).
+Assumptions (those of the model; see :mod:`roughcontact.models.thin_film_island`): with
+``plasticity = "surface"`` plasticity is confined to the surface (no subsurface plastic zone, no
+hardening, no residual stress after unloading, so a map at 0 N on unloading is empty where the
+paper's FEM shows residual stress); the film is laterally infinite (the island's free side walls
+are not modelled); strains are small and the load quasi-static; the punch is rigid (diamond is ~150
+times stiffer than SU-8).
 
 Scalars: peak force, peak and residual interference, peak contact area, fraction of it at the
 hardness, largest pressure, largest plastic flattening, largest von Mises stress at the peak.
@@ -32,17 +41,20 @@ Dataset: the curve (``branch``, ``approach`` (the interference), ``force``, ``co
 
 Figures: ``load_interference`` (paper 002 Fig. 7: this analysis' curves with those of every
 ``asperity`` analysis of the study and the measured curve of ``[analysis.compare]``, against
-omega / omega_c where the asperity analyses give one omega_c) and ``von_mises`` (Figs. 8-9).
+omega / omega_c where the asperity analyses give one omega_c), ``von_mises`` (Figs. 8-9) and, for
+``plasticity = "volume"``, ``von_mises_section`` (the same loads on a vertical section).
 """
 
 from __future__ import annotations
 
 import math
+from typing import Literal
 
 import numpy as np
 from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
+from ...contact.volume_plastic import VOLUME_UNITS
 from ...models.thin_film_island import IslandCompression
 from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
@@ -84,6 +96,16 @@ class LoadUnloadParameters(CaseParameters):
         paper 002 Figs. 8-9).
     map_points : int
         Largest number of map points per axis that is stored.
+    plasticity : {"surface", "volume"}
+        The pressure cap at the hardness, or J2 plasticity in the volume.
+    yield_strength : float, optional
+        Yield strength [Pa] for ``plasticity = "volume"`` (default: the material's).
+    hardening_modulus : float
+        Linear hardening slope [Pa] for ``plasticity = "volume"`` (0: perfectly plastic).
+    depth : float, optional
+        Depth [m] of the plastic volume (default: ``layers`` pixels, within the film).
+    layers : int
+        Cells through the depth.
     """
 
     topography: TopographyName
@@ -98,6 +120,11 @@ class LoadUnloadParameters(CaseParameters):
     stress_depth: Length = 0.0
     von_mises_loads: list[Force] | None = None
     map_points: int = Field(default=128, ge=8)
+    plasticity: Literal["surface", "volume"] = "surface"
+    yield_strength: Pressure | None = None
+    hardening_modulus: Pressure = 0.0
+    depth: Length | None = None
+    layers: int = Field(default=16, ge=1)
 
     @model_validator(mode="after")
     def _consistent(self) -> LoadUnloadParameters:
@@ -189,6 +216,13 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
         parameters.peak_force, parameters.reference_force, parameters.load_steps
     )
     options = {} if parameters.film_thickness is None else {"film_thickness": parameters.film_thickness}
+    if parameters.plasticity == "volume":
+        options |= {
+            "yield_strength": parameters.yield_strength,
+            "hardening_modulus": parameters.hardening_modulus,
+            "depth": parameters.depth,
+            "layers": parameters.layers,
+        }
     compression = compress_island(
         surface,
         material,
@@ -199,15 +233,26 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
         unloading_forces=unloading,
         reference_force=parameters.reference_force,
         tolerance=parameters.tolerance,
+        plasticity=parameters.plasticity,
         **options,
     )
     peak_index = compression.peak
-    depth = [parameters.stress_depth]
     chosen = _map_steps(parameters, loading, unloading)
-    maps = {i: compression.stress(i, depths=depth).von_mises()[0] for i in sorted({*chosen, peak_index})}
+    if parameters.plasticity == "volume":
+        path = compression.path
+        layer = int(np.argmin(np.abs(path.depths - parameters.stress_depth)))
+        stress_depth = float(path.depths[layer])
+        maps = {i: path.von_mises[i, layer].astype(float) for i in sorted({*chosen, peak_index})}
+    else:
+        stress_depth = parameters.stress_depth
+        maps = {
+            i: compression.stress(i, depths=[stress_depth]).von_mises()[0]
+            for i in sorted({*chosen, peak_index})
+        }
     scalars = compression.scalars() | {"max_von_mises_at_peak": float(maps[peak_index].max())}
     dataset = compression.to_xarray()
-    dataset.attrs["stress_depth"] = parameters.stress_depth
+    dataset.attrs["stress_depth"] = stress_depth
+    dataset.attrs["plasticity"] = parameters.plasticity
     coarse = [_coarsened(maps[i], surface.coordinates(), parameters.map_points) for i in chosen]
     x, y = coarse[0][1]
     dataset["von_mises"] = xr.DataArray(
@@ -217,15 +262,40 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
             "x": ("x", x, {"units": "m"}),
             "y": ("y", y, {"units": "m"}),
             "map_point": ("map", np.array(chosen)),
-            "map_force": ("map", np.array([compression.steps[i].force for i in chosen]), {"units": "N"}),
+            "map_force": ("map", np.asarray(compression.curve()["force"])[chosen], {"units": "N"}),
             "map_branch": ("map", compression.branch[chosen].astype(str)),
         },
         attrs={
             "units": "Pa",
-            "long_name": f"von Mises stress at z = {parameters.stress_depth:g} m (block maxima)",
+            "long_name": f"von Mises stress at z = {stress_depth:g} m (block maxima)",
         },
     )
+    if parameters.plasticity == "volume":
+        dataset["von_mises_section"] = _section(
+            compression.path, chosen, peak_index, surface, parameters.map_points
+        )
     return CaseOutput(scalars, dataset)
+
+
+def _section(path, chosen: list[int], peak: int, surface, points: int):
+    """Return the von Mises stress of the chosen steps on the x-z section through the peak pressure."""
+    import xarray as xr
+
+    row = int(np.unravel_index(np.argmax(path.pressure[peak]), path.pressure[peak].shape)[1])
+    x = surface.coordinates()[0][:, 0] if surface.coordinates()[0].ndim == 2 else surface.coordinates()[0]
+    step = max(1, math.ceil(x.size / points))
+    sections = np.stack([path.von_mises[i][:, ::step, row].T for i in chosen])  # (map, x, z)
+    y = surface.coordinates()[1]
+    y_value = float(y[0, row] if y.ndim == 2 else y[row])
+    return xr.DataArray(
+        sections.astype(np.float32),
+        dims=("map", "x_section", "z"),
+        coords={
+            "x_section": ("x_section", x[::step], {"units": "m"}),
+            "z": ("z", path.depths, {"units": "m"}),
+        },
+        attrs={"units": "Pa", "long_name": f"von Mises stress on the section y = {y_value:g} m"},
+    )
 
 
 # --- figures -------------------------------------------------------------------------------------
@@ -294,11 +364,12 @@ def _von_mises(records, context):
         field = data["von_mises"].isel(map=index)
         if float(field.max()) > 0:
             image = map_axes(ax, field, "von Mises", "Pa", cmap="inferno", scale=shared, colorbar=False)
-        else:  # no load: this model keeps no residual stress (module notes)
+        else:  # no load and nothing left: no plastic strain yet, or the surface model (module notes)
+            volume = data.attrs.get("plasticity") == "volume"
             ax.text(
                 0.5,
                 0.5,
-                "no pressure, no stress\n(no residual stress\nin this model)",
+                "no pressure, no stress" + ("" if volume else "\n(no residual stress\nin this model)"),
                 ha="center",
                 va="center",
                 transform=ax.transAxes,
@@ -314,14 +385,64 @@ def _von_mises(records, context):
     return figure
 
 
+@caption(
+    "Von Mises stress of the first case on a vertical section through the peak pressure, at the "
+    "stored loads, loading then unloading, on one colour scale (volume plasticity only): the plastic "
+    "zone below the contacts and, at zero load, the residual stress (paper 002 Fig. 9e)."
+)
+def _von_mises_section(records, context):
+    from ...plotting.layout import colour_scale, new_figure, shared_colorbar
+
+    record = next((r for r in records if r.fields_path is not None), None)
+    data = None if record is None else record.dataset()
+    if data is None or "von_mises_section" not in data:
+        return None
+    sections = data["von_mises_section"]
+    count = sections.sizes["map"]
+    columns = min(3, count)
+    rows = -(-count // columns)
+    figure, axes = new_figure(rows, columns, width=4.2, height=2.6)
+    flat = [ax for row in axes for ax in row]
+    shared = colour_scale(sections, from_zero=True, percentiles=(0, 100))
+    factor, _ = shared.prefixed("Pa")
+    x = sections["x_section"].values * 1e6
+    z = sections["z"].values * 1e6
+    image = None
+    for index, ax in enumerate(flat):
+        if index >= count:
+            ax.set_visible(False)
+            continue
+        image = ax.pcolormesh(
+            x,
+            z,
+            sections.isel(map=index).values.T / factor,
+            cmap="inferno",
+            vmin=shared.low / factor,
+            vmax=shared.high / factor,
+            shading="nearest",
+        )
+        ax.invert_yaxis()
+        ax.set_xlabel("x (µm)")
+        ax.set_ylabel("depth z (µm)")
+        force = float(data["von_mises"].map_force[index])
+        ax.set_title(f"{str(data['von_mises'].map_branch.values[index])}, W = {force * 1e6:.0f} µN")
+    shared_colorbar(image, flat[:count], "von Mises stress", "Pa", shared)
+    figure.suptitle(sections.attrs.get("long_name", "von Mises stress on a section"))
+    return figure
+
+
 KIND = Kind(
     name="load_unload",
     summary="elastic-plastic load-unload of a surface or a film island against a rigid flat punch "
     "(FFT-BEM, force control, paper 002 Figs. 7-9)",
     parameters=LoadUnloadParameters,
     run=run,
-    units=IslandCompression.UNITS | {"max_von_mises_at_peak": "Pa"},
-    figures={"load_interference": _load_interference, "von_mises": _von_mises},
+    units=IslandCompression.UNITS | VOLUME_UNITS | {"max_von_mises_at_peak": "Pa"},
+    figures={
+        "load_interference": _load_interference,
+        "von_mises": _von_mises,
+        "von_mises_section": _von_mises_section,
+    },
     compare=MeasuredCurve,
     headline=("peak_interference", "residual_interference", "peak_contact_area", "max_von_mises_at_peak"),
     renamed={"surface": "topography"},
