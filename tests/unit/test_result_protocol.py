@@ -59,6 +59,22 @@ def _load_unload():
     return load_unload(surface, get_material("SU-8"), max_force=2e-7, steps=3)
 
 
+def _volume_load_unload():
+    from roughcontact.contact import load_unload
+    from roughcontact.topography.generate import sphere
+
+    ball = sphere((16, 16), (1e-4, 1e-4), radius=1e-3, kind="paraboloid")
+    steel = get_material("SU-8")
+    return load_unload(ball, steel, max_force=2e-3, steps=2, plasticity="volume", depth=5e-5, layers=6)
+
+
+def _volume_island():
+    from roughcontact.models.paper002 import paper002_island
+    from roughcontact.models.thin_film_island import compress_island
+
+    return compress_island(paper002_island(16, seed=1), get_material("SU-8"), plasticity="volume", layers=4)
+
+
 def _island():
     from roughcontact.models.paper002 import paper002_island
     from roughcontact.models.thin_film_island import compress_island
@@ -114,6 +130,8 @@ BUILDERS = {
     "pre-sliding (paper 001)": _presliding,
     "load-unload": _load_unload,
     "island compression (paper 002)": _island,
+    "volume load-unload": _volume_load_unload,
+    "island in the volume (paper 002)": _volume_island,
     "Winkler-Lennard-Jones": _winkler,
     "statistical load-unload": _statistical,
     "asperity parameters": _asperity_parameters,
@@ -126,6 +144,8 @@ SOLVED = {
     "pre-sliding (paper 001)",
     "load-unload",
     "island compression (paper 002)",
+    "volume load-unload",
+    "island in the volume (paper 002)",
 }
 
 

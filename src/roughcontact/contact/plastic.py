@@ -42,6 +42,7 @@ from ..materials import Material
 from ..topography import Topography
 from .normal import compliance_for, solve_normal
 from .result import NormalContactResult
+from .volume_plastic import VolumePlasticResult, solve_elastic_plastic
 
 LOAD_UNLOAD_UNITS = {
     "peak_force": "N",
@@ -196,8 +197,15 @@ def load_unload(
     boundary: str | None = None,
     tolerance: float = 1e-8,
     max_iterations: int = 10_000,
-) -> LoadUnloadResult:
+    plasticity: str = "surface",
+    **volume,
+) -> LoadUnloadResult | VolumePlasticResult:
     """Load to ``max_force`` or ``max_approach`` and unload, with the pressure capped at the hardness.
+
+    With ``plasticity="volume"`` the body yields below the surface instead (J2 plasticity,
+    :func:`~roughcontact.contact.volume_plastic.solve_elastic_plastic`, which takes the keywords in
+    ``volume``: ``depth``, ``layers``, ``yield_strength``, ``hardening_modulus``, ...): ``steps``
+    equal increments of force (or approach) up to the peak and back down to zero.
 
     Parameters
     ----------
@@ -220,8 +228,27 @@ def load_unload(
 
     Returns
     -------
-    LoadUnloadResult
+    LoadUnloadResult, or VolumePlasticResult for ``plasticity="volume"``
     """
+    if plasticity not in ("surface", "volume"):
+        raise InputError("plasticity", f"unknown plasticity {plasticity!r}.", "use 'surface' or 'volume'.")
+    if plasticity == "volume":
+        if counter_body is not None:
+            raise InputError(
+                "counter_body", "volume plasticity is solved against a rigid flat.", "leave it out."
+            )
+        peak = max_force if max_force is not None else max_approach
+        up = np.linspace(0.0, peak, steps + 1)[1:]
+        programme = np.concatenate([up, up[::-1][1:], [0.0]])
+        kind = "forces" if max_force is not None else "approaches"
+        return solve_elastic_plastic(
+            topography,
+            material,
+            boundary=boundary,
+            contact_tolerance=tolerance,
+            **{kind: programme},
+            **volume,
+        )
     hardness = material.hardness if hardness is None else hardness
     if hardness is None:
         raise InputError("hardness", "no hardness given and the material has none.", "pass hardness= in Pa.")
