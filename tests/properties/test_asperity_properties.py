@@ -13,6 +13,7 @@ from roughcontact.asperity import (
     unloading_exponent,
     unloading_load,
 )
+from roughcontact.asperity.elastic_plastic import unloading_area
 
 W_STAR = st.floats(min_value=0.0, max_value=110.0, allow_nan=False)
 
@@ -43,6 +44,24 @@ def test_unloading_stays_between_zero_and_the_peak_and_below_loading(w_max, frac
     assert 0.0 <= load <= peak
     # an unloaded summit carries less than on first loading to the same interference (up to the 3 % KE jump)
     assert load <= 1.03 * kogut_etsion_load(fraction * w_max) + 1e-12
+
+
+# fractions of omega_max: 0, or above 1e-12 (below it x^1.5 underflows to 0 while x does not)
+FRACTION = st.one_of(st.just(0.0), st.floats(min_value=1e-12, max_value=1.0))
+
+
+@given(st.floats(min_value=1e-6, max_value=110.0), FRACTION, FRACTION)
+def test_unloading_area_is_finite_bounded_monotonic_and_vanishes_with_the_load(w_max, f1, f2):
+    omega_c = 1e-8
+    max_area = kogut_etsion_area(w_max)  # in units of pi R omega_c
+    omega = np.array([min(f1, f2), max(f1, f2)]) * w_max * omega_c
+    kwargs = dict(max_interference=w_max * omega_c, critical_interference=omega_c)
+    area = unloading_area(omega, max_area=max_area, **kwargs)
+    load = unloading_load(omega, max_load=kogut_etsion_load(w_max), **kwargs)
+    assert np.all(np.isfinite(area))
+    assert np.all((area >= 0.0) & (area <= max_area))
+    assert area[0] <= area[1]  # never grows as the flat withdraws
+    assert np.all((area > 0) == (load > 0))  # both vanish at omega_res
 
 
 @given(

@@ -9,11 +9,18 @@ paper 002 eq. 11,
 .. math:: P = P(\omega_{max})\left(\frac{\omega - \omega_{res}}{\omega_{max} - \omega_{res}}\right)^{n},
           \qquad n = 1.5\,(\omega^*_{max})^{-0.0331},
 
-with omega_res(omega_max) of Etsion, Kligerman and Kadin (2005). Summing over the population on the
-nominal area A_n gives the load-interference curves of both branches, the real contact area
-(loading), the number of contacts and the fraction of plastically deformed summits (omega_max >
-omega_c) among those touching. Summits that stay below omega_c unload on their Hertz curve, so a
-purely elastic population unloads along its loading curve.
+with omega_res(omega_max) of Etsion, Kligerman and Kadin (2005), and its contact area falls from
+the loading law's area at omega_max as
+
+.. math:: A = A(\omega_{max})\left(\frac{\omega - \omega_{res}}{\omega_{max} - \omega_{res}}\right)^{m_A},
+          \qquad m_A = (\omega^*_{max})^{-0.12}
+
+(:func:`~roughcontact.asperity.elastic_plastic.unloading_area`; the coefficient is recalled, not
+verified against the papers' text). Summing over the population on the nominal area A_n gives the
+load-interference curves of both branches, the real contact area on both, the number of contacts
+and the fraction of plastically deformed summits (omega_max > omega_c) among those touching. A
+summit's area and load vanish together at its omega_res. Summits that stay below omega_c unload on
+their Hertz curve (A = pi R omega), so a purely elastic population unloads along its loading curve.
 
 The Gaussian has no highest summit, so both branches run between the peak and a small floor load:
 ``reference_force`` where given (paper 002 marks omega = 0 at W = 25 uN, the smallest load its
@@ -64,7 +71,9 @@ class StatisticalLoadUnload:
     force : ndarray
         Load [N].
     contact_area : ndarray
-        Real contact area [m^2] (loading; NaN on unloading, for which no fit is implemented).
+        Real contact area [m^2], on both branches (unloading: the summed
+        :func:`~roughcontact.asperity.elastic_plastic.unloading_area`); equal to the loading area at
+        the peak and vanishing with the load.
     number_of_contacts : ndarray
         Summits in contact [-].
     plastic_fraction : ndarray
@@ -111,7 +120,7 @@ class StatisticalLoadUnload:
         "interference_ratio": ("", "interference over omega_c"),
         "separation": ("m", "flat to the summits' mean plane"),
         "force": ("N", "load"),
-        "contact_area": ("m^2", "real contact area (loading only)"),
+        "contact_area": ("m^2", "real contact area"),
         "number_of_contacts": ("", "summits in contact"),
         "plastic_fraction": ("", "fraction of the touching summits loaded beyond omega_c"),
     }
@@ -211,21 +220,22 @@ class _Population:
         plastic = weights[yielded].sum() / touching if touching > 0 else 0.0
         return self.count * (weights @ load), self.count * (weights @ area), self.count * touching, plastic
 
-    def unloading(self, separation: float, lowest: float) -> tuple[float, float, float]:
-        """Return force [N], contacts and plastic fraction at ``separation`` after loading to ``lowest``."""
+    def unloading(self, separation: float, lowest: float) -> tuple[float, float, float, float]:
+        """Return force [N], area [m^2], contacts and plastic fraction at ``separation`` after ``lowest``."""
         index, omega_max = self._touching(lowest)
         weights = self.distribution.weights[index]
-        max_load, _ = self._loading(omega_max)
+        max_load, max_area = self._loading(omega_max)
         # Hertz summits never yield: they unload on their loading curve.
         w_max = omega_max / self.omega_c if self.law != "hertz" else np.zeros_like(omega_max)
         residual = ep.residual_interference_ratio(w_max) * omega_max
         omega = self.distribution.heights[index] - separation
         stretch = np.clip((omega - residual) / (omega_max - residual), 0.0, 1.0)
         load = max_load * stretch ** ep.unloading_exponent(w_max)
+        area = max_area * stretch ** ep.unloading_area_exponent(w_max)  # elastic_plastic.unloading_area
         touching = load > 0
         in_contact = weights[touching].sum()
         plastic = weights[touching & (w_max > 1.0)].sum() / in_contact if in_contact > 0 else 0.0
-        return self.count * (weights @ load), self.count * in_contact, plastic
+        return self.count * (weights @ load), self.count * (weights @ area), self.count * in_contact, plastic
 
 
 def _separation_at(force_of, target: float, high: float, scale: float) -> float:
@@ -337,8 +347,8 @@ def statistical_load_unload(
         force, area, count, plastic = population.loading(float(d))
         rows.append(("loading", d, force, area, count, plastic))
     for d in np.linspace(lowest, end, steps)[1:]:
-        force, count, plastic = population.unloading(float(d), lowest)
-        rows.append(("unloading", d, force, math.nan, count, plastic))
+        force, area, count, plastic = population.unloading(float(d), lowest)
+        rows.append(("unloading", d, force, area, count, plastic))
     branch, separation, force, area, count, plastic = (np.array(column) for column in zip(*rows, strict=True))
     return StatisticalLoadUnload(
         branch=branch,
