@@ -33,6 +33,8 @@ SU8, DIAMOND, SILICON = (get_material(n) for n in ("SU-8", "diamond flat tip", "
 MATERIALS = {"SU-8": SU8, "diamond flat tip": DIAMOND, "silicon wafer": SILICON}
 REDUCED = {
     "shape = 384": "shape = 32",
+    "shape = 128": "shape = 64",
+    "layers = 16": "layers = 8",
     "steps = 40": "steps = 8",
     "load_steps = 10": "load_steps = 5",
     "replicate = [0, 1, 2]": "replicate = [0, 1]",
@@ -63,8 +65,9 @@ def test_example_end_to_end_reproduces_section_iv_and_draws_kke_against_bem(cli,
     assert status == 0, err
 
     rows = _rows(out / "results.csv")
-    assert [(r["analysis"], r["status"]) for r in rows] == [("kke", "done"), ("bem", "done"), ("bem", "done")]
-    kke, bem = rows[0], rows[1:]
+    analyses = [("kke", "done"), ("bem", "done"), ("bem", "done"), ("bem_volume", "done")]
+    assert [(r["analysis"], r["status"]) for r in rows] == analyses
+    kke, bem, volume = rows[0], rows[1:3], rows[3]
     omega_c = float(kke["critical_interference [m]"])
     for name in ("peak_interference", "residual_interference"):
         assert float(kke[f"{name}_over_omega_c"]) == pytest.approx(
@@ -79,6 +82,10 @@ def test_example_end_to_end_reproduces_section_iv_and_draws_kke_against_bem(cli,
         assert float(row["max_pressure [Pa]"]) <= SU8.hardness
     # the two replicates are two realisations of the island (derived seeds)
     assert bem[0]["peak_interference [m]"] != bem[1]["peak_interference [m]"]
+    # plasticity in the volume: the yield strength of Table I, and stress left at zero load
+    assert float(volume["yield_strength [Pa]"]) == SU8.yield_strength
+    assert float(volume["max_residual_von_mises [Pa]"]) > 0
+    assert (out / "figures" / "bem_volume_von_mises_section.png").stat().st_size > 0
 
     table = {row["quantity"]: row for row in read_table(out / "tables" / "kke_paper002.csv")}
     for key, value in PRINTED.items():

@@ -168,9 +168,13 @@ class _Anderson:
         self.previous = (x, g)
         if not self.df:
             return g
-        df = np.stack(self.df, axis=1)
-        gamma, *_ = np.linalg.lstsq(df, f, rcond=None)
-        return g - np.stack(self.dg, axis=1) @ gamma
+        # least squares min |f - DF gamma| by its normal equations (m x m; the vectors are long)
+        gram = np.array([[a @ b for b in self.df] for a in self.df])
+        gamma = np.linalg.lstsq(gram, np.array([a @ f for a in self.df]), rcond=1e-12)[0]
+        step = g.copy()
+        for weight, column in zip(gamma, self.dg, strict=True):
+            step -= weight * column
+        return step
 
 
 @dataclass(frozen=True)

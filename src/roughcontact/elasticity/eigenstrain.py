@@ -245,6 +245,7 @@ class EigenstrainOperator:
             np.empty((magnitude.size, nodes)),
         )
         _factor(magnitude, np.diff(column.edges), column.lam, column.mu, *column.base, *self._factors)
+        self._pressure_response = {}
 
     @property
     def depths(self) -> np.ndarray:
@@ -312,14 +313,15 @@ class EigenstrainOperator:
         """
         if pressure.shape != self.shape:
             raise InputError("pressure", f"shape {pressure.shape}, expected {self.shape}.", None)
-        c = self.column
-        nk = self._kx.size
-        traction = np.zeros((3, nk), dtype=np.complex128)
-        traction[2] = self._forward(pressure).ravel()
         lateral = self.boundary == "periodic" if periodic_lateral is None else periodic_lateral
-        load = np.zeros((6, c.cells, nk), dtype=np.complex128)
-        stress, _ = self._solve(load, traction, lateral)
-        return self._inverse(stress)
+        if lateral not in self._pressure_response:
+            # the stress of a unit pressure spectrum, once: every later pressure is a product
+            c, nk = self.column, self._kx.size
+            unit = np.zeros((3, nk), dtype=np.complex128)
+            unit[2] = 1.0
+            empty = np.zeros((6, c.cells, nk), dtype=np.complex128)
+            self._pressure_response[lateral] = self._solve(empty, unit, lateral)[0]
+        return self._inverse(self._pressure_response[lateral] * self._forward(pressure))
 
 
 # --- the column solve, per mode, in the frame (xi along k, eta across, z) ----------------------------
