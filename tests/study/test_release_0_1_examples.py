@@ -2,7 +2,7 @@
 
 They spell keys the old way (``surface``, ``counter``, ``counter_surface``, the friction ``load``,
 ``model = "tangential_path"``): each is accepted with a note saying what to write instead, and each
-case gets the same key (model, parameters, inputs and seeds) as the case of today's example, so it
+of their cases gets the same key (model, parameters, inputs and seeds) as the case of today's example, so it
 computes the same numbers and a ``--resume`` of an old output folder reuses them.
 """
 
@@ -35,6 +35,8 @@ def test_an_old_example_builds_todays_cases(tmp_path, name):
     shutil.copy(TODAY[name], tmp_path / f"today_{name}")  # beside the same files: keys hold their paths
     old = load_study(tmp_path / name)
     today = load_study(tmp_path / f"today_{name}")
-    assert [case.key for case in old.cases] == [case.key for case in today.cases]
+    # today's examples may have grown analyses since (paper002: bem_volume); the old ones are unchanged
+    names = {case.analysis for case in old.cases}
+    assert [case.key for case in old.cases] == [case.key for case in today.cases if case.analysis in names]
     assert old.notes and all("is now called" in note for note in old.notes)
     assert not today.notes  # today's examples use today's spellings
