@@ -12,7 +12,7 @@ CURVE = {
     "branch": np.array(["loading"] * 3 + ["unloading"] * 2),
     "approach": np.array([0.0, 1e-8, 2e-8, 1.5e-8, 1e-8]),
     "force": np.array([25e-6, 4e-4, 1e-3, 5e-4, 25e-6]),
-    "contact_area": np.array([1e-12, 5e-12, 9e-12, np.nan, np.nan]),
+    "contact_area": np.array([1e-12, 5e-12, 9e-12, 7e-12, 2e-12]),
 }
 
 
@@ -26,10 +26,15 @@ def test_fig7_scales_interference_by_omega_c_and_load_to_micronewtons():
     assert lines["KKE, unloading"].get_linestyle() == "--"
 
 
-def test_area_plot_draws_the_loading_branch_only():
+def test_area_plot_draws_loading_solid_and_unloading_dashed_in_one_colour():
     fig, ax = plot_area_load({"KKE": CURVE})
-    (line,) = ax.get_lines()
-    np.testing.assert_allclose(line.get_ydata(), [1, 5, 9], rtol=1e-12, atol=0)
+    loading, unloading = ax.get_lines()
+    np.testing.assert_allclose(loading.get_ydata(), [1, 5, 9], rtol=1e-12, atol=0)
+    branch = np.asarray(CURVE["branch"])
+    expected = np.asarray(CURVE["contact_area"])[branch != "loading"] / 1e-12
+    expected = np.concatenate([[9.0], expected])  # the dashed branch starts at the peak
+    np.testing.assert_allclose(unloading.get_ydata(), expected, rtol=1e-12, atol=0)
+    assert unloading.get_linestyle() == "--" and unloading.get_color() == loading.get_color()
 
 
 def test_von_mises_maps_one_panel_per_step():

@@ -61,13 +61,20 @@ def plot_load_interference(
 
 
 def plot_area_load(curves: dict[str, dict], ax: Axes | None = None):
-    """Draw the real contact area (um^2) against load (uN) on loading, for each labelled curve dict."""
+    """Draw the real contact area (um^2) against load (uN), loading solid and unloading dashed, per curve."""
     fig, ax = axes_for(ax)
     for label, curve in curves.items():
-        loading = np.asarray(curve["branch"]) == "loading"
-        area = np.asarray(curve["contact_area"])[loading]
-        load = np.asarray(curve["force"])[loading] / _LOAD_SCALE
-        ax.plot(load, area / _AREA_SCALE, "-o", ms=3, label=label)
+        branch = np.asarray(curve["branch"])
+        area = np.asarray(curve["contact_area"]) / _AREA_SCALE
+        load = np.asarray(curve["force"]) / _LOAD_SCALE
+        (line,) = ax.plot(
+            load[branch == "loading"], area[branch == "loading"], "-o", ms=3, label=f"{label}, loading"
+        )
+        unloading = branch == "unloading"
+        if unloading.any():
+            ax.plot(
+                load[unloading], area[unloading], "--", color=line.get_color(), label=f"{label}, unloading"
+            )
     ax.set_xlabel(f"load ({_LOAD_UNIT})")
     ax.set_ylabel(f"real contact area ({_AREA_UNIT})")
     legend(ax, fontsize="small")

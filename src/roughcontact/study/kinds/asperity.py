@@ -34,7 +34,7 @@ peak and residual interference, also over omega_c. Dataset: the curve (``branch`
 
 Figures: ``load_interference`` (paper 002 Fig. 7: load against omega / omega_c, loading solid,
 unloading dashed, with the measured curve of ``[analysis.compare]``) and ``contact_area`` (real
-contact area against load on loading). Table: ``paper002`` (section IV: printed values against
+contact area against load, loading and unloading). Table: ``paper002`` (section IV: printed values against
 this study's, for the cases with ``paper002 = true``).
 """
 
@@ -307,7 +307,10 @@ def _load_interference(records, context):
     return draw_load_interference(curves, common_omega_c(with_curve), measured_of(context))
 
 
-@caption("Real contact area against load on loading, from the statistical KKE model.")
+@caption(
+    "Real contact area against load from the statistical KKE model, loading (solid) and unloading "
+    "(dashed; the single-asperity unloading area, docs/asperity.md)."
+)
 def _contact_area(records, context):
     from ...plotting.asperity import plot_area_load
 
@@ -315,7 +318,7 @@ def _contact_area(records, context):
     if not curves:
         return None
     figure, ax = plot_area_load(curves)
-    ax.set_title("real contact area on loading (statistical)")
+    ax.set_title("real contact area (statistical)")
     return figure
 
 
