@@ -70,11 +70,10 @@ def plot_area_load(curves: dict[str, dict], ax: Axes | None = None):
         (line,) = ax.plot(
             load[branch == "loading"], area[branch == "loading"], "-o", ms=3, label=f"{label}, loading"
         )
-        unloading = branch == "unloading"
-        if unloading.any():
-            ax.plot(
-                load[unloading], area[unloading], "--", color=line.get_color(), label=f"{label}, unloading"
-            )
+        unloading = np.flatnonzero(branch == "unloading")
+        if unloading.size:
+            joined = np.concatenate([[unloading[0] - 1], unloading])  # from the peak
+            ax.plot(load[joined], area[joined], "--", color=line.get_color(), label=f"{label}, unloading")
     ax.set_xlabel(f"load ({_LOAD_UNIT})")
     ax.set_ylabel(f"real contact area ({_AREA_UNIT})")
     legend(ax, fontsize="small")
