@@ -139,3 +139,37 @@ def test_shear_in_y_is_shear_in_x_transposed():
     # Equal up to the Nyquist modes, where rfft2 treats the two axes differently.
     for ca, cb in (("xx", "yy"), ("zz", "zz"), ("xz", "yz"), ("xy", "xy")):
         np.testing.assert_allclose(a.component(ca)[0], b.component(cb)[0].T, atol=1e-4)
+
+
+def test_film_stress_of_the_same_material_as_its_substrate_is_the_half_space():
+    from roughcontact.elasticity.halfspace import ElasticLayer
+    from roughcontact.materials import Material
+
+    steel = Material(youngs_modulus=200e9, poissons_ratio=0.3)
+    n, size = 32, 1e-6
+    x = np.arange(n) * size / n
+    xx, yy = np.meshgrid(x, x, indexing="ij")
+    pressure = 1e9 * np.exp(-((xx - size / 2) ** 2 + (yy - size / 2) ** 2) / (0.1 * size) ** 2)
+    depths = [0.0, 0.1e-6, 0.3e-6]  # in the film and below it
+    layer = ElasticLayer(0.2e-6, steel, base=steel)
+    film = subsurface_stress(pressure, (size, size), depths, poissons_ratio=0.3, layer=layer)
+    half = subsurface_stress(pressure, (size, size), depths, poissons_ratio=0.3)
+    assert np.abs(film.components - half.components).max() < 1e-12 * pressure.max()
+
+
+def test_film_stress_meets_the_surface_conditions_and_a_stiff_substrate_concentrates_it():
+    from roughcontact.elasticity.halfspace import ElasticLayer
+    from roughcontact.materials import Material
+
+    su8, silicon = Material(7.64e9, 0.22), Material(130e9, 0.28)
+    n, size = 64, 30e-6
+    x = np.arange(n) * size / n
+    xx, yy = np.meshgrid(x, x, indexing="ij")
+    pressure = 1e8 * np.exp(-((xx - size / 2) ** 2 + (yy - size / 2) ** 2) / (3e-6) ** 2)
+    on_silicon = subsurface_stress(
+        pressure, (size, size), [0.0, 3e-6], poissons_ratio=0.22, layer=ElasticLayer(3e-6, su8, base=silicon)
+    )
+    assert np.abs(on_silicon.component("zz")[0] + pressure).max() < 1e-9 * pressure.max()
+    assert np.abs(on_silicon.component("xz")[0]).max() < 1e-9 * pressure.max()
+    half = subsurface_stress(pressure, (size, size), [3e-6], poissons_ratio=0.22)
+    assert -on_silicon.component("zz")[1].min() > -half.component("zz")[0].min()  # the wafer carries more

@@ -169,3 +169,31 @@ def test_one_programme_only():
         solve_elastic_plastic(_ball(16), STEEL, forces=[1.0], approaches=[1e-9], depth=RADIUS_C)
     with pytest.raises(InputError):
         solve_elastic_plastic(_ball(16), STEEL, forces=[np.nan], depth=RADIUS_C)
+
+
+def test_a_thick_film_on_a_substrate_is_the_half_space():
+    """Film 40 volumes deep on a soft substrate: the same pressures, plastic strain and residual (1e-3)."""
+    glass = Material(youngs_modulus=70e9, poissons_ratio=0.2)
+    forces = P_C * np.array([4.0, 8.0, 0.0])
+    half = _path(32, forces=[4, 8, 0])
+    film = solve_elastic_plastic(
+        _ball(32), STEEL, forces=forces, depth=4 * RADIUS_C, layers=16,
+        substrate=glass, film_thickness=160 * RADIUS_C,
+    )  # fmt: skip
+    # pressures, plastic strain and residual interference; the loaded approach differs by the layered
+    # surface kernel's mean mode on a free window (a uniform shift, SurfaceCompliance notes)
+    assert np.abs(film.pressure - half.pressure).max() < 1e-3 * half.pressure.max()
+    assert np.abs(film.plastic_strain - half.plastic_strain).max() < 1e-3 * np.abs(half.plastic_strain).max()
+    assert film.residual_interference == pytest.approx(half.residual_interference, rel=1e-3)
+
+
+def test_a_stiff_substrate_under_a_thin_film_shrinks_the_interference():
+    """Film 4 a_c thick: on diamond-like stiffness the peak interference falls below the half-space's."""
+    stiff = Material(youngs_modulus=2000e9, poissons_ratio=0.2)
+    half = _path(32, forces=[8])
+    film = solve_elastic_plastic(
+        _ball(32), STEEL, forces=P_C * np.array([8.0]), depth=4 * RADIUS_C, layers=16,
+        substrate=stiff, film_thickness=4 * RADIUS_C,
+    )  # fmt: skip
+    assert film.approach[0] < 0.9 * half.approach[0]
+    assert film.dissipation[0] > 0

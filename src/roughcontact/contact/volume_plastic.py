@@ -339,20 +339,19 @@ class _Body:
         self.operator = eigenstrain.EigenstrainOperator(
             topography.shape, topography.size, self.column, boundary=self.boundary
         )
-        self.layered = substrate is not None
+        self.layer = layer
         self.shape = topography.shape
         self.size = topography.size
 
     def pressure_stress(self, pressure: np.ndarray) -> np.ndarray:
-        """Stress (6, layers, nx, ny) [Pa] of the surface pressure alone at the cell centres."""
-        if self.layered:
-            return self.operator.traction_stress(pressure)
+        """Stress (6, layers, nx, ny) [Pa] of the pressure alone at the cell centres (exact in depth)."""
         return subsurface_stress(
             pressure,
             self.size,
             self.column.centres,
             poissons_ratio=self.material.poissons_ratio,
             boundary=self.boundary,
+            layer=self.layer,
         ).components
 
 

@@ -53,9 +53,10 @@ Why finite elements in depth rather than the closed-form Mindlin kernels with a 
     of Frérot et al.: the same column takes a film on a substrate (paper 002's SU-8 on silicon)
     without new kernels, and its error is a plain mesh error in depth that the validation tests
     measure and that falls as the cells shrink (second order in the cell thickness). The surface
-    pressure's own stress in a homogeneous half-space is taken from the exact Fourier solution
-    (:func:`~roughcontact.elasticity.stress.subsurface_stress`); in a film it comes from this column
-    loaded by the traction (:meth:`EigenstrainOperator.traction_stress`).
+    pressure's own stress is taken from the exact Fourier solution, of the half-space or of the film on
+    its substrate (:func:`~roughcontact.elasticity.stress.subsurface_stress`);
+    :meth:`EigenstrainOperator.traction_stress` gives the column's own, which converges to it (the
+    tests compare the two).
 
 Boundaries: periodic fields are exact in the plane. A free window is zero-padded to twice its size
 per axis, as the surface kernels are: the plastic zone is one of a periodic array of images a

@@ -246,6 +246,115 @@ def _airy_basis(z: np.ndarray, youngs_modulus: float, poissons_ratio: float) -> 
     )
 
 
+FILM_MODES_LIMIT = 700.0
+"""Largest q t solved with the film's Airy modes; above it a mode sees a half-space (e^{-700})."""
+
+
+def _film_modes(
+    s, film_youngs_modulus, film_poissons_ratio, substrate_youngs_modulus, substrate_poissons_ratio
+):
+    """Solve the film-on-substrate Airy system for sigma_zz(0) = -1 at each q t = ``s`` (q = 1 units).
+
+    Returns the coefficients (n, 6) (four film modes scaled by ``film_scale``, two decaying
+    substrate modes scaled by ``substrate_scale``), ``film_scale`` (4, n) and ``substrate_scale`` (n).
+    """
+    film_surface = _airy_basis(np.zeros_like(s), film_youngs_modulus, film_poissons_ratio)
+    film_interface = _airy_basis(s, film_youngs_modulus, film_poissons_ratio)
+    substrate = _airy_basis(s, substrate_youngs_modulus, substrate_poissons_ratio)
+    grow = np.exp(-s)  # scale of the growing film modes
+    film_scale = np.array([grow, grow, np.ones_like(s), np.ones_like(s)])
+    substrate_scale = np.exp(s)  # decaying substrate modes measured from the interface
+    matrix = np.zeros((s.size, 6, 6))
+    rhs = np.zeros((s.size, 6))
+    matrix[:, 0, :4] = (film_surface[2] * film_scale).T  # sigma_zz(0) = -p
+    matrix[:, 1, :4] = (film_surface[3] * film_scale).T  # sigma_xz(0) = 0
+    rhs[:, 0] = -1.0
+    for row, field in enumerate(range(4), start=2):  # continuity of v, w, s_zz, s_xz at z = t
+        matrix[:, row, :4] = (film_interface[field] * film_scale).T
+        matrix[:, row, 4:] = -(substrate[field][2:] * substrate_scale).T
+    return np.linalg.solve(matrix, rhs[..., None])[..., 0], film_scale, substrate_scale
+
+
+def film_stress_modes(
+    q: np.ndarray,
+    depth: float,
+    thickness: float,
+    film_youngs_modulus: float,
+    film_poissons_ratio: float,
+    substrate_youngs_modulus: float,
+    substrate_poissons_ratio: float,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    r"""Stress at ``depth`` of a film bonded to a substrate under a surface pressure mode, per sigma_zz(0).
+
+    For the pressure p cos(q xi) on a film of ``thickness`` t perfectly bonded to a substrate
+    half-space, the stresses at depth z (in the film for z <= t, in the substrate below) are those of
+    the Airy modes of :func:`film_on_substrate_factor` with its coefficients (for q t above
+    :data:`FILM_MODES_LIMIT` the half-space's, which the film is at those wavelengths):
+    sigma_xixi = f''(z), sigma_zz = -f(z), sigma_xiz = f'(z) (times cos, cos and sin of q xi; q = 1
+    units) and sigma_etaeta = nu (sigma_xixi + sigma_zz) (plane strain). Returned as complex spectra
+    relative to the spectrum of sigma_zz(0) = -p, as
+    :func:`~roughcontact.elasticity.stress.subsurface_stress` uses them (the half-space limit is
+    (1 - qz) e^{-qz}, 2 nu e^{-qz}, (1 + qz) e^{-qz} and -i qz e^{-qz}).
+
+    Parameters
+    ----------
+    q : ndarray
+        Wavevector magnitudes |q| [rad/m], > 0.
+    depth, thickness : float
+        Depth z >= 0 and film thickness t > 0 [m].
+    film_youngs_modulus, film_poissons_ratio, substrate_youngs_modulus, substrate_poissons_ratio : float
+        Elastic constants [Pa, -].
+
+    Returns
+    -------
+    (xixi, etaeta, zz, xiz) : ndarrays shaped like ``q``
+
+    References
+    ----------
+    Johnson, K. L. (1985), sec. 2.7 (Airy functions of a periodic surface load). Perriot, A. and
+    Barthel, E. (2004). J. Mater. Res. 19, 600-608. doi:10.1557/jmr.2004.19.2.600
+    """
+    q = np.asarray(q, dtype=float)
+    s, inverse = np.unique(q * thickness, return_inverse=True)
+    deep = s > FILM_MODES_LIMIT  # the film is a half-space there (module notes)
+    s = np.minimum(s, FILM_MODES_LIMIT)
+    coefficients, film_scale, substrate_scale = _film_modes(
+        s, film_youngs_modulus, film_poissons_ratio, substrate_youngs_modulus, substrate_poissons_ratio
+    )
+    qz = s * depth / thickness
+    in_film = depth <= thickness
+    if in_film:
+        ep, em = np.exp(qz), np.exp(-qz)
+        modes = [
+            (ep, ep, ep),  # f, f', f'' of e^z
+            (qz * ep, (qz + 1) * ep, (qz + 2) * ep),
+            (em, -em, em),
+            (qz * em, (1 - qz) * em, (qz - 2) * em),
+        ]
+        weights = [coefficients[:, i] * film_scale[i] for i in range(4)]
+        nu = film_poissons_ratio
+    else:
+        em = np.exp(-qz)
+        modes = [(em, -em, em), (qz * em, (1 - qz) * em, (qz - 2) * em)]
+        weights = [coefficients[:, 4 + i] * substrate_scale for i in range(2)]
+        nu = substrate_poissons_ratio
+    f = sum(w * m[0] for w, m in zip(weights, modes, strict=True))
+    df = sum(w * m[1] for w, m in zip(weights, modes, strict=True))
+    d2f = sum(w * m[2] for w, m in zip(weights, modes, strict=True))
+    # relative to sigma_zz(0) = -1: sigma = (value) x (-1) x ... ; sigma_zz(z) = -f, so zz / zz(0) = f
+    xixi, zz, xiz = -d2f, f, 1j * df
+    if deep.any():
+        if not in_film:
+            raise InputError(
+                "depth", "stress below a film at q t > 700 is not resolved.", "use fewer pixels."
+            )
+        z = np.unique(q * thickness)[deep] * depth / thickness
+        decay = np.exp(-z)
+        xixi[deep], zz[deep], xiz[deep] = (1 - z) * decay, (1 + z) * decay, -1j * z * decay
+    etaeta = nu * (xixi + zz)
+    return tuple(part[inverse].reshape(q.shape) for part in (xixi, etaeta, zz, xiz))
+
+
 def film_on_substrate_factor(
     qt: np.ndarray,
     film_youngs_modulus: float,
@@ -282,21 +391,10 @@ def film_on_substrate_factor(
     """
     qt = np.asarray(qt, dtype=float)
     s, inverse = np.unique(np.minimum(qt, 40.0), return_inverse=True)  # F(40) = 1 to 1e-16
+    coefficients, film_scale, _ = _film_modes(
+        s, film_youngs_modulus, film_poissons_ratio, substrate_youngs_modulus, substrate_poissons_ratio
+    )
     film_surface = _airy_basis(np.zeros_like(s), film_youngs_modulus, film_poissons_ratio)
-    film_interface = _airy_basis(s, film_youngs_modulus, film_poissons_ratio)
-    substrate = _airy_basis(s, substrate_youngs_modulus, substrate_poissons_ratio)
-    grow = np.exp(-s)  # scale of the growing film modes
-    film_scale = np.array([grow, grow, np.ones_like(s), np.ones_like(s)])
-    substrate_scale = np.exp(s)  # decaying substrate modes measured from the interface
-    matrix = np.zeros((s.size, 6, 6))
-    rhs = np.zeros((s.size, 6))
-    matrix[:, 0, :4] = (film_surface[2] * film_scale).T  # sigma_zz(0) = -p
-    matrix[:, 1, :4] = (film_surface[3] * film_scale).T  # sigma_xz(0) = 0
-    rhs[:, 0] = -1.0
-    for row, field in enumerate(range(4), start=2):  # continuity of v, w, s_zz, s_xz at z = t
-        matrix[:, row, :4] = (film_interface[field] * film_scale).T
-        matrix[:, row, 4:] = -(substrate[field][2:] * substrate_scale).T
-    coefficients = np.linalg.solve(matrix, rhs[..., None])[..., 0]
     surface_w = np.einsum("ks,sk->s", film_surface[1] * film_scale, coefficients[:, :4])
     reference = 2.0 * (1.0 - film_poissons_ratio**2) / film_youngs_modulus
     return (surface_w / reference)[inverse].reshape(qt.shape)

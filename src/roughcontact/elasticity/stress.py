@@ -43,7 +43,7 @@ import numpy as np
 from scipy import fft
 
 from ..errors import InputError
-from .kernels import wavevectors
+from .kernels import film_stress_modes, wavevectors
 
 COMPONENTS = ("xx", "yy", "zz", "xy", "xz", "yz")
 
@@ -111,6 +111,26 @@ def _local_modes(q, z, normal, along, across, nu):
     return tuple(decay * c for c in (xixi, etaeta, zz, xieta, xiz, etaz))
 
 
+def _film_modes(q, z, normal, layer):
+    """Local (xi, eta, z) stress spectra at depth z of a film on its substrate under ``normal`` = -p."""
+    film, substrate = layer.material, layer.base
+    transfer = np.zeros((4,) + q.shape, dtype=complex)
+    positive = q > 0
+    modes = film_stress_modes(
+        q[positive],
+        z,
+        layer.thickness,
+        film.youngs_modulus,
+        film.poissons_ratio,
+        substrate.youngs_modulus,
+        substrate.poissons_ratio,
+    )
+    for row, mode in enumerate(modes):
+        transfer[row][positive] = mode
+    xixi, etaeta, zz, xiz = (t * normal for t in transfer)
+    return xixi, etaeta, zz, np.zeros_like(normal), xiz, np.zeros_like(normal)
+
+
 def subsurface_stress(
     pressure: np.ndarray,
     size: tuple[float, float],
@@ -120,6 +140,7 @@ def subsurface_stress(
     traction: tuple[np.ndarray, np.ndarray] | None = None,
     boundary: str = "periodic",
     padding: int = 2,
+    layer=None,
 ) -> StressField:
     """Stress below the surface caused by pixel-wise surface tractions.
 
@@ -140,6 +161,11 @@ def subsurface_stress(
         Periodic tractions, or a finite patch (zero-padded).
     padding : int
         Padding factor per axis for ``boundary="free"`` (>= 2).
+    layer : ElasticLayer, optional
+        The body is a film bonded to an elastic substrate (``ElasticLayer(thickness, film,
+        base=substrate)``): the pressure's stress is that of the film on its substrate
+        (:func:`~roughcontact.elasticity.kernels.film_stress_modes`), and ``poissons_ratio`` is
+        ignored. Shear tractions are not supported with a layer.
 
     Returns
     -------
@@ -172,12 +198,25 @@ def subsurface_stress(
     along = cx * shear_x + cy * shear_y
     across = -cy * shear_x + cx * shear_y
     nu = poissons_ratio
+    if layer is not None:
+        if traction is not None:
+            raise InputError(
+                "traction", "shear tractions on a film are not supported.", "leave traction out."
+            )
+        if isinstance(layer.base, str):
+            raise InputError("layer", "the stress of a layer on a rigid base is not implemented.", None)
     out = np.empty((6, depths.size, nx, ny))
     # Mean lateral stress: uniaxial strain under a periodic (infinite) load; zero for a finite patch,
     # whose lateral stresses integrate to zero over a horizontal plane (Boussinesq).
     lateral_mean = nu / (1.0 - nu) * normal[0, 0] if boundary == "periodic" else 0.0
     for i, z in enumerate(depths):
-        xixi, etaeta, zz, xieta, xiz, etaz = _local_modes(q, z, normal, along, across, nu)
+        if layer is None:
+            xixi, etaeta, zz, xieta, xiz, etaz = _local_modes(q, z, normal, along, across, nu)
+        else:
+            xixi, etaeta, zz, xieta, xiz, etaz = _film_modes(q, z, normal, layer)
+            body = layer.material if z <= layer.thickness else layer.base
+            nu = body.poissons_ratio
+            lateral_mean = nu / (1.0 - nu) * normal[0, 0] if boundary == "periodic" else 0.0
         fields = (
             cx**2 * xixi + cy**2 * etaeta - 2 * cx * cy * xieta,
             cy**2 * xixi + cx**2 * etaeta + 2 * cx * cy * xieta,

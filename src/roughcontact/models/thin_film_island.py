@@ -11,8 +11,9 @@ resolves.
 
 The body is the film bonded to its substrate (:class:`~roughcontact.elasticity.halfspace.ElasticLayer`;
 the layer is laterally infinite, so the island's free side walls are not modelled) or, without a
-substrate, a half-space of the film's material. The von Mises stress is that of a half-space under the
-step's surface pressure (:func:`~roughcontact.elasticity.stress.subsurface_stress`).
+substrate, a half-space of the film's material. The von Mises stress is that of the same body (the
+film on its substrate, or the half-space) under the step's surface pressure
+(:func:`~roughcontact.elasticity.stress.subsurface_stress`).
 
 How this differs from the paper's explicit finite elements (LS-DYNA, piecewise-linear plasticity,
 10 800 elements): plasticity is confined to the surface (pressure cap at H; no subsurface plastic zone,
@@ -74,6 +75,8 @@ class IslandCompression:
         Pressure cap [Pa].
     poissons_ratio : float
         Of the film, for the stress maps.
+    layer : ElasticLayer, optional
+        The film on its substrate, whose stress the maps show (None: a half-space of the film).
     """
 
     steps: tuple[NormalContactResult, ...]
@@ -84,6 +87,7 @@ class IslandCompression:
     reference_force: float
     hardness: float
     poissons_ratio: float
+    layer: ElasticLayer | None = None
 
     UNITS: ClassVar[dict[str, str]] = LOAD_UNLOAD_UNITS
     """SI unit of each dimensional scalar of :meth:`scalars`."""
@@ -134,7 +138,10 @@ class IslandCompression:
         return load_unload_dataset(self.curve(), self.scalars() | {"reference_force": self.reference_force})
 
     def stress(self, index: int, depths=(0.0,), *, padding: int = 2) -> StressField:
-        """Return the subsurface stress of step ``index`` on the planes ``depths`` [m] (``.von_mises()``)."""
+        """Return the subsurface stress of step ``index`` on the planes ``depths`` [m] (``.von_mises()``).
+
+        That of the film on its substrate when the island was compressed with one, else of a half-space.
+        """
         step = self.steps[index]
         return subsurface_stress(
             step.pressure,
@@ -143,6 +150,7 @@ class IslandCompression:
             poissons_ratio=self.poissons_ratio,
             boundary="free",
             padding=padding,
+            layer=self.layer,
         )
 
 
@@ -327,6 +335,7 @@ def compress_island(
     hardness = material.hardness if hardness is None else hardness
     if hardness is None:
         raise InputError("hardness", "the material has no hardness.", "pass hardness= in Pa.")
+    layer = None
     if substrate is None:
         compliance = compliance_for(topography, material, boundary="free")
     else:
@@ -360,6 +369,7 @@ def compress_island(
         reference_force=reference_force,
         hardness=float(hardness),
         poissons_ratio=material.poissons_ratio,
+        layer=layer,
     )
 
 

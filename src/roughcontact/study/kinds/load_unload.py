@@ -15,10 +15,10 @@ resolves; default here 0, the first touch). The body is a film of ``film_thickne
 ``substrate`` (paper 002: SU-8, 6.3 um, on silicon), or a half-space of ``material``.
 
 ``plasticity`` chooses the plastic model. ``"surface"`` (default, the cheaper approximation): the
-pressure capped at the hardness as above; its von Mises stress (paper 002 eq. 12) is that of an
-elastic half-space under each step's surface pressure, on the plane ``stress_depth`` below the
-surface (0: the surface, as the paper's maps). ``"volume"``: J2 plasticity with linear hardening
-in a volume of ``layers`` cells down to ``depth`` below the surface
+pressure capped at the hardness as above; its von Mises stress (paper 002 eq. 12) is that of the
+elastic body (the film on its substrate, or the half-space) under each step's surface pressure, on
+the plane ``stress_depth`` below the surface (0: the surface, as the paper's maps). ``"volume"``:
+J2 plasticity with linear hardening in a volume of ``layers`` cells down to ``depth`` below the surface
 (:mod:`roughcontact.contact.volume_plastic`; ``yield_strength`` default the material's, paper 002
 Table I: 0.165 GPa for SU-8; ``hardening_modulus`` default 0), in the film on its substrate where
 one is given. Its maps are of the total stress (pressure plus residual) of the cell layer nearest
