@@ -1,18 +1,20 @@
 """Volume plasticity: a smooth sphere's load-unload beside tamaas' EPICSolver, and paper 002's island.
 
-* sphere: an elastic-perfectly-plastic paraboloid (E = 200 GPa, nu = 0.3, Y = 1 GPa, R = 1 mm) pressed
+* sphere: an elastic-perfectly-plastic paraboloid (E = 210 GPa, nu = 0.3, Y = 1 GPa, R = 10 mm) pressed
   by a rigid flat, force-controlled, 10 steps up to 13 P_c (about 6 omega_c) and 10 down to zero, on a
-  periodic window 10 a_c wide (tamaas' volume models are periodic only), ``layers = n / 2`` down to
-  4 a_c. Ours: :func:`roughcontact.contact.volume_plastic.solve_elastic_plastic`; tamaas:
-  ``EPICSolver`` (``peers.tamaas_elastic_plastic``). The approaches compare without the mean residual
-  displacement (tamaas' periodic Mindlin displacement has zero mean; ours keeps the k = 0 mode), and the
-  difference of the load-approach curves is the largest |delta_ours - delta_tamaas| over the steps, in
-  units of the peak approach.
+  periodic 2.5 mm window (about 23 a_c; tamaas' volume models are periodic only), ``layers = n / 2``
+  down to 1.25 mm. Ours: :func:`roughcontact.contact.volume_plastic.solve_elastic_plastic`; tamaas:
+  ``EPICSolver`` (``peers.tamaas_elastic_plastic``; its depth grid is ``layers`` planes from 0 to the
+  depth, ours ``layers`` cells). The approaches compare without the mean residual displacement
+  (tamaas' periodic Mindlin displacement has zero mean; ours keeps the k = 0 mode), and the difference
+  of the load-approach curves is the largest |delta_ours - delta_tamaas| over the steps, in units of
+  the peak approach.
 * island: paper 002's synthetic island in the film on silicon at the example's grid, 22 force steps
   (``compress_island(..., plasticity="volume")``), ours only (no peer has a film or a free window).
 
 Prints a table, then one JSON line. Run:
-``.venv/bin/python benchmarks/volume_plasticity.py [--grids 64 128] [--peers tamaas] [--island 128]``.
+``.venv/bin/python benchmarks/volume_plasticity.py [--grids 64 128] [--peers tamaas] [--island 128]``
+(tamaas takes about 25 minutes at 64^2 here).
 """
 
 from __future__ import annotations
@@ -33,21 +35,20 @@ from roughcontact.models.paper002 import paper002_island
 from roughcontact.models.thin_film_island import compress_island
 from roughcontact.topography.generate import sphere
 
-E, NU, Y, R = 200e9, 0.3, 1e9, 1e-3
+E, NU, Y, R = 210e9, 0.3, 1e9, 10e-3
+SIZE, DEPTH = 2.5e-3, 1.25e-3
 STEEL = Material(youngs_modulus=E, poissons_ratio=NU, yield_strength=Y)
 E_STAR = E / (1 - NU**2)
 OMEGA_C = critical_interference(hardness=2.8 * Y, poissons_ratio=NU, contact_modulus=E_STAR, radius=R)
 P_C = critical_load(hardness=2.8 * Y, poissons_ratio=NU, contact_modulus=E_STAR, radius=R)
-RADIUS_C = float(np.sqrt(R * OMEGA_C))
 UP = np.linspace(0.0, 13.0 * P_C, 11)[1:]
 FORCES = np.concatenate([UP, UP[::-1][1:], [0.0]])
 
 
 def sphere_case(n: int, with_tamaas: bool) -> dict:
-    size = 10 * RADIUS_C
-    ball = sphere((n, n), (size, size), radius=R, kind="paraboloid", periodic=True)
+    ball = sphere((n, n), (SIZE, SIZE), radius=R, kind="paraboloid", periodic=True)
     start = time.perf_counter()
-    ours = solve_elastic_plastic(ball, STEEL, forces=FORCES, depth=4 * RADIUS_C, layers=n // 2)
+    ours = solve_elastic_plastic(ball, STEEL, forces=FORCES, depth=DEPTH, layers=n // 2)
     seconds = time.perf_counter() - start
     approach = ours.approach - ours.residual_displacement.mean(axis=(1, 2))
     peak = int(np.argmax(ours.force))
@@ -61,7 +62,7 @@ def sphere_case(n: int, with_tamaas: bool) -> dict:
     }
     if with_tamaas:
         peer = peers.tamaas_elastic_plastic(
-            ball.heights, size, depth=4 * RADIUS_C, layers=n // 2, youngs_modulus=E, poissons_ratio=NU,
+            ball.heights, SIZE, depth=DEPTH, layers=n // 2, youngs_modulus=E, poissons_ratio=NU,
             yield_strength=Y, hardening_modulus=0.0, forces=FORCES,
         )  # fmt: skip
         theirs = np.asarray(peer["approach"])
