@@ -143,7 +143,10 @@ def add_commands(commands) -> None:
     asperity.add_argument(
         "--hardness", help="hardness of the rough body, e.g. '0.462 GPa' (default: material's)"
     )
-    asperity.add_argument("--yield-strength", help="yield strength for --law jackson_green, e.g. '0.165 GPa'")
+    asperity.add_argument(
+        "--yield-strength",
+        help="yield strength for --law jackson_green and --plasticity volume, e.g. '0.165 GPa'",
+    )
     asperity.add_argument(
         "--modulus-form", choices=("standard", "paper002_eq7_printed"), default="standard", help="E' of eq. 7"
     )

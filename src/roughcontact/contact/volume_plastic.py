@@ -59,6 +59,7 @@ from ..errors import ConvergenceError, InputError
 from ..materials import Material
 from ..progress import tracked
 from ..topography import Topography
+from ..units import format_si
 from . import _constrained_cg
 from .normal import compliance_for
 
@@ -100,13 +101,13 @@ class J2Plasticity:
         if not (np.isfinite(y) and 0.0 < y < e):
             raise InputError(
                 "yield_strength",
-                f"must be positive and below the Young's modulus ({e:.3g} Pa), got {y!r}.",
+                f"must be positive and below the Young's modulus ({format_si(e, 'Pa')}), got {y!r} Pa.",
                 "give the uniaxial yield strength in Pa, e.g. '165 MPa'.",
             )
         if not (np.isfinite(self.hardening_modulus) and self.hardening_modulus >= 0.0):
             raise InputError(
                 "hardening_modulus",
-                f"must be >= 0, got {self.hardening_modulus!r}.",
+                f"must be >= 0, got {self.hardening_modulus!r} Pa.",
                 "give 0 for elastic-perfectly plastic, or the hardening slope in Pa.",
             )
 
@@ -495,11 +496,13 @@ def solve_elastic_plastic(
         stress = trial - eigenstrain.isotropic_stress(g, material)
         yielded = dgamma.reshape(alpha.shape) > 0
         if yielded[-1].any():
+            unit = "N" if kind == "force" else "m"
             raise InputError(
                 "depth",
-                f"the plastic zone reaches the bottom layer of the volume ({depth:.3g} m) at step "
-                f"{len(record['force']) + 1} ({kind} {target:.4g}).",
-                f"give a deeper volume, e.g. depth={2 * depth:.3g} m (with more layers to keep the cells).",
+                f"the plastic zone reaches the bottom layer of the volume ({format_si(depth, 'm')}) at "
+                f"step {len(record['force']) + 1} ({kind} {format_si(target, unit)}).",
+                f"give a deeper volume, e.g. depth = '{format_si(2 * depth, 'm')}' (and twice the layers to "
+                "keep the cells).",
             )
         strain = strain + g
         dissipation = float(np.sum(_contract(stress, g) * volume))

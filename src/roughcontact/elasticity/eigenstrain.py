@@ -83,6 +83,7 @@ from scipy import fft
 from .._backend import resolve_workers
 from ..errors import InputError
 from ..materials import Material
+from ..units import format_si
 from .kernels import BOUNDARIES, wavevectors
 
 COMPONENTS = ("xx", "yy", "zz", "xy", "xz", "yz")
@@ -171,14 +172,16 @@ def column(
         if film_thickness < cell:
             raise InputError(
                 "film_thickness",
-                f"the film ({film_thickness:.3g} m) is thinner than one depth layer ({cell:.3g} m).",
+                f"the film ({format_si(film_thickness, 'm')}) is thinner than one depth layer "
+                f"({format_si(cell, 'm')}).",
                 "use more layers or a smaller depth.",
             )
         if film_thickness < depth * (1 - 1e-12):
             raise InputError(
                 "depth",
-                f"the plastic volume ({depth:.3g} m) reaches below the film ({film_thickness:.3g} m).",
-                f"give depth <= film_thickness ({film_thickness:.3g} m); the substrate stays elastic.",
+                f"the plastic volume ({format_si(depth, 'm')}) reaches below the film "
+                f"({format_si(film_thickness, 'm')}).",
+                f"give depth <= '{format_si(film_thickness, 'm')}' (the film); the substrate stays elastic.",
             )
         step = cell
         while edges[-1] < film_thickness * (1 - 1e-9):
