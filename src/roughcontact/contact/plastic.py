@@ -39,6 +39,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..materials import Material
+from ..progress import tracked
 from ..topography import Topography
 from .normal import compliance_for, solve_normal
 from .result import NormalContactResult
@@ -259,27 +260,46 @@ def load_unload(
         hardness=hardness, tolerance=tolerance, max_iterations=max_iterations, compliance=compliance
     )
     peak = solve_normal(topography, force=max_force, approach=max_approach, **options)
-    loading, previous = [], None
-    for approach in np.linspace(0.0, peak.approach, steps)[1:-1]:
-        previous = solve_normal(topography, approach=float(approach), initial=previous, **options)
-        loading.append(previous)
+    loading = capped_path(topography, "approach", np.linspace(0.0, peak.approach, steps)[1:-1], options)
     loading.append(peak)
+    flattened, residual = flattened_at(topography, peak)
+    unloading = capped_path(
+        flattened, "approach", np.linspace(peak.approach, residual, steps)[1:], options, offset=residual
+    )
+    return LoadUnloadResult(
+        tuple(loading), tuple(unloading), peak.plastic_deformation, residual, float(hardness)
+    )
 
+
+def flattened_at(topography: Topography, peak: NormalContactResult) -> tuple[Topography, float]:
+    """Return the surface flattened by the plastic flow of ``peak`` and its first touch [m].
+
+    The first touch (the residual interference) is measured from the original surface's first
+    touch: min(h_max - h + d_p).
+    """
     plastic = peak.plastic_deformation
     flattened = topography.with_heights(
         topography.heights - plastic, step="plastic flattening at the peak load"
     )
-    separation = topography.heights.max() - topography.heights
-    residual = float(np.min(separation + plastic))
-    # Unloading is elastic: approaches on the flattened surface are measured from its own first
-    # touch (residual above the original one); report them from the original first touch.
-    unloading, previous = [], None
-    for approach in np.linspace(peak.approach, residual, steps)[1:]:
-        local = max(approach - residual, 0.0)
-        step = solve_normal(flattened, approach=local, initial=previous, **options)
-        previous = step
-        unloading.append(_shifted(step, residual))
-    return LoadUnloadResult(tuple(loading), tuple(unloading), plastic, residual, float(hardness))
+    return flattened, float(np.min(topography.heights.max() - topography.heights + plastic))
+
+
+def capped_path(
+    topography: Topography, kind: str, targets, options: dict, *, offset: float = 0.0, what: str = "steps"
+) -> list[NormalContactResult]:
+    """Solve the capped contact at each target force or approach in turn, each warm-started from the last.
+
+    ``kind`` is "force" or "approach"; ``options`` go to :func:`solve_normal` (the hardness, the
+    compliance, tolerances). For a flattened surface (:func:`flattened_at`) ``offset`` is its first
+    touch: approaches are given, and returned, from the original surface's first touch (the one
+    load-unload path of :func:`load_unload` and of paper 002's island).
+    """
+    steps, previous = [], None
+    for target in tracked(targets, what=what):
+        local = max(float(target) - offset, 0.0) if kind == "approach" else float(target)
+        previous = solve_normal(topography, **{kind: local}, initial=previous, **options)
+        steps.append(_shifted(previous, offset))
+    return steps
 
 
 def _shifted(result: NormalContactResult, offset: float) -> NormalContactResult:

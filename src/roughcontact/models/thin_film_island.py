@@ -37,14 +37,20 @@ from typing import ClassVar
 import numpy as np
 
 from .._deprecation import moved
-from ..contact import NormalContactResult, compliance_for, solve_normal
-from ..contact.plastic import LOAD_UNLOAD_UNITS, load_unload_curve, load_unload_dataset, load_unload_scalars
+from ..contact import NormalContactResult, compliance_for
+from ..contact.plastic import (
+    LOAD_UNLOAD_UNITS,
+    capped_path,
+    flattened_at,
+    load_unload_curve,
+    load_unload_dataset,
+    load_unload_scalars,
+)
 from ..contact.volume_plastic import VOLUME_UNITS, VolumePlasticResult, solve_elastic_plastic
 from ..elasticity.halfspace import ElasticLayer
 from ..elasticity.stress import StressField, subsurface_stress
 from ..errors import InputError
 from ..materials import Material
-from ..progress import tracked
 from ..topography import Topography
 from . import paper002
 
@@ -60,7 +66,7 @@ class IslandCompression:
     ----------
     steps : tuple of NormalContactResult
         One solution per target load, loading then unloading (unloading on the flattened surface;
-        its ``approach`` counts from that surface's own first touch).
+        every ``approach`` counts from the original surface's first touch).
     branch : ndarray of str
         "loading" or "unloading" per step.
     interference : ndarray
@@ -342,29 +348,16 @@ def compress_island(
         layer = ElasticLayer(film_thickness, material, base=substrate)
         compliance = compliance_for(topography, None, layer=layer, boundary="free")
     options = dict(hardness=hardness, compliance=compliance, tolerance=tolerance)
-
-    steps, previous = [], None
-    for force in tracked(loading, what="loading steps"):
-        previous = solve_normal(topography, force=float(force), initial=previous, **options)
-        steps.append(previous)
-    plastic = previous.plastic_deformation
-    flattened = topography.with_heights(topography.heights - plastic, step="plastic flattening at the peak")
-    # The flattened surface's first touch lies this much further than the original one's.
-    offset = float(np.min(topography.heights.max() - topography.heights + plastic))
-    previous = None
-    for force in tracked(unloading, what="unloading steps"):
-        previous = solve_normal(flattened, force=float(force), initial=previous, **options)
-        steps.append(previous)
-
+    steps = capped_path(topography, "force", loading, options, what="loading steps")
+    flattened, offset = flattened_at(topography, steps[-1])
+    steps += capped_path(flattened, "force", unloading, options, offset=offset, what="unloading steps")
     zero = steps[int(np.flatnonzero(loading == reference_force)[0])].approach
-    approach = np.array([s.approach for s in steps]) + np.where(
-        np.arange(len(steps)) < loading.size, 0.0, offset
-    )
+    approach = np.array([s.approach for s in steps])
     return IslandCompression(
         steps=tuple(steps),
         branch=np.array(["loading"] * loading.size + ["unloading"] * unloading.size),
         interference=approach - zero,
-        plastic_deformation=plastic,
+        plastic_deformation=steps[loading.size - 1].plastic_deformation,
         residual_interference=offset - zero,
         reference_force=reference_force,
         hardness=float(hardness),
