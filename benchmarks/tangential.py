@@ -441,8 +441,7 @@ def loop_case(n: int, args, available: dict) -> dict:
         "steps": steps,
         "cycles": args.cycles,
         "tolerance": tol,
-        "delta_0_um": 1e6
-        * mindlin.sliding_displacement(MU_LOOP, F0, a, johnson_shear_modulus(pair, pair)),
+        "delta_0_um": 1e6 * mindlin.sliding_displacement(MU_LOOP, F0, a, johnson_shear_modulus(pair, pair)),
         "codes": codes,
     }
     if available.get("tamaas"):
