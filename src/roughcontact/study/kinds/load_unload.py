@@ -330,7 +330,8 @@ def _load_interference(records, context):
     for record in own:
         curve = curve_of(record)
         if curve is not None:
-            curves["BEM island" if len(own) == 1 else f"BEM, {record.label}"] = curve
+            model = f"{record.parameters.get('plasticity', 'surface')} plasticity"
+            curves[f"BEM island ({model})" if len(own) == 1 else f"BEM ({model}), {record.label}"] = curve
     if not curves:
         return None
     return draw_load_interference(curves, common_omega_c(used), measured_of(context))
