@@ -56,6 +56,7 @@ from pydantic_core import PydanticCustomError
 
 from ...contact.volume_plastic import VOLUME_UNITS
 from ...models.thin_film_island import IslandCompression
+from ...units import format_si
 from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
 from .asperity import MeasuredCurve, common_omega_c, curve_of, draw_load_interference, measured_of
@@ -282,11 +283,9 @@ def _section(path, chosen: list[int], peak: int, surface, points: int):
     import xarray as xr
 
     row = int(np.unravel_index(np.argmax(path.pressure[peak]), path.pressure[peak].shape)[1])
-    x = surface.coordinates()[0][:, 0] if surface.coordinates()[0].ndim == 2 else surface.coordinates()[0]
+    x, y = surface.coordinates()
     step = max(1, math.ceil(x.size / points))
     sections = np.stack([path.von_mises[i][:, ::step, row].T for i in chosen])  # (map, x, z)
-    y = surface.coordinates()[1]
-    y_value = float(y[0, row] if y.ndim == 2 else y[row])
     return xr.DataArray(
         sections.astype(np.float32),
         dims=("map", "x_section", "z"),
@@ -294,7 +293,7 @@ def _section(path, chosen: list[int], peak: int, surface, points: int):
             "x_section": ("x_section", x[::step], {"units": "m"}),
             "z": ("z", path.depths, {"units": "m"}),
         },
-        attrs={"units": "Pa", "long_name": f"von Mises stress on the section y = {y_value:g} m"},
+        attrs={"units": "Pa", "long_name": f"von Mises stress on the section y = {format_si(y[row], 'm')}"},
     )
 
 
