@@ -22,7 +22,8 @@ J2 plasticity with linear hardening in a volume of ``layers`` cells down to ``de
 (:mod:`roughcontact.contact.volume_plastic`; ``yield_strength`` default the material's, paper 002
 Table I: 0.165 GPa for SU-8; ``hardening_modulus`` default 0), in the film on its substrate where
 one is given. Its maps are of the total stress (pressure plus residual) of the cell layer nearest
-``stress_depth`` (the top cell's centre for 0), and a section through the peak pressure shows the
+``stress_depth`` (the top cell's centre for 0), and a section along x through the line of pixels
+that carries the most load at the peak shows the
 stress in depth; at zero load after unloading they show the residual stress (paper 002 Fig. 9e).
 
 Assumptions (those of the model; see :mod:`roughcontact.models.thin_film_island`): with
@@ -279,10 +280,10 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
 
 
 def _section(path, chosen: list[int], peak: int, surface, points: int):
-    """Return the von Mises stress of the chosen steps on the x-z section through the peak pressure."""
+    """Return the von Mises stress of the chosen steps on the x-z section carrying most of the peak load."""
     import xarray as xr
 
-    row = int(np.unravel_index(np.argmax(path.pressure[peak]), path.pressure[peak].shape)[1])
+    row = int(np.argmax(path.pressure[peak].sum(axis=0)))  # the line that carries the most load
     x, y = surface.coordinates()
     step = max(1, math.ceil(x.size / points))
     sections = np.stack([path.von_mises[i][:, ::step, row].T for i in chosen])  # (map, x, z)
@@ -376,17 +377,18 @@ def _von_mises(records, context):
             )
             ax.set_xticks([])
             ax.set_yticks([])
-        ax.set_title(f"{str(field.map_branch.values)}, W = {float(field.map_force) * 1e6:.0f} µN")
+        ax.set_title(f"{str(field.map_branch.values)}, W = {format_si(float(field.map_force), 'N')}")
     if image is not None:
         shared_colorbar(image, flat[:count], "von Mises stress", "Pa", shared)
     depth = float(data.attrs.get("stress_depth", 0.0))
-    where = "surface" if depth == 0 else f"z = {depth * 1e6:.3g} µm"
+    where = "surface" if depth == 0 else f"z = {format_si(depth, 'm', digits=3)}"
     figure.suptitle(f"von Mises stress ({where})" + (f", {record.label}" if len(records) > 1 else ""))
     return figure
 
 
 @caption(
-    "Von Mises stress of the first case on a vertical section through the peak pressure, at the "
+    "Von Mises stress of the first case on a vertical section along x, through the line that carries "
+    "the most load at the peak, at the "
     "stored loads, loading then unloading, on one colour scale (volume plasticity only): the plastic "
     "zone below the contacts and, at zero load, the residual stress (paper 002 Fig. 9e)."
 )
@@ -425,7 +427,7 @@ def _von_mises_section(records, context):
         ax.set_xlabel("x (µm)")
         ax.set_ylabel("depth z (µm)")
         force = float(data["von_mises"].map_force[index])
-        ax.set_title(f"{str(data['von_mises'].map_branch.values[index])}, W = {force * 1e6:.0f} µN")
+        ax.set_title(f"{str(data['von_mises'].map_branch.values[index])}, W = {format_si(force, 'N')}")
     shared_colorbar(image, flat[:count], "von Mises stress", "Pa", shared)
     figure.suptitle(sections.attrs.get("long_name", "von Mises stress on a section"))
     return figure
