@@ -24,6 +24,8 @@ def test_fig7_scales_interference_by_omega_c_and_load_to_micronewtons():
     np.testing.assert_allclose(lines["KKE, loading"].get_xdata(), [0, 1, 2], rtol=1e-12, atol=0)
     np.testing.assert_allclose(lines["KKE, loading"].get_ydata(), [25, 400, 1000], rtol=1e-12, atol=0)
     assert lines["KKE, unloading"].get_linestyle() == "--"
+    # the unloading branch starts at the peak, so the two branches meet there
+    np.testing.assert_allclose(lines["KKE, unloading"].get_xdata(), [2, 1.5, 1], rtol=1e-12, atol=0)
 
 
 def test_area_plot_draws_loading_solid_and_unloading_dashed_in_one_colour():

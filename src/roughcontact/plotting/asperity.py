@@ -45,8 +45,8 @@ def plot_load_interference(
         color = f"C{number % 10}"
         branches = np.asarray(curve["branch"])
         for branch, style in _BRANCH_STYLES.items():
-            keep = branches == branch
-            if keep.any():
+            keep = branch_points(branches, branch)
+            if keep.size:
                 x = np.asarray(curve["approach"])[keep] / critical_interference
                 load = np.asarray(curve["force"])[keep] / _LOAD_SCALE
                 ax.plot(x, load, style, color=color, label=f"{label}, {branch}")
@@ -60,6 +60,14 @@ def plot_load_interference(
     return fig, ax
 
 
+def branch_points(branches: np.ndarray, branch: str) -> np.ndarray:
+    """Return the indices of a branch's points; the unloading branch starts at the peak (the point before)."""
+    points = np.flatnonzero(np.asarray(branches) == branch)
+    if branch == "unloading" and points.size and points[0] > 0:
+        points = np.concatenate([[points[0] - 1], points])
+    return points
+
+
 def plot_area_load(curves: dict[str, dict], ax: Axes | None = None):
     """Draw the real contact area (um^2) against load (uN), loading solid and unloading dashed, per curve."""
     fig, ax = axes_for(ax)
@@ -67,13 +75,12 @@ def plot_area_load(curves: dict[str, dict], ax: Axes | None = None):
         branch = np.asarray(curve["branch"])
         area = np.asarray(curve["contact_area"]) / _AREA_SCALE
         load = np.asarray(curve["force"]) / _LOAD_SCALE
-        (line,) = ax.plot(
-            load[branch == "loading"], area[branch == "loading"], "-o", ms=3, label=f"{label}, loading"
-        )
-        unloading = np.flatnonzero(branch == "unloading")
+        loading, unloading = branch_points(branch, "loading"), branch_points(branch, "unloading")
+        (line,) = ax.plot(load[loading], area[loading], "-o", ms=3, label=f"{label}, loading")
         if unloading.size:
-            joined = np.concatenate([[unloading[0] - 1], unloading])  # from the peak
-            ax.plot(load[joined], area[joined], "--", color=line.get_color(), label=f"{label}, unloading")
+            ax.plot(
+                load[unloading], area[unloading], "--", color=line.get_color(), label=f"{label}, unloading"
+            )
     ax.set_xlabel(f"load ({_LOAD_UNIT})")
     ax.set_ylabel(f"real contact area ({_AREA_UNIT})")
     legend(ax, fontsize="small")
