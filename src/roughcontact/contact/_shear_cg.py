@@ -44,8 +44,9 @@ Residual (scale-free, the same number in nm or m):
     \qquad s_0 = \mathrm{rms}_{A_c} |s + e| + |\delta|
 
 the traction-weighted mean violation of the stick and slip-direction conditions over the
-contact, relative to the displacement scale of the step. |q_i| <= c_i holds to round-off at every
-returned iterate.
+contact, relative to the displacement scale of the step; s_0 is at least rms_{A_c} |C q| (a step
+that sticks everywhere at delta = 0, as in a frictional normal loading, has s + e = 0 at its
+solution). |q_i| <= c_i holds to round-off at every returned iterate.
 
 References
 ----------
@@ -135,11 +136,14 @@ class Optimality:
     z_norm: float
 
 
-def optimality(qx, qy, c_flat, sx, sy, delta, state, flat) -> Optimality:
+def optimality(qx, qy, c_flat, sx, sy, delta, state, flat, offset, tolerance) -> Optimality:
     """Classify stick and slip, fill ``flat``'s directions and return the scale-free residual.
 
-    ``sx, sy`` is C q + e; the residual is that of the module docstring (the same for both
-    increment solvers, so a tolerance means the same).
+    ``sx, sy`` is C q + e (w = C q + e - delta on return); the residual is that of the module
+    docstring (the same for both increment solvers, so a tolerance means the same). Where it is
+    above ``tolerance``, the scale s_0 gets the floor rms_{A_c} |C q| (C q = w + delta - e from
+    ``offset`` = e): a step that sticks everywhere with delta = 0 (a frictional normal loading)
+    ends with s + e = 0, and the elastic displacement of its tractions is then its scale.
     """
     changed, violation, weight, ss, n_contact, n_stick, zsx, zsy, z_norm = kernels.classify(
         qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), delta[0], delta[1], RIM, state,
@@ -147,6 +151,12 @@ def optimality(qx, qy, c_flat, sx, sy, delta, state, flat) -> Optimality:
     )  # fmt: skip
     scale = np.sqrt(ss / n_contact) + np.hypot(*delta) if n_contact else 0.0
     residual = violation / weight / scale if scale > 0.0 and weight > 0.0 else 0.0
+    if residual > tolerance and weight > 0.0:
+        contact = c_flat > 0.0
+        cx = sx.ravel()[contact] + delta[0] - offset[0].ravel()[contact]
+        cy = sy.ravel()[contact] + delta[1] - offset[1].ravel()[contact]
+        floor = float(np.sqrt(np.mean(cx * cx + cy * cy)))
+        residual = violation / weight / max(scale, floor) if max(scale, floor) > 0.0 else 0.0
     return Optimality(float(residual), bool(changed), int(n_stick), (zsx, zsy), z_norm)
 
 
@@ -227,7 +237,7 @@ def solve_increment(
         sy += ey
         if load_control:
             delta = kernels.interior_mean(qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), RIM)
-        check = optimality(qx, qy, c_flat, sx, sy, delta, state, flat)
+        check = optimality(qx, qy, c_flat, sx, sy, delta, state, flat, offset, tolerance)
         residual, n_stick, (zsx, zsy), z_norm = check.residual, check.n_stick, check.stick_sum, check.z_norm
         if residual <= tolerance:
             stick = (state == kernels.STICK).reshape(shape)

@@ -23,14 +23,27 @@ describe it). When D = 0 (similar materials, or two incompressible bodies) the c
 vanish identically and the result equals the uncoupled (Goodman) one exactly, which is also
 what ``coupling=False`` computes for any pair.
 
-Assumptions, stated: the normal loading that precedes the programme is frictionless (the slip
-the pressure causes then is free; history starts at the first tangential step); points that
-come into contact during a step stick where they are unless the Coulomb law makes them slip;
-the friction coefficient is constant (no static/kinetic distinction, as in the paper).
+The normal loading that precedes the programme (``normal_loading``):
+
+* ``"frictional"`` (the default when the pair is coupled, beta != 0): F_0 is applied in
+  ``loading_steps`` steps from zero under the same Coulomb law, with the tangential displacement
+  held at 0 (or the tangential force at 0 under force control). Dissimilar materials then lock in
+  shear with a central stick zone (Spence 1975); the programme starts from that state, and the
+  loading is kept in ``result.loading``.
+* ``"frictionless"``: Goodman's approximation of the start: the slip the pressure causes is free
+  and the history starts at the first tangential step (what this solver did before; equal to the
+  frictional start when beta = 0).
+
+The steps of both run through the incremental stepper of :mod:`roughcontact.contact._programme`,
+which also solves combined normal and tangential programmes
+(:func:`roughcontact.contact.frictional.solve_frictional`). Points that come into contact during
+a step stick where they are unless the Coulomb law makes them slip; the friction coefficient is
+constant (no static/kinetic distinction, as in the paper).
 
 References
 ----------
 Mindlin, R. D. and Deresiewicz, H. (1953). J. Appl. Mech. 20, 327-344.
+Spence, D. A. (1975). J. Elasticity 5, 297-319 (the Hertz problem with finite friction).
 Chen, W. W. and Wang, Q. J. (2008). J. Tribol. 130, 041402 (coupled partial slip by FFT).
 Bazrafshan, M., de Rooij, M. B. and Schipper, D. J. (2019). Int. J. Mech. Sci. 155, 9-18 (paper 001 ref. 28).
 Seed paper 001, eqs. 1-4.
@@ -38,39 +51,40 @@ Seed paper 001, eqs. 1-4.
 
 from __future__ import annotations
 
-import numbers
 from collections.abc import Sequence
-from dataclasses import dataclass
 
 import numpy as np
 
-from .._version import __version__
-from ..elasticity.halfspace import SurfaceCompliance
-from ..elasticity.tangential import TractionCompliance
-from ..errors import ConvergenceError, InputError
+from ..errors import InputError
 from ..materials import Material, contact_modulus
-from ..progress import tracked
-from . import _constrained_cg, _shear_apg, _shear_cg
-from .normal import compliance_for
-from .paths import as_path
+from . import _programme
 from .result import NormalContactResult
-from .tangential_result import TangentialPathResult, TangentialState
+from .tangential_result import TangentialPathResult
 
-# Iterations the plain method gets under precondition="auto" before the preconditioned retry.
-PLAIN_ITERATIONS = 500
-METHODS = ("auto", "cg", "apg")
+NORMAL_LOADINGS = ("auto", "frictional", "frictionless")
 
 
-def _check_inputs(normal, material, counter_body, friction_coefficient):
+def _loading_mode(normal_loading: str, coupled: bool) -> str:
+    """Resolve ``normal_loading``: "auto" is "frictional" when the pair is coupled, else "frictionless"."""
+    if normal_loading not in NORMAL_LOADINGS:
+        raise InputError(
+            "normal_loading",
+            f"unknown {normal_loading!r}.",
+            "use 'frictional' (friction acts while F_0 is applied), 'frictionless' (Goodman's start) "
+            "or 'auto'.",
+        )
+    if normal_loading == "auto":
+        return "frictional" if coupled else "frictionless"
+    return normal_loading
+
+
+def _check_inputs(normal, material, counter_body):
     if not isinstance(normal, NormalContactResult):
         raise InputError("normal", f"got {type(normal).__name__}.", "pass the result of solve_normal.")
     if normal.hardness is not None:
         raise InputError("normal", "the normal contact is elastic-plastic.", "solve it without hardness.")
     if not isinstance(material, Material):
         raise InputError("material", "a Material is needed (shear moduli and Poisson's ratios).", None)
-    mu = friction_coefficient
-    if not (isinstance(mu, numbers.Real) and np.isfinite(mu) and mu > 0):
-        raise InputError("friction_coefficient", f"must be positive and finite, got {mu!r}.", "e.g. 0.15.")
     expected = contact_modulus(material, counter_body)
     if not np.isclose(expected, normal.contact_modulus, rtol=1e-9):
         raise InputError(
@@ -81,22 +95,6 @@ def _check_inputs(normal, material, counter_body, friction_coefficient):
         )
     if normal.topography.dim != 2:
         raise InputError("normal", "tangential contact needs a 2D map.", "pass a 2D topography.")
-
-
-def _steps_to_keep(fields_at, steps: int) -> set[int]:
-    if isinstance(fields_at, str):
-        if fields_at not in ("all", "none", "last"):
-            raise InputError("fields_at", f"unknown {fields_at!r}.", "use 'all', 'none', 'last' or indices.")
-        return {"all": set(range(steps)), "none": set(), "last": {steps - 1}}[fields_at]
-    fix = f"give step indices in [-{steps}, {steps - 1}], or 'all', 'none', 'last'."
-    if not isinstance(fields_at, Sequence | np.ndarray):
-        raise InputError("fields_at", f"got {fields_at!r}.", fix)
-    keep = set()
-    for index in fields_at:
-        if not isinstance(index, numbers.Integral) or isinstance(index, bool) or not -steps <= index < steps:
-            raise InputError("fields_at", f"{index!r} is not a step index of a {steps}-step path.", fix)
-        keep.add(int(index) % steps)
-    return keep
 
 
 def solve_tangential(
@@ -116,6 +114,9 @@ def solve_tangential(
     precondition: bool | str = "auto",
     workers: int | None = None,
     method: str = "auto",
+    normal_loading: str = "auto",
+    loading_steps: int = 10,
+    max_stick_change: float | None = None,
 ) -> TangentialPathResult:
     """Solve a tangential loading programme from a normal contact (paper 001).
 
@@ -169,6 +170,17 @@ def solve_tangential(
         nu = 0.5 apg is 48-146x faster on a rough ball and a smooth sphere at 128^2 and 7-13x on
         paper 001's balls; for nu = 0 cg is 2-4x faster.
 
+    normal_loading : {"auto", "frictional", "frictionless"}
+        How F_0 was applied (module docstring): "auto" (default) is "frictional" for a coupled
+        pair (beta != 0 and ``coupling``), else "frictionless" (Goodman's start).
+    loading_steps : int
+        Steps of the frictional normal loading, F_k = F_0 (k/n)^3 (equal steps of the Hertz
+        contact radius; >= 2).
+    max_stick_change : float, optional
+        Step control: insert steps wherever the stick fraction would change by more than this in
+        one step (e.g. 0.1: at least 10 steps between a reversal and full slip; the programme's
+        points are all solved). None (default) solves the programme points only.
+
     Returns
     -------
     TangentialPathResult
@@ -183,237 +195,66 @@ def solve_tangential(
     ConvergenceError
         A step or its coupling iteration did not converge (residual and iterations given).
     """
-    _check_inputs(normal, material, counter_body, friction_coefficient)
-    if method not in METHODS:
-        raise InputError("method", f"unknown increment solver {method!r}.", "use 'auto', 'cg' or 'apg'.")
-    if method == "apg" and precondition is True:
-        raise InputError(
-            "precondition",
-            "the accelerated projected-gradient solver (method='apg') takes no Fourier preconditioner.",
-            "use precondition='auto' or False with method='apg', or method='cg'.",
-        )
-    if (displacement is None) == (force is None):
-        raise InputError(
-            "path", "give exactly one of displacement and force.", "e.g. displacement=stroke_path(3e-6)."
-        )
-    load_control = force is not None
-    path = as_path(force if load_control else displacement, "force" if load_control else "displacement")
-    if normal.boundary == "periodic" and not load_control:
-        raise InputError(
-            "displacement",
-            "a periodic half-space has no fixed point, so a rigid tangential displacement loads nothing.",
-            "prescribe a force path (force=...), or solve a free (non-periodic) window.",
-        )
-    mu = float(friction_coefficient)
+    if not (isinstance(loading_steps, int) and loading_steps >= 2):
+        raise InputError("loading_steps", f"got {loading_steps!r}.", "give an integer >= 2, e.g. 10.")
+    _check_max_stick_change(max_stick_change)
+    _check_inputs(normal, material, counter_body)
+    control, path = _programme.tangential_programme(displacement, force, normal.boundary)
     topography = normal.topography
-    shape = topography.shape
-    operator = TractionCompliance(
-        shape, topography.size, material, counter_body, boundary=normal.boundary, workers=workers
-    )
-    coupled = coupling and operator.coupled
-    pixel_area = operator.pixel_area
-    keep = _steps_to_keep(fields_at, len(path))
-    if method == "auto":
-        method = "apg" if operator.pair.B > 0 and precondition is not True else "cg"
-    # method="apg": the kernel's smallest eigenvalue bounds the strong convexity (constant momentum)
-    apg = {"strong_convexity": _shear_apg.kernel_extremes(operator)[0]} if method == "apg" else None
-
-    pressure = np.array(normal.pressure)
-    heights = topography.heights
-    separation = heights.max() - heights
-    normal_force = normal.force
-    normal_operator = (
-        compliance_for(
-            topography, material, counter_body=counter_body, boundary=normal.boundary, workers=workers
-        )
-        if coupled
-        else None
-    )
-    slip_from_p = operator.slip_from_pressure(pressure) if coupled else (np.zeros(shape), np.zeros(shape))
-    slip_x, slip_y = slip_from_p[0].copy(), slip_from_p[1].copy()  # frictionless normal loading
-    qx, qy = np.zeros(shape), np.zeros(shape)
-
-    n = len(path)
-    record = {k: np.zeros(n) for k in ("contact", "stick", "slip", "residual")}
-    forces = np.zeros((n, 2))
-    displacements = np.zeros((n, 2))
-    iterations = np.zeros(n, dtype=int)
-    passes = np.zeros(n, dtype=int)
-    states: dict[int, TangentialState] = {}
-    stepper = _Stepper(
-        operator=operator,
-        normal_operator=normal_operator,
-        separation=separation,
-        normal_force=normal_force,
-        mu=mu,
+    stepper, parameters = _programme.build(
+        topography,
+        material,
+        counter_body,
+        boundary=normal.boundary,
+        friction_coefficient=friction_coefficient,
+        coupling=coupling,
         tolerance=tolerance,
         coupling_tolerance=coupling_tolerance,
         max_iterations=max_iterations,
-        max_passes=max_coupling_iterations,
-        preconditioner=_preconditioning(precondition, operator) if apg is None else None,
-        apg=apg,
+        max_coupling_iterations=max_coupling_iterations,
+        precondition=precondition,
+        method=method,
+        workers=workers,
     )
-    for step, target in enumerate(tracked(path, what="tangential steps")):
-        control = {"force": tuple(target)} if load_control else {"displacement": tuple(target)}
-        pressure, slip_from_p, increment, iterations[step], passes[step] = stepper.step(
-            pressure, slip_from_p, (qx, qy), (slip_x, slip_y), control
+    loading_mode = _loading_mode(normal_loading, stepper.coupled)
+    constant = np.full(len(path), normal.force)
+    loading = None
+    if loading_mode == "frictional":
+        loads = normal.force * (np.arange(1, loading_steps + 1) / loading_steps) ** 3
+        record, state = _programme.run(
+            stepper,
+            _programme.State.unloaded(topography.shape),
+            ("force", loads),
+            (control, np.zeros((loading_steps, 2))),
+            start=(0.0, np.zeros(2)),
+            keep={loading_steps - 1},
+            what="frictional normal loading steps",
         )
-        qx, qy = increment.qx, increment.qy
-        contact = pressure > 0
-        wx = np.where(contact, increment.wx, 0.0)
-        wy = np.where(contact, increment.wy, 0.0)
-        slip_x, slip_y = slip_x + increment.wx, slip_y + increment.wy
-        stick = increment.stick & contact
-        displacements[step] = increment.delta
-        forces[step] = (qx.sum() * pixel_area, qy.sum() * pixel_area)
-        record["contact"][step] = contact.sum() * pixel_area
-        record["stick"][step] = stick.sum() * pixel_area
-        record["slip"][step] = (contact & ~stick).sum() * pixel_area
-        record["residual"][step] = increment.residual
-        if step in keep:
-            states[step] = TangentialState(
-                shear_x=qx.copy(),
-                shear_y=qy.copy(),
-                pressure=pressure.copy(),
-                slip_x=slip_x.copy(),
-                slip_y=slip_y.copy(),
-                slip_increment_x=wx,
-                slip_increment_y=wy,
-                stick=stick,
-                displacement=increment.delta,
-                friction_coefficient=mu,
-                pixel_area=pixel_area,
-            )
-    return TangentialPathResult(
-        normal=normal,
-        displacement=displacements,
-        force=forces,
-        contact_area=record["contact"],
-        stick_area=record["stick"],
-        slip_area=record["slip"],
-        iterations=iterations,
-        coupling_iterations=passes,
-        residual=record["residual"],
-        states=states,
-        parameters={
-            "friction_coefficient": mu,
-            "control": "force" if load_control else "displacement",
-            "coupling": bool(coupling),
-            "dundurs_beta": operator.pair.dundurs_beta,
-            "tolerance": tolerance,
-            "precondition": precondition,
-            "method": method,
-            "version": __version__,
-        },
+        loading = _programme.result(
+            normal,
+            topography,
+            record,
+            {**parameters, "control": control, "stage": "frictional normal loading"},
+        )
+    else:
+        state = _programme.frictionless_start(stepper, normal.pressure, normal.approach, normal.force)
+    record, _ = _programme.run(
+        stepper,
+        state,
+        ("force", constant),
+        (control, path),
+        start=(normal.force, np.zeros(2)),
+        keep=_programme.steps_to_keep(fields_at, len(path)),
+        max_stick_change=max_stick_change,
     )
+    parameters.update(control=control, normal_loading=loading_mode, max_stick_change=max_stick_change)
+    return _programme.result(normal, topography, record, parameters, loading=loading)
 
 
-def _preconditioning(precondition, operator):
-    """(first preconditioner, fallback) of the ``precondition`` option: None means plain."""
-    if precondition == "auto":
-        return None, operator.inverse_shear
-    if precondition is True or precondition is False:
-        return (operator.inverse_shear if precondition else None), None
-    raise InputError("precondition", f"got {precondition!r}.", "use 'auto', True or False.")
-
-
-@dataclass(frozen=True)
-class _Stepper:
-    """Solves the steps of one path: what stays fixed along it, and one method per part of a step.
-
-    ``normal_operator`` is None when uncoupled (one pass per step). ``apg`` (the options of
-    :func:`_shear_apg.solve_increment <roughcontact.contact._shear_apg.solve_increment>`)
-    selects the accelerated projected-gradient solver; otherwise ``preconditioner`` is the
-    conjugate gradients' (first, fallback) pair of :func:`_preconditioning`.
-    """
-
-    operator: TractionCompliance
-    normal_operator: SurfaceCompliance | None
-    separation: np.ndarray
-    normal_force: float
-    mu: float
-    tolerance: float
-    coupling_tolerance: float
-    max_iterations: int
-    max_passes: int
-    preconditioner: tuple | None
-    apg: dict | None
-
-    def step(self, pressure, slip_from_p, shear, slip, control):
-        """One step: the tangential increment, alternated with normal solves when coupled.
-
-        Returns the pressure, the slip it causes, the increment, the iterations and the passes.
-        """
-        qx, qy = shear
-        iterations = 0
-        for coupling_pass in range(1, self.max_passes + 1):
-            previous_p, previous_q = pressure, (qx, qy)
-            if self.normal_operator is not None and (np.any(qx) or np.any(qy)):
-                pressure = self.coupled_pressure(qx, qy, pressure)
-                slip_from_p = self.operator.slip_from_pressure(pressure)
-            offset = (slip_from_p[0] - slip[0], slip_from_p[1] - slip[1])
-            increment, used = self.increment(pressure, offset, (qx, qy), control)
-            qx, qy = increment.qx, increment.qy
-            iterations += used
-            if self.normal_operator is None:
-                return pressure, slip_from_p, increment, iterations, coupling_pass
-            scale_p = max(float(np.max(pressure)), 1e-300)
-            change = max(
-                float(np.max(np.abs(pressure - previous_p))) / scale_p,
-                float(np.max(np.abs(qx - previous_q[0]) + np.abs(qy - previous_q[1]))) / (self.mu * scale_p),
-            )
-            if change <= self.coupling_tolerance:
-                return pressure, slip_from_p, increment, iterations, coupling_pass
-        raise ConvergenceError(
-            "solve_tangential (normal-tangential coupling)", change, self.max_passes, self.coupling_tolerance
+def _check_max_stick_change(value) -> None:
+    if value is not None and not (isinstance(value, float | int) and 0 < value < 1):
+        raise InputError(
+            "max_stick_change",
+            f"got {value!r}.",
+            "give a fraction in (0, 1), e.g. 0.1, or None (no step control).",
         )
-
-    def increment(self, pressure, offset, initial, control):
-        """Return the increment at fixed pressure and its iterations (a failed plain run's included)."""
-        operator = self.operator
-        arguments = dict(pixel_area=operator.pixel_area, initial=initial, tolerance=self.tolerance, **control)
-        bound = self.mu * pressure
-        if self.apg is not None:
-            increment = _shear_apg.solve_increment(
-                operator.shear, bound, offset, max_iterations=self.max_iterations, **arguments, **self.apg
-            )
-            return increment, increment.iterations
-
-        def conjugate_gradients(preconditioner, budget):
-            return _shear_cg.solve_increment(
-                operator.shear,
-                operator.shear_energy,
-                bound,
-                offset,
-                max_iterations=budget,
-                preconditioner=preconditioner,
-                **arguments,
-            )
-
-        first, fallback = self.preconditioner
-        if fallback is None:
-            increment = conjugate_gradients(first, self.max_iterations)
-            return increment, increment.iterations
-        budget = min(self.max_iterations, PLAIN_ITERATIONS)
-        try:
-            increment = conjugate_gradients(first, budget)
-            return increment, increment.iterations
-        except ConvergenceError:
-            increment = conjugate_gradients(fallback, self.max_iterations)
-            return increment, budget + increment.iterations
-
-    def coupled_pressure(self, qx, qy, pressure):
-        """Pressure at F_0 with the normal displacement of the shear tractions added to the separation."""
-        shifted = self.separation + self.operator.normal_from_shear(qx, qy)
-        shifted -= shifted.min()
-        raw = _constrained_cg.solve(
-            self.normal_operator,
-            shifted,
-            pixel_area=self.operator.pixel_area,
-            force=self.normal_force,
-            initial_pressure=pressure,
-            tolerance=self.tolerance,
-            max_iterations=self.max_iterations,
-            solver="solve_tangential (coupled normal step)",
-        )
-        return raw.pressure

@@ -8,6 +8,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from ..topography import Topography
 from .paths import reversals
 from .result import NormalContactResult
 
@@ -89,12 +90,16 @@ class TangentialState:
 
 @dataclass(frozen=True)
 class TangentialPathResult:
-    """A tangential loading programme under a constant normal force (paper 001 Figs. 6, 10-14).
+    """A frictional loading programme (paper 001 Figs. 6, 10-14; combined normal and tangential steps).
 
     Attributes
     ----------
-    normal : NormalContactResult
-        The normal contact the programme starts from (q = 0, delta = 0).
+    normal : NormalContactResult or None
+        The frictionless normal contact at F_0 of :func:`solve_tangential` (with the frictionless
+        start, the programme starts from it: q = 0, delta = 0); None for a programme of
+        :func:`solve_frictional`, which starts unloaded.
+    topography : Topography
+        The rough surface.
     displacement : ndarray, shape (n, 2)
         Rigid tangential displacement of the flat at each step [m].
     force : ndarray, shape (n, 2)
@@ -107,11 +112,25 @@ class TangentialPathResult:
         Scale-free residual of the last tangential solve of each step.
     states : dict of int -> TangentialState
         Full fields at the steps that were kept (see ``fields_at`` of the solver).
+    normal_load : ndarray, shape (n,)
+        Normal force at each step [N] (F_0 throughout for :func:`solve_tangential`).
+    approach : ndarray, shape (n,)
+        Rigid normal approach of the flat from first touch of the undeformed surface [m].
+    dissipation : ndarray, shape (n,)
+        Frictional work of each step, -sum q . w A_px >= 0 [J].
+    programme_index : ndarray of int, shape (n,)
+        The user's programme point each step reaches or heads to: steps inserted by the step
+        control (``max_stick_change``) share the index of the point they lead to, and the step
+        at a programme point is the last with its index (:meth:`step_of`).
+    loading : TangentialPathResult or None
+        The frictional normal loading the programme starts from (``normal_loading="frictional"``
+        of :func:`solve_tangential`); its last state holds the locked-in shear.
     parameters : dict
         What was asked for.
     """
 
-    normal: NormalContactResult
+    normal: NormalContactResult | None
+    topography: Topography
     displacement: np.ndarray
     force: np.ndarray
     contact_area: np.ndarray
@@ -121,6 +140,11 @@ class TangentialPathResult:
     coupling_iterations: np.ndarray
     residual: np.ndarray
     states: dict[int, TangentialState]
+    normal_load: np.ndarray
+    approach: np.ndarray
+    dissipation: np.ndarray
+    programme_index: np.ndarray
+    loading: TangentialPathResult | None = None
     parameters: dict[str, Any] = field(default_factory=dict)
 
     UNITS: ClassVar[dict[str, str]] = {
@@ -133,6 +157,9 @@ class TangentialPathResult:
         "last_stick_area": "m^2",
         "last_slip_area": "m^2",
         "energy_last_closed_loop": "J",
+        "last_approach": "m",
+        "dissipated_energy": "J",
+        "locked_in_shear_rms": "Pa",
     }
     """SI unit of each dimensional scalar of :meth:`scalars`."""
 
@@ -143,8 +170,40 @@ class TangentialPathResult:
 
     @property
     def normal_force(self) -> float:
-        """F_0 [N]."""
-        return self.normal.force
+        """Normal force of the last step [N] (F_0 for :func:`solve_tangential`)."""
+        return float(self.normal_load[-1])
+
+    def step_of(self, point: int) -> int:
+        """Return the step solved at the user's programme point ``point`` (negative counts from the end)."""
+        points = np.flatnonzero(self.programme_index == (point % (self.programme_index.max() + 1)))
+        return int(points[-1])
+
+    def locked_in(self) -> dict[str, float]:
+        """Shear locked in by the frictional normal loading (NaN without one).
+
+        ``locked_in_stick_fraction``: stick area over contact area at its last step (Spence's
+        (c/a)^2 for a sphere); ``locked_in_shear_rms``: rms |q| over the contact [Pa];
+        ``locked_in_shear_ratio``: largest |q| / (mu p) inside the stick zone.
+        """
+        loading = self.loading
+        names = ("locked_in_stick_fraction", "locked_in_shear_rms", "locked_in_shear_ratio")
+        if loading is None or loading.steps - 1 not in loading.states:
+            return dict.fromkeys(names, math.nan)
+        state = loading.states[loading.steps - 1]
+        contact = state.contact
+        magnitude = np.hypot(state.shear_x, state.shear_y)[contact]
+        ratio = state.normalised_shear[state.stick]
+        return dict(
+            zip(
+                names,
+                (
+                    float(loading.stick_area[-1] / loading.contact_area[-1]),
+                    float(np.sqrt(np.mean(magnitude**2))),
+                    float(ratio.max()) if ratio.size else math.nan,
+                ),
+                strict=True,
+            )
+        )
 
     def _controlled(self, axis: int) -> np.ndarray:
         """Return the prescribed series along ``axis`` (force under force control, else displacement)."""
@@ -202,6 +261,9 @@ class TangentialPathResult:
             "last_stick_fraction": float(self.stick_area[-1] / self.contact_area[-1]),
             "loops": len(energies),
             "energy_last_closed_loop": float(energies[-1]) if energies.size else math.nan,
+            "last_approach": float(self.approach[-1]),
+            "dissipated_energy": float(self.dissipation.sum()),
+            **self.locked_in(),
             "iterations": int(self.iterations.sum()),
             "coupling_iterations": int(self.coupling_iterations.sum()),
             "residual": float(self.residual.max()),
@@ -219,6 +281,14 @@ class TangentialPathResult:
             "contact_area": ("step", self.contact_area, {"units": "m^2"}),
             "stick_area": ("step", self.stick_area, {"units": "m^2"}),
             "slip_area": ("step", self.slip_area, {"units": "m^2"}),
+            "normal_force": ("step", self.normal_load, {"units": "N"}),
+            "approach": ("step", self.approach, {"units": "m"}),
+            "dissipation": (
+                "step",
+                self.dissipation,
+                {"units": "J", "long_name": "frictional work of the step"},
+            ),
+            "programme_index": ("step", self.programme_index, {"long_name": "programme point reached"}),
             "iterations": ("step", self.iterations),
             "residual": ("step", self.residual, {"units": "1", "long_name": "scale-free residual"}),
         }
@@ -230,16 +300,16 @@ class TangentialPathResult:
                 dims,
                 np.stack([getattr(self.states[k], name) for k in kept])
                 if kept
-                else np.empty((0, *self.normal.pressure.shape)),
+                else np.empty((0, *self.topography.shape)),
                 {"units": unit},
             )
         data["stick"] = (
             dims,
             np.stack([self.states[k].stick for k in kept])
             if kept
-            else np.empty((0, *self.normal.pressure.shape), dtype=bool),
+            else np.empty((0, *self.topography.shape), dtype=bool),
         )
-        x, y = self.normal.topography.coordinates()
+        x, y = self.topography.coordinates()
         coords = {
             "step": np.arange(self.steps),
             "kept_step": np.asarray(kept, dtype=int),
