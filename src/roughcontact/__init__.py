@@ -13,7 +13,7 @@ The names of the common jobs, all in SI units (m, Pa, N, J/m^2)::
 * surfaces: :class:`Topography`, :func:`read_topography`, :func:`save_topography`,
   :func:`load_topography`, :mod:`generate`, :func:`spectral_moments`;
 * materials: :class:`Material`, :func:`get_material`, :func:`contact_modulus`;
-* models: :func:`solve_normal`, :func:`solve_tangential`, :func:`load_unload`,
+* models: :func:`solve_normal`, :func:`solve_tangential`, :func:`solve_frictional`, :func:`load_unload`,
   :func:`solve_winkler_lj` (paper 000), :func:`statistical_load_unload` (paper 002),
   :func:`presliding` (paper 001), :func:`analyse_loop`, :func:`oliver_pharr`;
 * studies: :func:`load_study`, :func:`run_study`;
@@ -41,6 +41,7 @@ _HOMES = {
     "contact_modulus": "roughcontact.materials",
     "solve_normal": "roughcontact.contact",
     "solve_tangential": "roughcontact.contact",
+    "solve_frictional": "roughcontact.contact",
     "load_unload": "roughcontact.contact",
     "solve_winkler_lj": "roughcontact.friction",
     "statistical_load_unload": "roughcontact.asperity",
@@ -75,6 +76,7 @@ __all__ = [
     "save_topography",
     "solve_normal",
     "solve_tangential",
+    "solve_frictional",
     "solve_winkler_lj",
     "spectral_moments",
     "statistical_load_unload",

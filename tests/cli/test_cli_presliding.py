@@ -138,7 +138,7 @@ def test_a_path_file_reproduces_the_stroke_programme(capsys, tmp_path, ball_file
     status, out, err = run(capsys, "presliding", *common, "--path", path, "-o", tmp_path / "path", "--json")
     assert status == 0, err
     row = scalars(out)
-    assert row["control"] == "displacement" and row["steps"] == len(steps)
+    assert row["control"] == "displacement" and row["steps"] == len(steps) + row["inserted_steps"]
     expected, found = _steps(tmp_path / "stroke"), _steps(tmp_path / "path")
     for column in ("delta_x", "force_x", "stick_area"):
         np.testing.assert_allclose(found[column], expected[column], rtol=1e-9, atol=1e-18)
@@ -163,8 +163,12 @@ def test_a_force_path_file_runs_under_force_control(capsys, tmp_path, ball_file,
     assert status == 0, err
     row = scalars(stdout)
     assert row["control"] == "force"
-    forces = _steps(out)["force_x"].values[1:]  # step 0 is the unloaded start
-    np.testing.assert_allclose(forces, 1e-3 * steps, rtol=1e-9, atol=1e-15)
+    stored = _steps(out)
+    forces = stored["force_x"].values[1:]  # step 0 is the unloaded start
+    point = stored["programme_point"].values[1:]  # the step control may insert steps between rows
+    at_rows = np.append(point[1:] != point[:-1], True)
+    assert row["steps"] == len(steps) + row["inserted_steps"] and at_rows.sum() == len(steps)
+    np.testing.assert_allclose(forces[at_rows], 1e-3 * steps, rtol=1e-9, atol=1e-15)
     assert row["last_stick_fraction"] > 0  # below mu F0 part of the contact sticks
     assert row["mu_from_loop"] is None and row["K_L_A"] is None  # no sliding plateau to analyse (NaN)
     energies = _steps(out)["loop_energy"].values

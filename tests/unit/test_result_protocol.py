@@ -36,6 +36,20 @@ def _tangential():
     return solve_tangential(normal, get_material("POM"), friction_coefficient=0.1, displacement=path)
 
 
+def _frictional():
+    from roughcontact.contact import solve_frictional
+
+    steps = np.linspace(0.2, 1.0, 4)
+    return solve_frictional(
+        _ball(),
+        get_material("POM"),
+        counter_body=get_material("silicon wafer"),
+        friction_coefficient=0.1,
+        normal_force=2e-3 * steps,
+        displacement=0.05e-6 * steps,
+    )
+
+
 def _presliding():
     from roughcontact.models.paper001 import presliding
 
@@ -127,6 +141,7 @@ def _loop():
 BUILDERS = {
     "normal contact": _normal,
     "tangential path": _tangential,
+    "frictional programme": _frictional,
     "pre-sliding (paper 001)": _presliding,
     "load-unload": _load_unload,
     "island compression (paper 002)": _island,

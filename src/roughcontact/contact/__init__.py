@@ -2,12 +2,15 @@
 
 ``normal`` (:func:`solve_normal`: FFT boundary elements, load or approach control, hardness, films),
 ``tangential`` (:func:`solve_tangential`: partial slip under a displacement or force programme),
+``frictional`` (:func:`solve_frictional`: combined normal and tangential programmes with friction
+from the unloaded state),
 ``plastic`` (:func:`load_unload`: elastic-perfectly-plastic load-unload), ``sweep``
 (:func:`load_path`: warm-started sequences of normal solves), ``paths`` (tangential programmes:
 paper 001's stroke path, symmetric cycles, a CSV) and their results, each with ``scalars()``,
 ``UNITS`` and ``to_xarray()`` (:mod:`roughcontact.results`).
 """
 
+from .frictional import solve_frictional
 from .normal import compliance_for, solve_normal
 from .paths import read_path_csv, stroke_path, symmetric_path
 from .plastic import LoadUnloadResult, load_unload
@@ -24,6 +27,7 @@ __all__ = [
     "compliance_for",
     "load_path",
     "load_unload",
+    "solve_frictional",
     "read_path_csv",
     "solve_normal",
     "solve_tangential",

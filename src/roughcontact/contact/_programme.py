@@ -16,12 +16,13 @@ coupling (Goodman's approximation, or beta = 0 where the coupling terms vanish) 
 (skipped when the normal target did not move) and one tangential increment make a step.
 
 The driver (:func:`run`) walks the user's programme points and, with ``max_stick_change``, inserts
-steps where the stick fraction (stick area / contact area) would change by more than that amount
-in one step: the step is retried over a shorter part of the segment towards the same programme
-point (adaptive step control, the user's points are always solved exactly). After a reversal the
-stick fraction falls from 1 to 0 at full slip, so ``max_stick_change = 0.1`` puts at least 10 steps
-between a reversal and full slip; for Cattaneo-Mindlin the stick area falls linearly with the
-displacement, so the inserted steps come out nearly evenly spaced.
+steps where the stick fraction (stick area / contact area) would fall by more than that amount in
+one step: the step is retried over a shorter part of the segment towards the same programme point
+(adaptive step control, the user's points are always solved exactly). A rising stick fraction is
+not refined: at a reversal every point sticks again at once, whatever the step. After a reversal
+the stick fraction falls from 1 to 0 at full slip, so ``max_stick_change = 0.1`` puts at least 10
+steps between a reversal and full slip; for Cattaneo-Mindlin the stick area falls linearly with
+the displacement, so the inserted steps come out nearly evenly spaced.
 
 References
 ----------
@@ -269,6 +270,16 @@ def preconditioning(precondition, operator):
     raise InputError("precondition", f"got {precondition!r}.", "use 'auto', True or False.")
 
 
+def check_max_stick_change(value) -> None:
+    """Refuse a ``max_stick_change`` outside (0, 1) (None turns the step control off)."""
+    if value is not None and not (isinstance(value, float | int) and 0 < value < 1):
+        raise InputError(
+            "max_stick_change",
+            f"got {value!r}.",
+            "give a fraction in (0, 1), e.g. 0.1, or None (no step control).",
+        )
+
+
 def _stick_fraction(state: State, stick_area: float, pixel_area: float) -> float:
     contact = np.count_nonzero(state.pressure > 0) * pixel_area
     return stick_area / contact if contact > 0 else np.nan
@@ -353,6 +364,8 @@ def run(
         done, length = 0.0, 1.0
         while done < 1.0:
             length = min(length, 1.0 - done)
+            if 1.0 - done - length < 0.3 * length:  # no sliver of a step before the programme point
+                length = 1.0 - done
             fraction = done + length
             at_point = fraction >= 1.0
             point = (
@@ -377,7 +390,8 @@ def run(
             contact = step.state.pressure > 0
             stick = step.increment.stick & contact
             fraction_now = _stick_fraction(step.state, stick.sum() * pixel_area, pixel_area)
-            change = abs(fraction_now - stick_fraction) if np.isfinite(stick_fraction) else 0.0
+            # Only a shrinking stick zone is resolved: re-sticking (a reversal) happens at once.
+            change = max(stick_fraction - fraction_now, 0.0) if np.isfinite(stick_fraction) else 0.0
             if max_stick_change is not None and change > max_stick_change and length > SHORTEST_STEP:
                 length = max(length * min(0.5, 0.8 * max_stick_change / change), SHORTEST_STEP)
                 continue

@@ -197,7 +197,7 @@ def solve_tangential(
     """
     if not (isinstance(loading_steps, int) and loading_steps >= 2):
         raise InputError("loading_steps", f"got {loading_steps!r}.", "give an integer >= 2, e.g. 10.")
-    _check_max_stick_change(max_stick_change)
+    _programme.check_max_stick_change(max_stick_change)
     _check_inputs(normal, material, counter_body)
     control, path = _programme.tangential_programme(displacement, force, normal.boundary)
     topography = normal.topography
@@ -249,12 +249,3 @@ def solve_tangential(
     )
     parameters.update(control=control, normal_loading=loading_mode, max_stick_change=max_stick_change)
     return _programme.result(normal, topography, record, parameters, loading=loading)
-
-
-def _check_max_stick_change(value) -> None:
-    if value is not None and not (isinstance(value, float | int) and 0 < value < 1):
-        raise InputError(
-            "max_stick_change",
-            f"got {value!r}.",
-            "give a fraction in (0, 1), e.g. 0.1, or None (no step control).",
-        )

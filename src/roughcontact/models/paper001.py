@@ -354,6 +354,7 @@ class PreslidingResult:
         "sliding_distance_mindlin": "m",
         "window_size": "m",
         "pixel": "m",
+        "locked_in_shear_rms": "Pa",
     }
     """SI unit of each dimensional scalar of :meth:`scalars`."""
 
@@ -433,6 +434,9 @@ class PreslidingResult:
             "window_size": topography.size[0],
             "pixel": topography.spacing[0],
             "coupling": bool(result.parameters.get("coupling", True)),
+            "normal_loading": result.parameters.get("normal_loading", "frictionless"),
+            **{key: path[key] for key in ("locked_in_stick_fraction", "locked_in_shear_rms")},
+            "inserted_steps": int(result.steps - (result.programme_index.max() + 1)),
             "iterations": self.iterations,
             "residual": self.residual,
             "analysis_note": self.note,
@@ -471,9 +475,12 @@ class PreslidingResult:
             name: ("step", from_start(values), {"units": unit, "long_name": text})
             for name, (values, unit, text) in series.items()
         }
+        loading = result.loading
         data["stick_area"] = (
             "step",
-            from_start(result.stick_area, result.normal.contact_area),
+            from_start(
+                result.stick_area, result.normal.contact_area if loading is None else loading.stick_area[-1]
+            ),
             {"units": "m^2", "long_name": "sticking part of the contact"},
         )
         data["pressure"] = (("x", "y"), result.normal.pressure.astype(np.float32), {"units": "Pa"})
@@ -483,6 +490,20 @@ class PreslidingResult:
             {"units": "1", "long_name": "sqrt(q_x^2 + q_y^2) / (mu p)"},
         )
         data["map_step"] = ("map", np.array([k + 1 for k in steps], dtype=np.int32))
+        data["programme_point"] = (
+            "step",
+            from_start(result.programme_index + 1, 0).astype(np.int32),
+            {"long_name": "programme point each step belongs to (inserted steps share the next point's)"},
+        )
+        if loading is not None:
+            data["locked_in_shear"] = (
+                ("x", "y"),
+                loading.states[loading.steps - 1].normalised_shear.astype(np.float32),
+                {
+                    "units": "1",
+                    "long_name": "sqrt(q_x^2 + q_y^2) / (mu p) after the frictional normal loading",
+                },
+            )
         data["loop_energy"] = (
             "loop",
             result.dissipated_energy(),
@@ -543,6 +564,8 @@ def presliding(
     control: str = "displacement",
     radius: float = RADIUS,
     coupling: bool = True,
+    normal_loading: str = "auto",
+    max_stick_change: float | None = 0.1,
     tolerance: float = 1e-8,
     maps: int = 4,
     label: str = "",
@@ -591,6 +614,14 @@ def presliding(
         Ball radius R of Mindlin's reference [m].
     coupling : bool
         Normal-tangential coupling of dissimilar materials (False: Goodman's approximation).
+    normal_loading : {"auto", "frictional", "frictionless"}
+        How F0 is applied before the programme (:func:`~roughcontact.contact.tangential.solve_tangential`):
+        "auto" is "frictional" for a coupled pair (beta != 0), which locks in shear (Spence 1975).
+    max_stick_change : float, optional
+        Step control (default 0.1): steps are inserted where the stick fraction would change by
+        more than this in one step, so every pre-sliding branch has at least 10 steps between
+        its reversal and full slip; the programme's own points are all solved. None: the
+        programme's points only.
     tolerance : float
         Of the normal and tangential solvers.
     maps : int
@@ -638,6 +669,8 @@ def presliding(
         counter_body=counter_body,
         friction_coefficient=friction_coefficient,
         coupling=coupling,
+        normal_loading=normal_loading,
+        max_stick_change=max_stick_change,
         tolerance=tolerance,
         fields_at=kept,
         **{control: path},
@@ -645,14 +678,15 @@ def presliding(
     analysis, note = _analysed(result, normal_force, control)
     if stroke is not None and analysis is not None:
         rising = analysis.branch.direction > 0
-        branch = [k for k in kept if (k < len(path) - steps_per_stroke) == rising]
+        first_falling = len(path) - steps_per_stroke  # programme point where the last cycle turns back
+        branch = [k for k in result.states if (result.programme_index[k] < first_falling) == rising]
         targets = zip(analysis.point_names, analysis.branch.point_displacement, strict=True)
         map_steps = {
             point: min(branch, key=lambda k, target=target: abs(result.displacement[k, 0] - target))
             for point, target in targets
         }
     else:
-        map_steps = {f"step {k + 1}": k for k in last_turns if k in kept}
+        map_steps = {f"step {result.step_of(k) + 1}": result.step_of(k) for k in last_turns if k in kept}
     references = {
         reading: paper001_mindlin(
             friction_coefficient=friction_coefficient,
