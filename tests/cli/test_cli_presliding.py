@@ -200,3 +200,39 @@ def test_path_and_stroke_together_are_refused(capsys, tmp_path, ball_file):
     path.write_text("x\n0.1\n")
     status, _, err = run(capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path)
     assert status == EXIT_INPUT_ERROR and "has no unit" in err
+
+
+def test_a_path_with_a_normal_column_runs_a_combined_programme(capsys, tmp_path, ball_file, scalars):
+    """Oblique loading then normal-load cycling at a held displacement (issue 20), from the unloaded state."""
+    rows = [(0.0, 5 * (k / 5) ** 3) for k in range(1, 6)]
+    rows += [(0.05 * k, 5 + k) for k in range(1, 6)] + [(0.25, 6.0), (0.25, 10.0)]
+    path = tmp_path / "combined.csv"
+    path.write_text("x [um],F_n [mN]\n" + "\n".join(f"{x!r},{f!r}" for x, f in rows) + "\n")
+    options = [o for o in BALL_OPTIONS]
+    at = options.index("--normal-force")
+    del options[at : at + 2]
+    out = tmp_path / "out"
+    status, stdout, err = run(capsys, "presliding", ball_file, *options, "--path", path, "-o", out, "--json")
+    assert status == 0, err
+    row = scalars(stdout)
+    assert row["normal_loading"] == "frictional" and row["normal_force"] == pytest.approx(10e-3)
+    stored = _steps(out)
+    point = stored["programme_point"].values[1:]
+    at_rows = np.append(point[1:] != point[:-1], True)
+    np.testing.assert_allclose(
+        stored["normal_force"].values[1:][at_rows], 1e-3 * np.array(rows)[:, 1], rtol=1e-8
+    )
+    # while F_n falls at a held displacement the contact slides back to (nearly) mu F_n; reloading holds it
+    force = stored["force_x"].values[1:][at_rows]
+    mu = float(row["friction_coefficient"])
+    assert force[-2] == pytest.approx(mu * 6e-3, rel=1e-3) and force[-1] == pytest.approx(force[-2], rel=1e-6)
+    assert "sliding" not in err
+    assert (out / "figures" / "presliding_path.png").stat().st_size > 10_000
+
+
+def test_a_normal_column_and_a_normal_force_are_refused_together(capsys, tmp_path, ball_file):
+    path = tmp_path / "combined.csv"
+    path.write_text("x [um],F_n [mN]\n0,5\n")
+    status, _, err = run(capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path)
+    assert status == EXIT_INPUT_ERROR
+    assert "normal column" in err and "normal_force" in err.replace("--normal-force", "normal_force")

@@ -72,7 +72,9 @@ def test_example_runs_end_to_end(cli, shrunk, tmp_path):
         printed = [float(row[f"K_L_{p}_mindlin_printed [N/m]"]) for p in POINTS]
         assert printed == pytest.approx([4 * m for m in mindlin], rel=1e-12)  # the printed G_s is 4 G*
         assert mindlin[1] / mindlin[0] == pytest.approx((0.5 / 0.75) ** (1 / 3), rel=1e-12)  # eq. 12
-        assert int(row["steps"]) == 2 * 2 * 12 + int(row["inserted_steps"])  # 10 or more per branch's pre-sliding
+        assert int(row["steps"]) == 2 * 2 * 12 + int(
+            row["inserted_steps"]
+        )  # 10 or more per branch's pre-sliding
         assert float(row["window_size [m]"]) == pytest.approx(40 * 1.1e-3 / 128)
 
     table = read_table(out / "tables" / "presliding_lateral_stiffness.csv")

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from roughcontact.contact.paths import read_path_csv, reversals, stroke_path
+from roughcontact.contact.paths import read_path_csv, read_programme_csv, reversals, stroke_path
 from roughcontact.errors import InputError, UnitError
 
 
@@ -40,7 +40,7 @@ def test_the_same_programme_in_other_units_reads_the_same(tmp_path):
         ("x,y [um]\n1,2\n", "'x' has no unit"),
         ("x [um],Q [mN]\n1,2\n", "of the same kind"),
         ("p [MPa]\n1\n", "neither a length nor a force"),
-        ("x [um],y [um],z [um]\n1,2,3\n", "3 displacement or force column"),
+        ("x [um],y [um],w [um]\n1,2,3\n", "3 tangential displacement or force column"),
         ("x [um]\n1\nabc\n", "data row 2"),
         ("x [um]\n1\nnan\n", "step 1 is not a finite number"),
         ("x [um]\n", "no steps"),
@@ -69,3 +69,34 @@ def test_reversals_of_the_stroke_path_and_holds():
     assert reversals([1.0, 2.0, 3.0]).size == 0
     held = 2.0 + np.array([0.0, 4e-16, -4e-16, 4e-16])  # a force held under force control, with round-off
     assert reversals(np.concatenate([[1.0], held, [1.0]])).tolist() == [4]
+
+
+def test_a_normal_column_makes_a_combined_programme(tmp_path):
+    text = "step,x [um],F_n [mN]\n1,0,5\n2,0.5,20\n3,1,20\n"
+    programme = read_programme_csv(_write(tmp_path, text, "combined.csv"))
+    assert programme.control == "displacement" and programme.normal_control == "force"
+    np.testing.assert_allclose(programme.tangential[:, 0], [0, 0.5e-6, 1e-6])
+    np.testing.assert_allclose(programme.normal, [5e-3, 20e-3, 20e-3])
+    approach = read_programme_csv(_write(tmp_path, "Q_x [mN],z [nm]\n1,10\n", "approach.csv"))
+    assert approach.control == "force" and approach.normal_control == "approach"
+    np.testing.assert_allclose(approach.normal, [10e-9])
+
+
+@pytest.mark.parametrize(
+    ("text", "words"),
+    [
+        ("x [um],F_n [mN]\n0,5\n0,0\n", "contact is lost"),
+        ("x [um],F_n [mN],z [um]\n0,5,1\n", "at most one"),
+        ("x [um],Q_y [mN],F_n [mN]\n0,1,5\n", "mixed controls"),
+        ("x [um],F_n [mN]\n0,nan\n", "not a finite"),
+    ],
+)
+def test_bad_combined_programmes_name_the_problem(tmp_path, text, words):
+    with pytest.raises(InputError) as error:
+        read_programme_csv(_write(tmp_path, text, "bad.csv"))
+    assert words in str(error.value)
+
+
+def test_a_tangential_reader_refuses_a_combined_programme(tmp_path):
+    with pytest.raises(InputError, match="solve_frictional"):
+        read_path_csv(_write(tmp_path, "x [um],F_n [mN]\n0,5\n", "combined.csv"))

@@ -103,7 +103,9 @@ def test_beta_zero_frictional_start_equals_goodman_start():
     np.testing.assert_allclose(frictional.force, goodman.force, rtol=0, atol=1e-10 * scale)
     for step in goodman.states:
         peak = MU * normal.pressure.max()
-        np.testing.assert_allclose(frictional.states[step].shear_x, goodman.states[step].shear_x, atol=1e-10 * peak)
+        np.testing.assert_allclose(
+            frictional.states[step].shear_x, goodman.states[step].shear_x, atol=1e-10 * peak
+        )
 
 
 def test_auto_start_is_frictional_for_dissimilar_materials_and_frictionless_for_similar():
@@ -115,9 +117,12 @@ def test_auto_start_is_frictional_for_dissimilar_materials_and_frictionless_for_
             normal, material, counter_body=counter, friction_coefficient=MU, displacement=[1e-7]
         )
         assert result.parameters["normal_loading"] == expected
-    assert solve_tangential(
-        normal, material, friction_coefficient=MU, displacement=[1e-7], coupling=False
-    ).parameters["normal_loading"] == "frictionless"  # Goodman's approximation throughout
+    assert (
+        solve_tangential(
+            normal, material, friction_coefficient=MU, displacement=[1e-7], coupling=False
+        ).parameters["normal_loading"]
+        == "frictionless"
+    )  # Goodman's approximation throughout
 
 
 # --- invariants on a rough ball of dissimilar materials -------------------------------------------
@@ -125,7 +130,9 @@ def test_auto_start_is_frictional_for_dissimilar_materials_and_frictionless_for_
 
 @pytest.fixture(scope="module")
 def rough_ball():
-    return generate.sphere_with_roughness((32, 32), (32 * 2.148e-6,) * 2, radius=5e-3, rms_height=5e-8, seed=3)
+    return generate.sphere_with_roughness(
+        (32, 32), (32 * 2.148e-6,) * 2, radius=5e-3, rms_height=5e-8, seed=3
+    )
 
 
 @settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
@@ -138,7 +145,9 @@ def test_every_step_balances_loads_respects_coulomb_and_dissipates(rough_ball, l
     pom, silicon = get_material("POM"), get_material("silicon wafer")
     normal = 2e-3 * np.asarray(loads)
     tangential = np.asarray(shifts[: len(loads)])
-    control = {"force": 0.6 * MU * normal * tangential} if force_control else {"displacement": 0.1e-6 * tangential}
+    control = (
+        {"force": 0.6 * MU * normal * tangential} if force_control else {"displacement": 0.1e-6 * tangential}
+    )
     result = solve_frictional(
         rough_ball, pom, counter_body=silicon, friction_coefficient=MU, normal_force=normal, **control
     )
@@ -158,7 +167,12 @@ def test_unit_invariance_of_a_combined_programme(rough_ball):
     normal = 2e-3 * np.array([0.3, 1.0, 0.6])
     shift = 0.05e-6 * np.array([0.0, 1.0, -1.0])
     base = solve_frictional(
-        rough_ball, pom, counter_body=silicon, friction_coefficient=MU, normal_force=normal, displacement=shift
+        rough_ball,
+        pom,
+        counter_body=silicon,
+        friction_coefficient=MU,
+        normal_force=normal,
+        displacement=shift,
     )
     scale = 1e6  # lengths in um: heights and sizes x 1e6, forces unchanged if moduli / 1e12
     scaled_ball = generate.sphere_with_roughness(
@@ -167,7 +181,12 @@ def test_unit_invariance_of_a_combined_programme(rough_ball):
     soft = Material(pom.youngs_modulus / scale**2, pom.poissons_ratio, "POM in uN/um^2")
     flat = Material(silicon.youngs_modulus / scale**2, silicon.poissons_ratio, "Si in uN/um^2")
     other = solve_frictional(
-        scaled_ball, soft, counter_body=flat, friction_coefficient=MU, normal_force=normal, displacement=shift * scale
+        scaled_ball,
+        soft,
+        counter_body=flat,
+        friction_coefficient=MU,
+        normal_force=normal,
+        displacement=shift * scale,
     )
     np.testing.assert_allclose(other.force, base.force, rtol=1e-6, atol=1e-9 * normal.max())
     np.testing.assert_allclose(other.approach, base.approach * scale, rtol=1e-6)
@@ -187,7 +206,11 @@ def test_unit_invariance_of_a_combined_programme(rough_ball):
         ({"normal_force": [1e-3], "displacement": [0], "force": [0]}, "path", "exactly one"),
         ({"normal_force": [1e-3], "force": [0.5 * 1e-3]}, "force", "slid"),
         ({"approach": [-1e-9], "displacement": [0]}, "approach", "contact is lost"),
-        ({"normal_force": [1e-3], "displacement": [0], "max_stick_change": 2.0}, "max_stick_change", "fraction"),
+        (
+            {"normal_force": [1e-3], "displacement": [0], "max_stick_change": 2.0},
+            "max_stick_change",
+            "fraction",
+        ),
     ],
 )
 def test_bad_programmes_are_refused_with_the_field_named(rough_ball, arguments, field, words):

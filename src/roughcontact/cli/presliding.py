@@ -90,6 +90,16 @@ def _ball(command: CommandStudy, args: argparse.Namespace) -> dict:
     } | options(args, "normal_force", "friction_coefficient", "stroke", "maps", "window")
 
 
+def _fraction(text: str) -> float:
+    """Return --max-stick-change as a number (the study checks its range; 0 turns it off)."""
+    try:
+        return float(text)
+    except ValueError:
+        raise InputError(
+            "--max-stick-change", f"got {text!r}.", "give a fraction such as 0.1, or 'none'."
+        ) from None
+
+
 def _presliding(args: argparse.Namespace) -> int:
     command = CommandStudy(
         "roughcontact presliding", "partial-slip friction loops of a rough ball (paper 001)"
@@ -101,6 +111,10 @@ def _presliding(args: argparse.Namespace) -> int:
         keys = _ball(command, args)
     keys |= options(args, "radius", "cycles", "steps_per_stroke", "tolerance")
     keys["coupling"] = (False if args.no_coupling else None, "--no-coupling")
+    keys |= options(args, "normal_loading")
+    if args.max_stick_change is not None:
+        text = args.max_stick_change.strip().lower()
+        keys["max_stick_change"] = (0.0 if text == "none" else _fraction(text), "--max-stick-change")
     index = command.analysis("presliding", "presliding", keys)
     if zipped:
         command.zipped(index, zipped)
@@ -172,9 +186,10 @@ def add_commands(commands) -> None:
     presliding.add_argument(
         "--path",
         type=Path,
-        help="instead of --stroke: your tangential programme, a CSV with one row per step and units "
-        "in the header: 'x [um]' or 'x [um],y [um]' (displacement control), 'Q_x [mN],Q_y [mN]' "
-        "(force control)",
+        help="instead of --stroke: your programme, a CSV with one row per step and units in the header: "
+        "'x [um]' or 'x [um],y [um]' (displacement control), 'Q_x [mN],Q_y [mN]' (force control); add "
+        "a normal column 'F_n [mN]' (normal force) or 'z [um]' (approach) for a combined programme "
+        "from the unloaded state (then no --normal-force)",
     )
     presliding.add_argument("--maps", type=int, help="with --path: shear maps kept (last reversals and step)")
     presliding.add_argument("--radius", default="5 mm", help="ball radius for Mindlin's K_L (default 5 mm)")
@@ -194,6 +209,17 @@ def add_commands(commands) -> None:
     )
     presliding.add_argument("--seed", type=int, default=1, help="with --paper001: seed of the roughness")
     presliding.add_argument("--no-coupling", action="store_true", help="uncoupled (Goodman) solution")
+    presliding.add_argument(
+        "--normal-loading",
+        choices=("auto", "frictional", "frictionless"),
+        help="how F0 is applied before the programme: with friction (locked-in shear; 'auto', the "
+        "default, does so for dissimilar materials) or frictionless (Goodman's start)",
+    )
+    presliding.add_argument(
+        "--max-stick-change",
+        help="step control: most the stick fraction may fall in one step (default 0.1, at least 10 "
+        "steps from a reversal to full slip); 'none' or 0 solves the programme's points only",
+    )
     presliding.add_argument("--tolerance", type=float, default=1e-8, help="solver tolerance (default 1e-8)")
     presliding.add_argument("--measured", type=Path, help="a measured loop CSV to set beside the cases")
     presliding.add_argument("--measured-displacement-unit", default="um")

@@ -12,7 +12,7 @@ paper 001's stroke path, symmetric cycles, a CSV) and their results, each with `
 
 from .frictional import solve_frictional
 from .normal import compliance_for, solve_normal
-from .paths import read_path_csv, stroke_path, symmetric_path
+from .paths import read_path_csv, read_programme_csv, stroke_path, symmetric_path
 from .plastic import LoadUnloadResult, load_unload
 from .result import NormalContactResult
 from .sweep import load_path
@@ -29,6 +29,7 @@ __all__ = [
     "load_unload",
     "solve_frictional",
     "read_path_csv",
+    "read_programme_csv",
     "solve_normal",
     "solve_tangential",
     "stroke_path",

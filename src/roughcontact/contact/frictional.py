@@ -186,6 +186,7 @@ def solve_frictional(
     parameters.update(
         control=tangential_control,
         normal_control=normal_control,
+        normal_loading="frictional",  # the normal load is part of the programme, friction acts from the start
         boundary=boundary,
         max_stick_change=max_stick_change,
     )

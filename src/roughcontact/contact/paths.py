@@ -1,12 +1,14 @@
-"""Tangential loading programmes: displacement (or force) paths for :func:`solve_tangential`.
+"""Loading programmes: tangential (:func:`solve_tangential`) and combined (:func:`solve_frictional`).
 
 Built here (paper 001's Fig. 6 stroke path, the symmetric Mindlin-Deresiewicz cycles) or read
-from a text table (:func:`read_path_csv`, any user programme, displacement or force controlled).
+from a text table (:func:`read_programme_csv`: any user programme, tangential displacement or
+force controlled, with an optional normal column; :func:`read_path_csv`: tangential only).
 """
 
 from __future__ import annotations
 
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 
@@ -109,21 +111,42 @@ def as_path(values, name: str) -> np.ndarray:
 
 CONTROLS = {DIMENSIONS["length"]: "displacement", DIMENSIONS["force"]: "force"}
 """The control a path column's unit selects: a length prescribes the rigid displacement, a force the force."""
+NORMAL_NAMES = ("f_n", "fn", "n", "p", "f_z", "fz", "normal", "z", "approach", "delta_z")
+"""Column names (any case) of the normal programme: a force (``F_n [mN]``) or an approach (``z [um]``)."""
+NORMAL_CONTROLS = {DIMENSIONS["length"]: "approach", DIMENSIONS["force"]: "force"}
 _PATH_FIX = (
     "start the file with a header naming each column with its unit: 'x [um]' or 'x [um],y [um]' "
-    "(rigid tangential displacement), 'Q_x [mN]' or 'Q_x [mN],Q_y [mN]' (tangential force)."
+    "(rigid tangential displacement), 'Q_x [mN]' or 'Q_x [mN],Q_y [mN]' (tangential force), and "
+    "optionally one normal column, 'F_n [mN]' (normal force) or 'z [um]' (normal approach)."
 )
 
 
-def read_path_csv(path: str | Path, *, delimiter: str | None = None) -> tuple[np.ndarray, str]:
-    """Read a tangential loading programme: one row per step, x then (optionally) y.
+class Programme(NamedTuple):
+    """A loading programme read from a table (SI).
+
+    ``tangential``: (n, 2) displacement [m] or force [N] as ``control`` says; ``normal``: (n,)
+    normal force [N] or approach [m] as ``normal_control`` says, or None (a constant normal force
+    given elsewhere).
+    """
+
+    tangential: np.ndarray
+    control: str
+    normal: np.ndarray | None
+    normal_control: str | None
+
+
+def read_programme_csv(path: str | Path, *, delimiter: str | None = None) -> Programme:
+    """Read a loading programme: one row per step, tangential x (and y), optionally a normal column.
 
     The header must give every column a unit, and the units choose the control: lengths
     (``x [um], y [um]``) prescribe the rigid tangential displacement of the counter-body, forces
-    (``Q_x [mN], Q_y [mN]``) the tangential force (see :func:`solve_tangential`). A column
-    named ``step`` and columns in units of time (``t [s]``) are ignored. The start (0, 0) is
-    the normal contact and is not a row. Units are converted once, through
-    :mod:`roughcontact.units`.
+    (``Q_x [mN], Q_y [mN]``) the tangential force (see :func:`solve_tangential`). A column named
+    for the normal direction (:data:`NORMAL_NAMES`: ``F_n [mN]``, ``N [mN]``, ``P [mN]`` for the
+    normal force, ``z [um]`` or ``approach [um]`` for the normal approach) makes it a combined
+    programme (:func:`~roughcontact.contact.frictional.solve_frictional`). A column named
+    ``step`` and columns in units of time (``t [s]``) are ignored. The start is the unloaded
+    state (combined) or the normal contact (tangential only) and is not a row. Units are converted
+    once, through :mod:`roughcontact.units`.
 
     Parameters
     ----------
@@ -134,22 +157,22 @@ def read_path_csv(path: str | Path, *, delimiter: str | None = None) -> tuple[np
 
     Returns
     -------
-    programme : ndarray, shape (n, 2)
-        The programme in SI (m or N), x and y (0 when only x is given).
-    control : {"displacement", "force"}
+    Programme
 
     Raises
     ------
     InputError
-        No header, a column without a unit, units of another or of mixed dimensions, more than
-        two value columns, a cell that is not a number, a NaN or infinite step, no rows.
+        No header, a column without a unit, tangential units of another or of mixed dimensions
+        (a displacement and a force column), more than two tangential or more than one normal
+        column, a cell that is not a number, a NaN or infinite step, no rows, a normal force or
+        approach <= 0 (contact lost at that row).
     UnitError
         An unknown unit.
     """
     table = read_text_table(path, expected="one row per step, x then y", delimiter=delimiter)
     if table.names is None:
         raise InputError("path", f"{path} has no header, so its units are unknown.", _PATH_FIX)
-    columns, factors, controls = [], [], set()
+    columns, factors, controls, normal = [], [], set(), []
     for index, (name, unit) in enumerate(zip(table.names, table.units, strict=True)):
         if name == "step" and unit is None:
             continue
@@ -162,21 +185,68 @@ def read_path_csv(path: str | Path, *, delimiter: str | None = None) -> tuple[np
             raise InputError(
                 "path", f"{path}: column {name!r} is in [{unit}], neither a length nor a force.", _PATH_FIX
             )
+        if name.strip().lower() in NORMAL_NAMES:
+            normal.append((index, float(factor), NORMAL_CONTROLS[dimension], name))
+            continue
         columns.append(index)
         factors.append(float(factor))
         controls.add(CONTROLS[dimension])
     if not 1 <= len(columns) <= 2 or len(controls) != 1:
         raise InputError(
             "path",
-            f"{path}: {len(columns)} displacement or force column(s) ({sorted(controls)}); need one or two "
-            "of the same kind.",
+            f"{path}: {len(columns)} tangential displacement or force column(s) ({sorted(controls)}); need "
+            "one or two of the same kind (mixed controls in one direction are not a programme).",
             _PATH_FIX,
         )
-    values = np.array([_numbers(row, columns, number, path) for number, row in enumerate(table.rows, 1)])
+    if len(normal) > 1:
+        raise InputError(
+            "path",
+            f"{path}: {len(normal)} normal columns ({', '.join(n[3] for n in normal)}); need at most one.",
+            "give the normal force or the normal approach, not both.",
+        )
+    every = columns + [n[0] for n in normal]
+    values = np.array([_numbers(row, every, number, path) for number, row in enumerate(table.rows, 1)])
     if len(values) == 0:
         raise InputError("path", f"{path} has a header but no steps.", "add one row per step.")
-    programme = values * np.array(factors)
-    return as_path(programme[:, 0] if len(columns) == 1 else programme, "path"), controls.pop()
+    tangential = values[:, : len(columns)] * np.array(factors)
+    tangential = as_path(tangential[:, 0] if len(columns) == 1 else tangential, "path")
+    if not normal:
+        return Programme(tangential, controls.pop(), None, None)
+    _, factor, normal_control, name = normal[0]
+    load = as_path(values[:, -1] * factor, "path")[:, 0]
+    low = np.flatnonzero(load <= 0)
+    if low.size:
+        raise InputError(
+            "path",
+            f"{path}: data row {int(low[0]) + 1} has {name} = {values[low[0], -1]:g} <= 0: contact is "
+            "lost there.",
+            "keep the normal force (or approach) above zero; end the programme before the bodies separate.",
+        )
+    return Programme(tangential, controls.pop(), load, normal_control)
+
+
+def read_path_csv(path: str | Path, *, delimiter: str | None = None) -> tuple[np.ndarray, str]:
+    """Read a tangential programme (:func:`read_programme_csv` without a normal column).
+
+    Returns
+    -------
+    programme : ndarray, shape (n, 2)
+        The programme in SI (m or N), x and y (0 when only x is given).
+    control : {"displacement", "force"}
+
+    Raises
+    ------
+    InputError
+        As :func:`read_programme_csv`, and a normal column (the programme is then a combined one).
+    """
+    programme = read_programme_csv(path, delimiter=delimiter)
+    if programme.normal is not None:
+        raise InputError(
+            "path",
+            f"{path} has a normal column: it is a combined normal and tangential programme.",
+            "solve it with solve_frictional (read_programme_csv), or drop the normal column.",
+        )
+    return programme.tangential, programme.control
 
 
 def _numbers(row: list[str], columns: list[int], number: int, path) -> list[float]:

@@ -42,6 +42,7 @@ from ..analytic.mindlin import (
 )
 from ..checks import finite_array, positive
 from ..contact import solve_normal
+from ..contact.frictional import solve_frictional
 from ..contact.paths import as_path, reversals, stroke_path
 from ..contact.tangential import solve_tangential
 from ..errors import InputError
@@ -281,6 +282,13 @@ def loop_from_start(result) -> tuple[np.ndarray, np.ndarray]:
     )
 
 
+def _start_stick_area(result) -> float:
+    """Return the stick area where the programme starts (after the loading, the whole contact, or 0)."""
+    if result.loading is not None:
+        return float(result.loading.stick_area[-1])
+    return float(result.normal.contact_area) if result.normal is not None else 0.0
+
+
 @dataclass(frozen=True)
 class PreslidingResult:
     """A rough ball on a flat under a tangential programme, its last loop analysed, against Mindlin.
@@ -304,6 +312,9 @@ class PreslidingResult:
         d_s [m] of paper 001's programme; None for a user programme.
     result : TangentialPathResult
         Every step (forces, displacements, stick and slip areas) and the kept fields.
+    normal : NormalContactResult
+        The frictionless normal contact at F0 (for a combined programme, at its largest normal
+        force or approach): the pressure map, the contact area and the window check.
     analysis : LoopAnalysis or None
         The last loop's analysis.
     note : str
@@ -326,6 +337,7 @@ class PreslidingResult:
     control: str
     stroke: float | None
     result: Any  # TangentialPathResult
+    normal: Any  # NormalContactResult
     analysis: LoopAnalysis | None
     note: str
     mindlin: dict[str, dict[str, float]]
@@ -365,7 +377,7 @@ class PreslidingResult:
 
     @property
     def iterations(self) -> int:
-        """Tangential iterations of the whole programme (the normal solve's are in ``result.normal``)."""
+        """Tangential iterations of the whole programme (the normal solve's are in ``normal``)."""
         return int(self.result.iterations.sum())
 
     @property
@@ -392,7 +404,7 @@ class PreslidingResult:
         energy_last_loop is the area of the analysed loop (0 -> d_s -> 0) for paper 001's
         programme, and of the last loop the x programme closes for a user programme.
         """
-        result, analysis, normal = self.result, self.analysis, self.result.normal
+        result, analysis, normal = self.result, self.analysis, self.normal
         path = result.scalars()
         scalars: dict[str, Any] = {"control": self.control, "steps": result.steps}
         scalars["normal_force"] = self.normal_force
@@ -459,7 +471,7 @@ class PreslidingResult:
         result = self.result
         labels = list(self.map_steps)
         steps = [self.map_steps[label] for label in labels]
-        x, y = result.normal.topography.coordinates()
+        x, y = self.normal.topography.coordinates()
 
         def from_start(series, start=0.0):
             return np.concatenate([[start], series])
@@ -471,19 +483,19 @@ class PreslidingResult:
             "force_y": (result.force[:, 1], "N", "friction force F_y"),
             "slip_area": (result.slip_area, "m^2", "slipping part of the contact"),
         }
+        start_load = 0.0 if result.normal is None else result.normal.force
         data = {
             name: ("step", from_start(values), {"units": unit, "long_name": text})
             for name, (values, unit, text) in series.items()
         }
+        data["normal_force"] = ("step", from_start(result.normal_load, start_load), {"units": "N"})
         loading = result.loading
         data["stick_area"] = (
             "step",
-            from_start(
-                result.stick_area, result.normal.contact_area if loading is None else loading.stick_area[-1]
-            ),
+            from_start(result.stick_area, _start_stick_area(result)),
             {"units": "m^2", "long_name": "sticking part of the contact"},
         )
-        data["pressure"] = (("x", "y"), result.normal.pressure.astype(np.float32), {"units": "Pa"})
+        data["pressure"] = (("x", "y"), self.normal.pressure.astype(np.float32), {"units": "Pa"})
         data["normalised_shear"] = (
             ("map", "x", "y"),
             np.stack([result.states[k].normalised_shear for k in steps]).astype(np.float32),
@@ -541,6 +553,10 @@ def _analysed(result, normal_force: float, control: str) -> tuple[LoopAnalysis |
         return None, "force control: the paper's loop analysis needs a displacement programme that slides"
     if not result.loops():
         return None, "no closed loop of the x programme"
+    start, stop = result.loops()[-1]
+    loads = result.normal_load[start : stop + 1]
+    if np.ptp(loads) > 1e-6 * loads.max():
+        return None, "the normal force varies along the last loop: the paper's analysis needs it constant"
     try:
         analysis = analyse_loop(*loop_from_start(result), normal_force, fractions=POINTS)
     except InputError as error:  # e.g. too few steps in the pre-sliding part for the eq. 9 fit
@@ -555,13 +571,15 @@ def presliding(
     material: Material,
     counter_body: Material | None = None,
     *,
-    normal_force: float,
+    normal_force: float | None = None,
     friction_coefficient: float,
     stroke: float | None = None,
     cycles: int = 4,
     steps_per_stroke: int = 20,
     path=None,
     control: str = "displacement",
+    normal_path=None,
+    normal_control: str = "force",
     radius: float = RADIUS,
     coupling: bool = True,
     normal_loading: str = "auto",
@@ -589,6 +607,13 @@ def presliding(
     4. Mindlin's K_L of a smooth ball of ``radius`` at the same points (eqs. 10-12, the textbook
        reading and the paper's printed one, 4x larger).
 
+    With ``normal_path`` (a normal force or approach for every row of ``path``) the programme is a
+    combined one, solved from the unloaded state by
+    :func:`~roughcontact.contact.frictional.solve_frictional` (no ``normal_force``): the normal
+    contact of the result (pressure map, window check, Mindlin's reference) is then the
+    frictionless one at the programme's largest normal force or approach, and the last loop is
+    analysed only where the normal force is constant along it.
+
     Fields are kept at the points A, B, C of the last loop for the paper's programme, else at the
     last ``maps - 1`` reversals and the last step.
 
@@ -599,7 +624,7 @@ def presliding(
     material, counter_body : Material
         The ball and the flat (None: rigid).
     normal_force : float
-        F0 [N].
+        F0 [N] (not with ``normal_path``).
     friction_coefficient : float
         mu_f of the local Coulomb law.
     stroke : float, optional
@@ -610,6 +635,10 @@ def presliding(
         The user's programme.
     control : {"displacement", "force"}
         What ``path`` prescribes.
+    normal_path : array_like, optional
+        Normal force [N] or approach [m] after each row of ``path`` (combined programme).
+    normal_control : {"force", "approach"}
+        What ``normal_path`` prescribes.
     radius : float
         Ball radius R of Mindlin's reference [m].
     coupling : bool
@@ -653,28 +682,37 @@ def presliding(
         control = "displacement"
         path = stroke_path(stroke, cycles=cycles, steps_per_stroke=steps_per_stroke, spacing="quadratic")
     path = as_path(path, control)
-    normal = solve_normal(
-        topography, material, counter_body=counter_body, force=normal_force, tolerance=tolerance
-    )
+    if (normal_path is None) == (normal_force is None):
+        raise InputError(
+            "normal_force",
+            "give the constant normal force F0 or a normal programme (normal_path), exactly one.",
+            "e.g. normal_force=0.025 (N), or a path file with an 'F_n [mN]' column.",
+        )
+    peak = {"force": normal_force} if normal_path is None else {normal_control: float(np.max(normal_path))}
+    normal = solve_normal(topography, material, counter_body=counter_body, tolerance=tolerance, **peak)
+    normal_force = normal.force if normal_path is not None else normal_force
     _check_inside(normal.pressure, label or "the surface")
-    turns = [int(k) for k in reversals(path[:, 0])]
+    normal_turns = [] if normal_path is None else reversals(normal_path)
+    turns = sorted({int(k) for k in reversals(path[:, 0])} | {int(k) for k in normal_turns})
     last_turns = sorted(set(turns[max(len(turns) - maps + 1, 0) :]) | {len(path) - 1})
     if stroke is not None:  # the last cycle, where the points A, B, C are looked for
         kept = list(range(len(path) - 2 * steps_per_stroke, len(path)))
     else:
         kept = last_turns
-    result = solve_tangential(
-        normal,
-        material,
+    solver = dict(
         counter_body=counter_body,
         friction_coefficient=friction_coefficient,
         coupling=coupling,
-        normal_loading=normal_loading,
         max_stick_change=max_stick_change,
         tolerance=tolerance,
         fields_at=kept,
         **{control: path},
     )
+    if normal_path is None:
+        result = solve_tangential(normal, material, normal_loading=normal_loading, **solver)
+    else:
+        normal_target = {"normal_force" if normal_control == "force" else "approach": normal_path}
+        result = solve_frictional(topography, material, **normal_target, **solver)
     analysis, note = _analysed(result, normal_force, control)
     if stroke is not None and analysis is not None:
         rising = analysis.branch.direction > 0
@@ -707,6 +745,7 @@ def presliding(
         control=control,
         stroke=None if stroke is None else float(stroke),
         result=result,
+        normal=normal,
         analysis=analysis,
         note=note,
         mindlin={

@@ -280,9 +280,13 @@ def plot_displacement_path(
     *,
     last_loop: tuple[int, int] | None = None,
     points: Mapping[str, int] | None = None,
+    normal_force: np.ndarray | None = None,
     ax: Axes | None = None,
 ) -> Figure:
     """Draw the tangential displacement programme against the step (paper 001 Fig. 6).
+
+    A combined programme's normal force (``normal_force``, when it varies) is drawn on a second
+    axis on the right.
 
     Parameters
     ----------
@@ -293,6 +297,8 @@ def plot_displacement_path(
         Steps of the analysed (last) loop of the first path, shaded.
     points : dict of str to int, optional
         Steps of the points A, B, C of the last loop, marked on the first path.
+    normal_force : 1-D array, optional
+        F_n [N] of the first path at each step (step 0 the start).
     ax : matplotlib Axes, optional
         Axes to draw on.
 
@@ -316,6 +322,12 @@ def plot_displacement_path(
         ax.plot(step, first[step] / _LENGTH_SCALE, "o", color=colour, label=f"point {name} (step {step})")
     ax.set_xlabel("step")
     ax.set_ylabel(f"tangential displacement δ_x ({_LENGTH_UNIT})")
+    if normal_force is not None and np.ptp(normal_force) > 1e-9 * np.max(normal_force):
+        right = ax.twinx()
+        right.plot(np.arange(len(normal_force)), 1e3 * np.asarray(normal_force), "--", color="0.35")
+        right.set_ylabel("normal force F_n (mN), dashed", color="0.35")
+        right.set_ylim(bottom=0)
+        entries += 1
     if len(paths) > 1 or last_loop is not None or points:
         legend(
             ax, fontsize="small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2 if entries > 3 else 1

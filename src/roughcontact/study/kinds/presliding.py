@@ -77,7 +77,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Literal
 
 import numpy as np
 from pydantic import Field, model_validator
@@ -86,6 +86,7 @@ from pydantic_core import PydanticCustomError
 from ...models.paper001 import MINDLIN_READINGS as READINGS
 from ...models.paper001 import POINT_NAMES as POINTS
 from ...models.paper001 import PreslidingResult
+from ...units import format_si
 from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Force, ForceUnit, Length, LengthUnit, MaterialName, Strict, TopographyName
 from .common import evenly_chosen, grouped
@@ -107,7 +108,7 @@ class PreslidingParameters(CaseParameters):
     material, counter_body : str
         The ball's material and the flat's (None: a rigid flat).
     normal_force : float
-        F0 [N] (paper Table 1: 25, 50, 75 mN).
+        F0 [N] (paper Table 1: 25, 50, 75 mN); not with a ``path`` that has a normal column.
     friction_coefficient : float
         mu_f of the local Coulomb law (Table 1), > 0.
     radius : float
@@ -119,12 +120,20 @@ class PreslidingParameters(CaseParameters):
     path : Path
         Your programme instead of paper 001's: a CSV relative to the study file, one row per step,
         ``x [um]`` (and ``y [um]``) for displacement control or ``Q_x [mN]`` (and ``Q_y [mN]``)
-        for force control.
+        for force control; with a normal column (``F_n [mN]`` or ``z [um]``) a combined
+        programme from the unloaded state (:func:`roughcontact.contact.frictional.solve_frictional`).
     maps : int
         With ``path``: steps whose shear maps are stored, the last ``maps - 1`` reversals and the
         last step.
     coupling : bool
         Normal-tangential coupling of dissimilar materials (default True, as the paper).
+    normal_loading : {"auto", "frictional", "frictionless"}
+        How F0 is applied before the programme: with friction (locked-in shear, Spence 1975), or
+        frictionless (Goodman's start); "auto" (default) is "frictional" for dissimilar materials.
+    max_stick_change : float
+        Step control: steps are inserted where the stick fraction would fall by more than this in
+        one step (default 0.1: at least 10 steps from each reversal to full slip); 0 turns it off
+        (the programme's points only).
     tolerance : float
         Relative tolerance of the normal and tangential solvers.
     """
@@ -133,7 +142,7 @@ class PreslidingParameters(CaseParameters):
     window: Annotated[int, Field(ge=3)] | None = None
     material: MaterialName
     counter_body: MaterialName | None = None
-    normal_force: Annotated[Force, _Positive]
+    normal_force: Annotated[Force, _Positive] | None = None
     friction_coefficient: Annotated[float, _Positive]
     radius: Annotated[Length, _Positive] = 5e-3
     stroke: Annotated[Length, _Positive] | None = None
@@ -142,6 +151,8 @@ class PreslidingParameters(CaseParameters):
     path: Path | None = None
     maps: Annotated[int, Field(ge=1, le=12)] = 4
     coupling: bool = True
+    normal_loading: Literal["auto", "frictional", "frictionless"] = "auto"
+    max_stick_change: Annotated[float, Field(ge=0.0, lt=1.0)] = 0.1
     tolerance: float = Field(default=1e-8, gt=0.0, lt=1.0)
 
     @model_validator(mode="after")
@@ -184,11 +195,25 @@ class PreslidingCompare(Strict):
 
 
 def check(parameters: PreslidingParameters) -> None:
-    """Read a programme file at validation time (its errors name the file, row or column)."""
-    if parameters.path is not None:
-        from ...contact.paths import read_path_csv
+    """Read a programme file at validation time (its errors name the file, row or column).
 
-        read_path_csv(parameters.path)
+    The normal force comes from ``normal_force`` or from the path's normal column, exactly one.
+    """
+    from ...errors import InputError
+
+    combined = False
+    if parameters.path is not None:
+        from ...contact.paths import read_programme_csv
+
+        combined = read_programme_csv(parameters.path).normal is not None
+    if combined and parameters.normal_force is not None:
+        raise InputError(
+            "normal_force",
+            f"{parameters.path} has a normal column, which sets the normal force of every step.",
+            "remove normal_force, or the path's normal column.",
+        )
+    if not combined and parameters.normal_force is None:
+        raise InputError("normal_force", "missing.", "e.g. normal_force = '25 mN' (paper 001 Table 1).")
 
 
 def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
@@ -199,10 +224,12 @@ def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
     if parameters.window is not None:
         surface = central_window(surface, parameters.window)
     if parameters.path is not None:
-        from ...contact.paths import read_path_csv
+        from ...contact.paths import read_programme_csv
 
-        path, control = read_path_csv(parameters.path)
+        path, control, normal_path, normal_control = read_programme_csv(parameters.path)
         programme = {"path": path, "control": control, "maps": parameters.maps}
+        if normal_path is not None:
+            programme |= {"normal_path": normal_path, "normal_control": normal_control}
     else:
         programme = {
             "stroke": parameters.stroke,
@@ -218,8 +245,10 @@ def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
         friction_coefficient=parameters.friction_coefficient,
         radius=parameters.radius,
         coupling=parameters.coupling,
+        normal_loading=parameters.normal_loading,
+        max_stick_change=parameters.max_stick_change or None,
         tolerance=parameters.tolerance,
-        label=f"{ball} at {parameters.normal_force * 1e3:g} mN",
+        label=ball if parameters.normal_force is None else f"{ball} at {parameters.normal_force * 1e3:g} mN",
         **programme,
     )
     return CaseOutput(result.scalars(), result.to_xarray())
@@ -317,8 +346,12 @@ def _stick_slip(records, context):
                 shown = f"{label} (Δδ {abs(delta - float(reversal)) * 1e6:.2g} µm)"
             else:
                 shown = f"{label} (δx {delta * 1e6:.3g} µm)"
+            loads = data["normal_force"].values if "normal_force" in data else None
+            step_name = name
+            if loads is not None and np.ptp(loads[1:]) > 1e-9 * loads.max():  # a combined programme
+                step_name = f"{_ball_name(record)} {format_si(loads[int(data['map_step'][index])], 'N')}"
             values = data["normalised_shear"].isel(map=index)
-            panels.append((f"{name}, {shown}", values, data["x"], data["y"]))
+            panels.append((f"{step_name}, {shown}", values, data["x"], data["y"]))
     columns = max(len(panels) // len(chosen), 1)
     return shear_maps(panels, columns=columns)
 
@@ -364,10 +397,14 @@ def shear_maps(panels, columns: int):
     return plot_stick_slip_maps(maps, extents, zoom=_zoom(masks), columns=columns)
 
 
+def _ball_name(record) -> str:
+    """Return the ball's name: its sample, or its topography."""
+    return record.parameters.get("sample") or record.parameters["topography"]
+
+
 def _case_name(record) -> str:
     """Return the ball and its load, as the paper names its cases (``POM-like ball 25 mN``)."""
-    name = record.parameters.get("sample") or record.parameters["topography"]
-    return f"{name} {_number(record, 'normal_force') * 1e3:g} mN"
+    return f"{_ball_name(record)} {_number(record, 'normal_force') * 1e3:g} mN"
 
 
 @caption(
@@ -398,7 +435,8 @@ def _pressure(records, context):
 
 @caption(
     "The tangential displacement programme δ_x applied step by step (paper 001 Fig. 6); the last "
-    "loop, which is analysed, is shaded and its points A, B, C marked."
+    "loop, which is analysed, is shaded and its points A, B, C marked. A combined programme's normal "
+    "force is dashed on the right axis."
 )
 def _path(records, context):
     """Draw the tangential displacement programme, step by step, with the last loop (Fig. 6).
@@ -431,8 +469,12 @@ def _path(records, context):
         )
         if str(name) in POINTS
     }
+    normal = first["normal_force"].values if "normal_force" in first else None
     return plot_displacement_path(
-        paths, last_loop=None if start is None else (int(start), int(stop)), points=points
+        paths,
+        last_loop=None if start is None else (int(start), int(stop)),
+        points=points,
+        normal_force=normal,
     )
 
 
