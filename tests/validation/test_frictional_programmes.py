@@ -65,7 +65,10 @@ def test_oblique_loading_steeper_than_mu_follows_cattaneo_at_every_step(n):
     result, load, tangential, radii, _, g_star = _oblique(n, 1.5, 8)
     stick = np.sqrt(result.stick_area[5:] / result.contact_area[5:])
     expected = np.cbrt(1 - tangential / (MU * load))
-    delta = [mindlin.tangential_displacement(q, MU, p, a, g_star) for q, p, a in zip(tangential, load, radii)]
+    delta = [
+        mindlin.tangential_displacement(q, MU, p, a, g_star)
+        for q, p, a in zip(tangential, load, radii, strict=True)
+    ]
     # measured: 64^2 c/a within 0.007, delta within 3e-4; 128^2 within 0.005 and 1e-4
     assert np.abs(stick - expected).max() < {64: 0.015, 128: 0.01}[n]
     np.testing.assert_allclose(result.displacement[5:, 0], delta, rtol={64: 1e-3, 128: 5e-4}[n])
