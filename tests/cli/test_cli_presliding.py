@@ -222,7 +222,8 @@ def test_a_path_with_a_normal_column_runs_a_combined_programme(capsys, tmp_path,
     np.testing.assert_allclose(
         stored["normal_force"].values[1:][at_rows], 1e-3 * np.array(rows)[:, 1], rtol=1e-8
     )
-    # while F_n falls at a held displacement the contact slides back to (nearly) mu F_n; reloading holds it (to the coupling of beta = -0.004)
+    # F_n falls at a held displacement: the contact slides back to (nearly) mu F_n; reloading holds it
+    # (to the coupling of beta = -0.004)
     force = stored["force_x"].values[1:][at_rows]
     mu = float(row["friction_coefficient"])
     assert force[-2] == pytest.approx(mu * 6e-3, rel=1e-3) and force[-1] == pytest.approx(force[-2], rel=1e-3)
