@@ -41,7 +41,7 @@ from ..errors import InputError
 from ..materials import Material
 from ..topography import Topography
 from . import _programme
-from .normal import _boundary
+from .normal import resolve_boundary
 from .tangential_result import TangentialPathResult
 
 NORMAL_CONTROLS = ("force", "approach")
@@ -153,7 +153,7 @@ def solve_frictional(
         raise InputError("topography", "a 2D Topography is needed.", "load or generate a 2D map.")
     if not isinstance(material, Material):
         raise InputError("material", "a Material is needed (shear moduli and Poisson's ratios).", None)
-    boundary = _boundary(topography, boundary)
+    boundary = resolve_boundary(topography, boundary)
     tangential_control, path = _programme.tangential_programme(displacement, force, boundary)
     normal_control, normal_values = _normal_programme(normal_force, approach, len(path))
     _programme.check_max_stick_change(max_stick_change)

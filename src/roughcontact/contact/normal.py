@@ -33,7 +33,8 @@ from .result import NormalContactResult
 _LINE_WIDTH = 1.0
 
 
-def _boundary(topography: Topography, boundary: str | None) -> str:
+def resolve_boundary(topography: Topography, boundary: str | None) -> str:
+    """Return the boundary to solve: ``boundary``, or "periodic" for a periodic topography, else "free"."""
     boundary = boundary or ("periodic" if topography.periodic else "free")
     if topography.dim == 1 and boundary == "free":
         raise InputError(
@@ -70,7 +71,7 @@ def compliance_for(
     workers : int, optional
         Threads for scipy.fft.
     """
-    boundary = _boundary(topography, boundary)
+    boundary = resolve_boundary(topography, boundary)
     if material is None and layer is None:
         raise InputError(
             "material", "no material given.", "pass a Material, the contact modulus E* in Pa, or layer=."

@@ -307,6 +307,9 @@ def _loops(records, context):
             data = record.dataset()
             force, mu = _number(record, "normal_force"), _number(record, "friction_coefficient")
             label = f"{force * 1e3:g} mN, μ {mu:g}"
+            loads = data["normal_force"].values[1:] if "normal_force" in data else None
+            if loads is not None and np.ptp(loads) > 1e-9 * loads.max():  # a combined programme
+                label = f"F_n {format_si(loads.min(), 'N')} to {format_si(loads.max(), 'N')}, μ {mu:g}"
             if data.attrs.get("control") == "force":
                 label += ", force control"
             curves.append((np.asarray(data["delta_x"]), np.asarray(data["force_x"]), label))
