@@ -221,3 +221,52 @@ def test_bad_programmes_are_refused_with_the_field_named(rough_ball, arguments, 
         solve_frictional(rough_ball, get_material("POM"), friction_coefficient=MU, **arguments)
     assert error.value.field == field
     assert words in str(error.value)
+
+
+# --- Spence's frictional normal loading -----------------------------------------------------------
+
+
+def _spence(mu, steps, n=64):
+    """A rigid sphere pressed into a nu = 0 half-space (beta = 0.5) with friction, delta held at 0."""
+    material = Material(1e9, 0.0, "nu 0")
+    size, radius = 1e-4, 1e-3
+    ball = generate.sphere((n, n), (size, size), radius=radius, kind="paraboloid")
+    a = 0.35 * size
+    force = 4 * material.youngs_modulus * a**3 / (3 * radius)
+    loads = force * (np.arange(1, steps + 1) / steps) ** 3  # equal steps of the Hertz radius
+    result = solve_frictional(
+        ball,
+        material,
+        friction_coefficient=mu,
+        normal_force=loads,
+        displacement=np.zeros(steps),
+        fields_at="last",
+    )
+    assert result.parameters["dundurs_beta"] == pytest.approx(0.5)
+    return result, np.sqrt(result.stick_area / result.contact_area)
+
+
+@pytest.mark.parametrize(("mu", "expected"), [(0.2986, 0.50), (0.5, 0.81)])
+def test_frictional_indentation_is_self_similar_with_spences_stick_radius(mu, expected):
+    result, ratio = _spence(mu, 32)
+    # self-similar: the stick radius is a fixed fraction of the contact radius while the load grows
+    assert np.ptp(ratio[-12:]) < 0.04
+    assert ratio[-4:].mean() == pytest.approx(expected, abs=0.02)
+    state = result.states[result.steps - 1]
+    slip = state.contact & ~state.stick
+    x, y = result.topography.coordinates()
+    rx, ry = np.meshgrid(x - x.mean(), y - y.mean(), indexing="ij")
+    radial = (state.shear_x * rx + state.shear_y * ry) / np.hypot(rx, ry)
+    # slip annulus: q = mu p, radial and outward on the softer body (its surface is drawn inwards)
+    np.testing.assert_allclose(
+        np.hypot(state.shear_x, state.shear_y)[slip], mu * state.pressure[slip], rtol=1e-9
+    )
+    assert np.all(radial[slip] > 0.95 * mu * state.pressure[slip])
+    assert abs(result.force[-1, 0]) < 1e-6 * mu * result.normal_load[-1]  # no net shear (symmetry)
+
+
+def test_spence_stick_radius_converges_with_the_load_steps():
+    """The slip annulus is 0.2 a wide at mu = 0.5: load steps must grow a by much less than that."""
+    coarse = _spence(0.5, 8)[1][-1]
+    fine = _spence(0.5, 32)[1][-1]
+    assert abs(fine - 0.81) < 0.5 * abs(coarse - 0.81)  # measured 0.763 -> 0.805
