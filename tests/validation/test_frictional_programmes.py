@@ -246,6 +246,10 @@ def _spence(mu, steps, n=64):
     return result, np.sqrt(result.stick_area / result.contact_area)
 
 
+# c/a of the coupled problem at beta = 0.5: mu = 0.2986 gives 0.5 (Spence 1975, as quoted by Kalker 1990
+# sec. 5.3.1 and Vollebregt's CONTACT user guide, "Spence compression"); mu = 0.5 gives 0.800-0.815 in an
+# independent axisymmetric ring BEM of the coupled problem (200 rings; it reproduces 0.497-0.499 at
+# mu = 0.2986 and the centre pressure 1.31 p0_Hertz). docs/frictional_programmes.md has the table.
 @pytest.mark.parametrize(("mu", "expected"), [(0.2986, 0.50), (0.5, 0.81)])
 def test_frictional_indentation_is_self_similar_with_spences_stick_radius(mu, expected):
     result, ratio = _spence(mu, 32)
@@ -263,6 +267,10 @@ def test_frictional_indentation_is_self_similar_with_spences_stick_radius(mu, ex
     )
     assert np.all(radial[slip] > 0.95 * mu * state.pressure[slip])
     assert abs(result.force[-1, 0]) < 1e-6 * mu * result.normal_load[-1]  # no net shear (symmetry)
+    # the shear raises the centre pressure above Hertz's at the same load (Spence 1975: 1.31 p0)
+    hertz_radius = (3 * result.normal_load[-1] * 1e-3 / (4 * 1e9)) ** (1 / 3)
+    hertz_peak = 3 * result.normal_load[-1] / (2 * np.pi * hertz_radius**2)
+    assert state.pressure.max() / hertz_peak == pytest.approx(1.31, abs=0.03)  # measured 1.30 (64^2)
 
 
 def test_spence_stick_radius_converges_with_the_load_steps():
