@@ -278,3 +278,29 @@ def test_spence_stick_radius_converges_with_the_load_steps():
     coarse = _spence(0.5, 8)[1][-1]
     fine = _spence(0.5, 32)[1][-1]
     assert abs(fine - 0.81) < 0.5 * abs(coarse - 0.81)  # measured 0.763 -> 0.805
+
+
+# --- step control -----------------------------------------------------------------------------------
+
+
+def test_step_control_puts_ten_steps_between_a_reversal_and_full_slip():
+    """Three programme rows per stroke on a smooth sphere: the step control fills the pre-sliding parts."""
+    ball, material, modulus, g_star = _spheres(48)
+    a = mindlin.hertz_contact_radius(FORCE, RADIUS, modulus)
+    full_slip = mindlin.sliding_displacement(MU, FORCE, a, g_star)  # delta at which Cattaneo slides
+    rows = 2.5 * full_slip * np.array([0.5, 1.0, 0.5, 0.0, -0.5, -1.0])
+    normal = solve_normal(ball, material, counter_body=material, force=FORCE)
+    result = solve_tangential(
+        normal, material, counter_body=material, friction_coefficient=MU, displacement=rows, max_stick_change=0.1
+    )
+    fraction = result.stick_area / result.contact_area
+    assert np.all(np.diff(fraction)[np.diff(result.programme_index) == 0] > -0.1 - 1e-12)  # never 10 % at once
+    reversal = result.step_of(1)
+    sliding = reversal + int(np.argmax(fraction[reversal + 1 :] < 0.02)) + 1
+    assert sliding - reversal >= 10
+    for row, target in enumerate(rows):  # every programme row is solved exactly
+        assert result.displacement[result.step_of(row), 0] == pytest.approx(target, rel=1e-12)
+    plain = solve_tangential(normal, material, counter_body=material, friction_coefficient=MU, displacement=rows)
+    assert plain.steps == len(rows) and result.steps > len(rows) + 15
+    # the rows' forces agree with the unrefined run's where both slide fully
+    np.testing.assert_allclose(result.force[result.step_of(1)], plain.force[1], rtol=1e-6)

@@ -19,8 +19,9 @@ The driver (:func:`run`) walks the user's programme points and, with ``max_stick
 steps where the stick fraction (stick area / contact area) would fall by more than that amount in
 one step: the step is retried over a shorter part of the segment towards the same programme point
 (adaptive step control, the user's points are always solved exactly). A rising stick fraction is
-not refined: at a reversal every point sticks again at once, whatever the step. After a reversal
-the stick fraction falls from 1 to 0 at full slip, so ``max_stick_change = 0.1`` puts at least 10
+not refined (points stick again at once, whatever the step), but a step that reverses the
+direction of the normal or tangential move starts from a stick fraction of 1: right after a
+reversal every point sticks. After a reversal the stick fraction falls from 1 to 0 at full slip, so ``max_stick_change = 0.1`` puts at least 10
 steps between a reversal and full slip; for Cattaneo-Mindlin the stick area falls linearly with
 the displacement, so the inserted steps come out nearly evenly spaced.
 
@@ -330,6 +331,7 @@ def run(
     start: tuple[float, np.ndarray],
     keep: set[int],
     max_stick_change: float | None = None,
+    stick_fraction: float = np.nan,
     what: str = "tangential steps",
 ) -> tuple[Record, State]:
     """Solve a programme of user points from ``state``; return its record and the final state.
@@ -350,6 +352,8 @@ def run(
         the point before it is kept too (or it is the first).
     max_stick_change : float, optional
         Step control (module docstring); None solves the programme points only.
+    stick_fraction : float
+        Stick fraction of ``state`` (1 after a frictionless normal loading; NaN when unloaded).
     what : str
         Names the steps in the progress bar.
     """
@@ -358,7 +362,7 @@ def run(
     pixel_area = stepper.operator.pixel_area
     record = Record.empty()
     previous = (float(start[0]), np.asarray(start[1], dtype=float))
-    stick_fraction = np.nan
+    reached, last_move = previous, None  # the targets of the last step, and that step's move
     for index in tracked(range(len(normal_values)), what=what):
         target = (float(normal_values[index]), np.asarray(tangential_values[index], dtype=float))
         done, length = 0.0, 1.0
@@ -391,16 +395,27 @@ def run(
             stick = step.increment.stick & contact
             fraction_now = _stick_fraction(step.state, stick.sum() * pixel_area, pixel_area)
             # Only a shrinking stick zone is resolved: re-sticking (a reversal) happens at once.
-            change = max(stick_fraction - fraction_now, 0.0) if np.isfinite(stick_fraction) else 0.0
+            move = (point[0] - reached[0], point[1] - reached[1])
+            # at a reversal every point sticks again first: the fraction falls from 1 within the step
+            before = 1.0 if _reverses(move, last_move) else stick_fraction
+            change = max(before - fraction_now, 0.0) if np.isfinite(before) else 0.0
             if max_stick_change is not None and change > max_stick_change and length > SHORTEST_STEP:
                 length = max(length * min(0.5, 0.8 * max_stick_change / change), SHORTEST_STEP)
                 continue
             _append(record, step, contact, stick, stepper, index, keep, at_point)
             state, stick_fraction, done = step.state, fraction_now, fraction
+            reached, last_move = point, move
             if max_stick_change is not None:
                 length *= min(2.0, 0.8 * max_stick_change / max(change, 1e-3))
         previous = target
     return record, state
+
+
+def _reverses(move, last_move) -> bool:
+    """Return True when ``move`` (normal, tangential increments) turns back against ``last_move``."""
+    if last_move is None:
+        return False
+    return bool(move[0] * last_move[0] < 0 or np.dot(move[1], last_move[1]) < 0)
 
 
 def _append(record: Record, step: Step, contact, stick, stepper, index, keep, at_point):

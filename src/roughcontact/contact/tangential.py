@@ -236,8 +236,10 @@ def solve_tangential(
             record,
             {**parameters, "control": control, "stage": "frictional normal loading"},
         )
+        stick_fraction = loading.stick_area[-1] / loading.contact_area[-1]
     else:
         state = _programme.frictionless_start(stepper, normal.pressure, normal.approach, normal.force)
+        stick_fraction = 1.0  # nothing has slipped yet
     record, _ = _programme.run(
         stepper,
         state,
@@ -246,6 +248,7 @@ def solve_tangential(
         start=(normal.force, np.zeros(2)),
         keep=_programme.steps_to_keep(fields_at, len(path)),
         max_stick_change=max_stick_change,
+        stick_fraction=stick_fraction,
     )
     parameters.update(control=control, normal_loading=loading_mode, max_stick_change=max_stick_change)
     return _programme.result(normal, topography, record, parameters, loading=loading)
