@@ -178,18 +178,26 @@ def test_a_force_path_file_runs_under_force_control(capsys, tmp_path, ball_file,
 def test_a_loop_too_coarse_for_the_eq9_fit_keeps_its_results_and_says_why(
     capsys, tmp_path, ball_file, scalars
 ):
-    """Two steps per stroke slide at once: no pre-sliding samples to fit, yet the run and its loop stand."""
+    """Two steps per stroke slide at once: no pre-sliding samples to fit, yet the run and its loop stand.
+
+    The step control (on by default) fills the pre-sliding parts, and the same programme is analysed.
+    """
     path = tmp_path / "coarse.csv"
     path.write_text("x [um]\n0.4\n0\n-0.4\n0\n0.4\n0\n-0.4\n0\n0.4\n")
     out = tmp_path / "out"
-    status, stdout, err = run(
-        capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path, "-o", out, "--json"
-    )
+    common = ("presliding", ball_file, *BALL_OPTIONS, "--path", path, "--json")
+    status, stdout, err = run(capsys, *common, "--max-stick-change", "none", "-o", out)
     assert status == 0, err
     row = scalars(stdout)
     assert row["analysis_note"].startswith("last loop not analysed") and row["K_L_A"] is None
+    assert row["inserted_steps"] == 0
     energies = _steps(out)["loop_energy"].values
     assert row["loops"] == energies.size == 2 and energies.min() > 0
+    status, stdout, err = run(capsys, *common, "-o", tmp_path / "refined")
+    assert status == 0, err
+    row = scalars(stdout)
+    assert row["analysis_note"] == "" and row["K_L_A"] > row["K_L_B"] > row["K_L_C"] > 0
+    assert row["inserted_steps"] >= 4 * 10  # ten or more after each of the four reversals
 
 
 def test_path_and_stroke_together_are_refused(capsys, tmp_path, ball_file):

@@ -291,16 +291,25 @@ def test_step_control_puts_ten_steps_between_a_reversal_and_full_slip():
     rows = 2.5 * full_slip * np.array([0.5, 1.0, 0.5, 0.0, -0.5, -1.0])
     normal = solve_normal(ball, material, counter_body=material, force=FORCE)
     result = solve_tangential(
-        normal, material, counter_body=material, friction_coefficient=MU, displacement=rows, max_stick_change=0.1
+        normal,
+        material,
+        counter_body=material,
+        friction_coefficient=MU,
+        displacement=rows,
+        max_stick_change=0.1,
     )
     fraction = result.stick_area / result.contact_area
-    assert np.all(np.diff(fraction)[np.diff(result.programme_index) == 0] > -0.1 - 1e-12)  # never 10 % at once
+    assert np.all(
+        np.diff(fraction)[np.diff(result.programme_index) == 0] > -0.1 - 1e-12
+    )  # never 10 % at once
     reversal = result.step_of(1)
     sliding = reversal + int(np.argmax(fraction[reversal + 1 :] < 0.02)) + 1
     assert sliding - reversal >= 10
     for row, target in enumerate(rows):  # every programme row is solved exactly
         assert result.displacement[result.step_of(row), 0] == pytest.approx(target, rel=1e-12)
-    plain = solve_tangential(normal, material, counter_body=material, friction_coefficient=MU, displacement=rows)
+    plain = solve_tangential(
+        normal, material, counter_body=material, friction_coefficient=MU, displacement=rows
+    )
     assert plain.steps == len(rows) and result.steps > len(rows) + 15
     # the rows' forces agree with the unrefined run's where both slide fully
     np.testing.assert_allclose(result.force[result.step_of(1)], plain.force[1], rtol=1e-6)
