@@ -21,9 +21,10 @@ one step: the step is retried over a shorter part of the segment towards the sam
 (adaptive step control, the user's points are always solved exactly). A rising stick fraction is
 not refined (points stick again at once, whatever the step), but a step that reverses the
 direction of the normal or tangential move starts from a stick fraction of 1: right after a
-reversal every point sticks. After a reversal the stick fraction falls from 1 to 0 at full slip, so ``max_stick_change = 0.1`` puts at least 10
-steps between a reversal and full slip; for Cattaneo-Mindlin the stick area falls linearly with
-the displacement, so the inserted steps come out nearly evenly spaced.
+reversal every point sticks. After a reversal the stick fraction falls from 1 to 0 at full slip,
+so ``max_stick_change = 0.1`` puts at least 10 steps between a reversal and full slip; for
+Cattaneo-Mindlin the stick area falls linearly with the displacement, so the inserted steps come
+out nearly evenly spaced.
 
 References
 ----------
