@@ -281,6 +281,7 @@ def plot_displacement_path(
     last_loop: tuple[int, int] | None = None,
     points: Mapping[str, int] | None = None,
     normal_force: np.ndarray | None = None,
+    positions: Mapping[str, np.ndarray] | None = None,
     ax: Axes | None = None,
 ) -> Figure:
     """Draw the tangential displacement programme against the step (paper 001 Fig. 6).
@@ -299,6 +300,10 @@ def plot_displacement_path(
         Steps of the points A, B, C of the last loop, marked on the first path.
     normal_force : 1-D array, optional
         F_n [N] of the first path at each step (step 0 the start).
+    positions : dict of str to 1-D array, optional
+        Where each path's steps lie on the axis of the programme's rows (steps inserted by the step
+        control between two rows at fractional positions), so programmes of the same rows line up
+        whatever steps were inserted; default: the step index.
     ax : matplotlib Axes, optional
         Axes to draw on.
 
@@ -308,23 +313,30 @@ def plot_displacement_path(
     """
     entries = len(paths) + (last_loop is not None) + len(points or {})
     fig, ax = axes_for(ax, figsize=(6.5, 3.6 + 0.25 * -(-entries // 2)))  # legend rows below
+    where = {label: np.arange(len(delta)) for label, delta in paths.items()} | dict(positions or {})
     for label, delta in paths.items():
         delta = np.asarray(delta, dtype=float)
-        ax.plot(np.arange(delta.size), delta / _LENGTH_SCALE, "-", linewidth=1.5, label=label)
+        ax.plot(where[label], delta / _LENGTH_SCALE, "-", linewidth=1.5, label=label)
+    first_label = next(iter(paths))
+    at = np.asarray(where[first_label], dtype=float)
     if last_loop is not None:
-        whose = "" if len(paths) == 1 else f" of {next(iter(paths))}"
+        whose = "" if len(paths) == 1 else f" of {first_label}"
         ax.axvspan(
-            last_loop[0], last_loop[1] - 1, color="0.9", zorder=0, label=f"last loop{whose} (analysed)"
+            at[last_loop[0]],
+            at[last_loop[1] - 1],
+            color="0.9",
+            zorder=0,
+            label=f"last loop{whose} (analysed)",
         )
-    first = np.asarray(next(iter(paths.values())), dtype=float)
+    first = np.asarray(paths[first_label], dtype=float)
     for name, step in (points or {}).items():
         colour = POINT_COLOURS.get(name, "black")
-        ax.plot(step, first[step] / _LENGTH_SCALE, "o", color=colour, label=f"point {name} (step {step})")
-    ax.set_xlabel("step")
+        ax.plot(at[step], first[step] / _LENGTH_SCALE, "o", color=colour, label=f"point {name} (step {step})")
+    ax.set_xlabel("programme row (inserted steps in between)" if positions else "step")
     ax.set_ylabel(f"tangential displacement δ_x ({_LENGTH_UNIT})")
     if normal_force is not None and np.ptp(normal_force) > 1e-9 * np.max(normal_force):
         right = ax.twinx()
-        right.plot(np.arange(len(normal_force)), 1e3 * np.asarray(normal_force), "--", color="0.35")
+        right.plot(at, 1e3 * np.asarray(normal_force), "--", color="0.35")
         right.set_ylabel("normal force F_n (mN), dashed", color="0.35")
         right.set_ylim(bottom=0)
         entries += 1

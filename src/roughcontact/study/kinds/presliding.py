@@ -458,12 +458,15 @@ def _path(records, context):
         if not any(d.shape == delta.shape and np.allclose(d, delta, rtol=1e-9, atol=0) for _, d in distinct):
             distinct.append((record, delta))
     if len(distinct) == 1:
-        paths = {"programme": distinct[0][1]}
+        names = ["programme"]
     else:  # named by ball and load, or by the swept values where those do not tell them apart
         names = [_case_name(record) for record, _ in distinct]
         if len(set(names)) < len(names):
             names = [record.label for record, _ in distinct]
-        paths = dict(zip(names, (delta for _, delta in distinct), strict=True))
+    paths = dict(zip(names, (delta for _, delta in distinct), strict=True))
+    positions = {
+        name: _row_positions(record.dataset()) for name, (record, _) in zip(names, distinct, strict=True)
+    }
     start, stop = first.attrs.get("last_loop_start"), first.attrs.get("last_loop_stop")
     points = {
         str(name): int(step)
@@ -473,12 +476,46 @@ def _path(records, context):
         if str(name) in POINTS
     }
     normal = first["normal_force"].values if "normal_force" in first else None
+    refined = any(_number(record, "inserted_steps") > 0 for record, _ in distinct)
     return plot_displacement_path(
         paths,
         last_loop=None if start is None else (int(start), int(stop)),
         points=points,
         normal_force=normal,
+        positions=positions if refined else None,
     )
+
+
+def _row_positions(data) -> np.ndarray:
+    """Return each stored step's place on the axis of the programme's rows (0 is the start).
+
+    A row's own step sits at the row's number; steps the step control inserted before it sit in
+    between, in proportion to how far the tangential displacement (or, where it holds, the normal
+    force) has gone from the previous row.
+    """
+    if "programme_point" not in data:
+        return np.arange(data["delta_x"].size, dtype=float)
+    row = np.asarray(data["programme_point"], dtype=int)
+    moves = [np.asarray(data["delta_x"], dtype=float)]
+    if "normal_force" in data:
+        moves.append(np.asarray(data["normal_force"], dtype=float))
+    end = {0: 0}  # row -> the index of its own step (the last step with its number)
+    for index, number in enumerate(row):
+        end[int(number)] = index
+    out = row.astype(float)
+    for index in range(1, row.size):
+        number = int(row[index])
+        if index == end[number]:
+            continue
+        before, after = end.get(number - 1, 0), end[number]
+        for series in moves:
+            span = series[after] - series[before]
+            if abs(span) > 1e-12 * max(np.max(np.abs(series)), 1e-300):
+                out[index] = number - 1 + (series[index] - series[before]) / span
+                break
+        else:
+            out[index] = number - 1 + (index - before) / (after - before)
+    return out
 
 
 def _mindlin_curves(group, loads: np.ndarray) -> dict[str, dict[str, np.ndarray]] | None:
