@@ -384,6 +384,10 @@ def run(
                     (normal_control, float(point[0])),
                     {tangential_control: tuple(map(float, point[1]))},
                 )
+            except InputError as error:  # e.g. a tangential force at or above mu F_n: name the row
+                if error.field != "force":
+                    raise
+                raise InputError("force", f"programme step {index}: {error.problem}", error.fix) from None
             except ContactLost:
                 raise InputError(
                     normal_control,
