@@ -245,3 +245,20 @@ def test_a_normal_column_and_a_normal_force_are_refused_together(capsys, tmp_pat
     status, _, err = run(capsys, "presliding", ball_file, *BALL_OPTIONS, "--path", path)
     assert status == EXIT_INPUT_ERROR
     assert "normal column" in err and "normal_force" in err.replace("--normal-force", "normal_force")
+
+
+def test_the_frictional_loading_is_chosen_and_sized_from_the_command_line(
+    capsys, tmp_path, ball_file, scalars
+):
+    """POM on silicon is coupled (beta = -0.004): F0 is applied with friction unless asked otherwise."""
+    common = ("presliding", ball_file, *BALL_OPTIONS, "--stroke", "0.2 um", "--cycles", "1", "--json")
+    status, stdout, err = run(capsys, *common, "--loading-steps", "4", "-o", tmp_path / "a")
+    assert status == 0, err
+    row = scalars(stdout)
+    assert row["normal_loading"] == "frictional" and row["loading_steps"] == 4
+    assert 0.9 < row["locked_in_stick_fraction"] <= 1 and row["locked_in_shear_rms"] > 0
+    status, stdout, err = run(capsys, *common, "--normal-loading", "frictionless", "-o", tmp_path / "b")
+    assert status == 0, err
+    row = scalars(stdout)
+    assert row["normal_loading"] == "frictionless" and row["loading_steps"] == 0
+    assert row["locked_in_stick_fraction"] is None  # NaN: no frictional loading

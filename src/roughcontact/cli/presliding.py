@@ -111,7 +111,7 @@ def _presliding(args: argparse.Namespace) -> int:
         keys = _ball(command, args)
     keys |= options(args, "radius", "cycles", "steps_per_stroke", "tolerance")
     keys["coupling"] = (False if args.no_coupling else None, "--no-coupling")
-    keys |= options(args, "normal_loading")
+    keys |= options(args, "normal_loading", "loading_steps")
     if args.max_stick_change is not None:
         text = args.max_stick_change.strip().lower()
         keys["max_stick_change"] = (0.0 if text == "none" else _fraction(text), "--max-stick-change")
@@ -214,6 +214,9 @@ def add_commands(commands) -> None:
         choices=("auto", "frictional", "frictionless"),
         help="how F0 is applied before the programme: with friction (locked-in shear; 'auto', the "
         "default, does so for dissimilar materials) or frictionless (Goodman's start)",
+    )
+    presliding.add_argument(
+        "--loading-steps", type=int, help="steps of the frictional normal loading (default 10)"
     )
     presliding.add_argument(
         "--max-stick-change",

@@ -449,6 +449,7 @@ class PreslidingResult:
             "normal_loading": result.parameters.get("normal_loading", "frictionless"),
             **{key: path[key] for key in ("locked_in_stick_fraction", "locked_in_shear_rms")},
             "inserted_steps": int(result.steps - (result.programme_index.max() + 1)),
+            "loading_steps": 0 if result.loading is None else int(result.loading.steps),
             "iterations": self.iterations,
             "residual": self.residual,
             "analysis_note": self.note,
@@ -583,6 +584,7 @@ def presliding(
     radius: float = RADIUS,
     coupling: bool = True,
     normal_loading: str = "auto",
+    loading_steps: int = 10,
     max_stick_change: float | None = 0.1,
     tolerance: float = 1e-8,
     maps: int = 4,
@@ -646,6 +648,9 @@ def presliding(
     normal_loading : {"auto", "frictional", "frictionless"}
         How F0 is applied before the programme (:func:`~roughcontact.contact.tangential.solve_tangential`):
         "auto" is "frictional" for a coupled pair (beta != 0), which locks in shear (Spence 1975).
+    loading_steps : int
+        Steps of the frictional normal loading (default 10: enough for |beta|/mu of paper 001's
+        pairs; beta/mu near 1 needs 30 or more to resolve Spence's stick zone).
     max_stick_change : float, optional
         Step control (default 0.1): steps are inserted where the stick fraction would change by
         more than this in one step, so every pre-sliding branch has at least 10 steps between
@@ -709,7 +714,9 @@ def presliding(
         **{control: path},
     )
     if normal_path is None:
-        result = solve_tangential(normal, material, normal_loading=normal_loading, **solver)
+        result = solve_tangential(
+            normal, material, normal_loading=normal_loading, loading_steps=loading_steps, **solver
+        )
     else:
         normal_target = {"normal_force" if normal_control == "force" else "approach": normal_path}
         result = solve_frictional(topography, material, **normal_target, **solver)

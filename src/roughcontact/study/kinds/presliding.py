@@ -130,6 +130,9 @@ class PreslidingParameters(CaseParameters):
     normal_loading : {"auto", "frictional", "frictionless"}
         How F0 is applied before the programme: with friction (locked-in shear, Spence 1975), or
         frictionless (Goodman's start); "auto" (default) is "frictional" for dissimilar materials.
+    loading_steps : int
+        Steps of the frictional normal loading (default 10; raise it to 30 or more when beta/mu
+        approaches 1, docs/frictional_programmes.md).
     max_stick_change : float
         Step control: steps are inserted where the stick fraction would fall by more than this in
         one step (default 0.1: at least 10 steps from each reversal to full slip); 0 turns it off
@@ -152,6 +155,7 @@ class PreslidingParameters(CaseParameters):
     maps: Annotated[int, Field(ge=1, le=12)] = 4
     coupling: bool = True
     normal_loading: Literal["auto", "frictional", "frictionless"] = "auto"
+    loading_steps: Annotated[int, Field(ge=2)] = 10
     max_stick_change: Annotated[float, Field(ge=0.0, lt=1.0)] = 0.1
     tolerance: float = Field(default=1e-8, gt=0.0, lt=1.0)
 
@@ -246,6 +250,7 @@ def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
         radius=parameters.radius,
         coupling=parameters.coupling,
         normal_loading=parameters.normal_loading,
+        loading_steps=parameters.loading_steps,
         max_stick_change=parameters.max_stick_change or None,
         tolerance=parameters.tolerance,
         label=ball if parameters.normal_force is None else f"{ball} at {parameters.normal_force * 1e3:g} mN",
