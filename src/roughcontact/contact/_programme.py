@@ -289,9 +289,9 @@ def _stick_fraction(state: State, stick_area: float, pixel_area: float) -> float
 
 @dataclass
 class Record:
-    """Per-step series of a programme, filled by :func:`run` (SI)."""
+    """Per-step series of a programme, filled by :func:`run` (SI; named as the result's fields)."""
 
-    normal_force: list
+    normal_load: list
     approach: list
     displacement: list
     force: list
@@ -300,7 +300,7 @@ class Record:
     slip_area: list
     dissipation: list
     iterations: list
-    passes: list
+    coupling_iterations: list
     residual: list
     programme_index: list
     states: dict
@@ -317,8 +317,7 @@ class Record:
         out["displacement"] = out["displacement"].reshape(-1, 2)
         out["force"] = out["force"].reshape(-1, 2)
         out["iterations"] = out["iterations"].astype(int)
-        out["coupling_iterations"] = out.pop("passes").astype(int)
-        out["normal_load"] = out.pop("normal_force")
+        out["coupling_iterations"] = out["coupling_iterations"].astype(int)
         out["states"] = self.states
         return out
 
@@ -430,7 +429,7 @@ def _append(record: Record, step: Step, contact, stick, stepper, index, keep, at
     qx, qy = state.shear
     wx = np.where(contact, increment.wx, 0.0)
     wy = np.where(contact, increment.wy, 0.0)
-    record.normal_force.append(float(state.pressure.sum() * pixel_area))
+    record.normal_load.append(float(state.pressure.sum() * pixel_area))
     record.approach.append(state.approach)
     record.displacement.append(tuple(increment.delta))
     record.force.append((float(qx.sum() * pixel_area), float(qy.sum() * pixel_area)))
@@ -440,7 +439,7 @@ def _append(record: Record, step: Step, contact, stick, stepper, index, keep, at
     # Frictional work of the step: -sum q.w A >= 0 (the slip increment opposes the traction).
     record.dissipation.append(max(-float(np.sum(qx * wx + qy * wy)) * pixel_area, 0.0))
     record.iterations.append(step.iterations)
-    record.passes.append(step.passes)
+    record.coupling_iterations.append(step.passes)
     record.residual.append(increment.residual)
     record.programme_index.append(index)
     kept = index in keep and (at_point or index == 0 or index - 1 in keep)
