@@ -22,6 +22,8 @@ Tolerances and what sets them:
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -197,3 +199,18 @@ def test_a_stiff_substrate_under_a_thin_film_shrinks_the_interference():
     )  # fmt: skip
     assert film.approach[0] < 0.9 * half.approach[0]
     assert film.dissipation[0] > 0
+
+
+def test_range_warnings_name_large_plastic_strain_and_a_deep_plastic_zone(cycle):
+    """A run within the model's range says nothing; a large strain or a zone near the bottom is said."""
+    assert _path(n=32, forces=(2, 0)).range_warnings() == []
+    # the validation cycle itself: at 12 P_c the zone reaches 43.3 of the 46.2 um (4 a_c) volume
+    (deep,) = cycle.range_warnings()
+    assert "plastic zone reaches" in deep and "deeper" in deep
+    strained = dataclasses.replace(
+        cycle, plastic_strain_equivalent=np.full_like(cycle.plastic_strain_equivalent, 0.2)
+    )
+    notes = strained.range_warnings()
+    assert len(notes) == 2
+    assert "0.2" in notes[0] and "small-strain" in notes[0]
+    assert "deeper" in notes[1] and "depth = '" in notes[1]

@@ -267,6 +267,41 @@ class VolumePlasticResult:
         heights = self.topography.heights
         return float(np.min(heights.max() - heights + self.residual_displacement[-1]))
 
+    def range_warnings(self, *, small_strain: float = 0.05, depth_margin: float = 0.75) -> list[str]:
+        """Say where this solution leaves the range of its model (empty when it does not).
+
+        * Equivalent plastic strain above ``small_strain``: the model is small-strain (no change
+          of geometry, no pile-up, a rigid flat), so the plastic zone is qualitative there.
+        * A plastic zone deeper than ``depth_margin`` of the volume: the solver stops only when
+          the bottom layer yields, but the truncated volume already stiffens the cells above it.
+
+        Parameters
+        ----------
+        small_strain : float
+            Largest equivalent plastic strain that counts as small (default 5 %).
+        depth_margin : float
+            Fraction of the volume's depth the plastic zone may reach unremarked (default 0.75).
+        """
+        notes = []
+        strain = float(self.plastic_strain_equivalent.max())
+        if strain > small_strain:
+            notes.append(
+                f"largest equivalent plastic strain {strain:.2g} (over {small_strain:g}): beyond the "
+                "small-strain volume model (no geometry change, no pile-up); read the plastic zone "
+                "qualitatively, or lower the load."
+            )
+        yielded = np.flatnonzero(
+            (self.plastic_strain_equivalent.max(axis=0) > 0).reshape(self.depths.size, -1).any(axis=1)
+        )
+        depth = self.scalars()["depth"]
+        if yielded.size and self.depths[yielded[-1]] > depth_margin * depth:
+            notes.append(
+                f"the plastic zone reaches {format_si(float(self.depths[yielded[-1]]), 'm')} of the "
+                f"{format_si(depth, 'm')} volume: check with a deeper one, e.g. depth = "
+                f"'{format_si(2 * depth, 'm')}' (and twice the layers)."
+            )
+        return notes
+
     def curve(self) -> dict[str, np.ndarray]:
         """Return the path, one entry per step (branch, approach, force, contact area, peak stresses)."""
         return {
@@ -500,7 +535,9 @@ def solve_elastic_plastic(
             raise InputError(
                 "depth",
                 f"the plastic zone reaches the bottom layer of the volume ({format_si(depth, 'm')}) at "
-                f"step {len(record['force']) + 1} ({kind} {format_si(target, unit)}).",
+                f"step {len(record['force']) + 1} ({kind} {format_si(target, unit)}); "
+                f"{len(record['force'])} step(s) had converged"
+                + (f", up to {format_si(max(record['force']), 'N')}." if record["force"] else "."),
                 f"give a deeper volume, e.g. depth = '{format_si(2 * depth, 'm')}' (and twice the layers to "
                 "keep the cells).",
             )

@@ -272,11 +272,13 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
             "long_name": f"von Mises stress at z = {stress_depth:g} m (block maxima)",
         },
     )
+    warnings: tuple[str, ...] = ()
     if parameters.plasticity == "volume":
         dataset["von_mises_section"] = _section(
             compression.path, chosen, peak_index, surface, parameters.map_points
         )
-    return CaseOutput(scalars, dataset)
+        warnings = tuple(compression.path.range_warnings())
+    return CaseOutput(scalars, dataset, warnings)
 
 
 def _section(path, chosen: list[int], peak: int, surface, points: int):
