@@ -313,3 +313,33 @@ def test_step_control_puts_ten_steps_between_a_reversal_and_full_slip():
     assert plain.steps == len(rows) and result.steps > len(rows) + 15
     # the rows' forces agree with the unrefined run's where both slide fully
     np.testing.assert_allclose(result.force[result.step_of(1)], plain.force[1], rtol=1e-6)
+
+
+def test_an_approach_programme_meets_its_approaches(rough_ball):
+    pom, silicon = get_material("POM"), get_material("silicon wafer")
+    approach = np.array([0.2, 0.4, 0.6, 0.4]) * 1e-6
+    result = solve_frictional(
+        rough_ball,
+        pom,
+        counter_body=silicon,
+        friction_coefficient=MU,
+        approach=approach,
+        displacement=np.array([0, 0.05, 0.1, 0.1]) * 1e-6,
+    )
+    np.testing.assert_allclose(result.approach, approach, rtol=1e-12)
+    assert np.all(np.diff(result.normal_load)[:2] > 0) and result.normal_load[3] < result.normal_load[2]
+    assert result.parameters["normal_control"] == "approach"
+
+
+def test_a_periodic_surface_runs_under_tangential_force_control():
+    surface = generate.self_affine((48, 48), 5e-6, hurst=0.8, rms_height=5e-9, seed=1)
+    pom, silicon = get_material("POM"), get_material("silicon wafer")
+    normal, force = np.array([1, 2, 3, 2]) * 1e-4, np.array([0, 1, 2, 1]) * 1e-5
+    result = solve_frictional(
+        surface, pom, counter_body=silicon, friction_coefficient=MU, normal_force=normal, force=force
+    )
+    assert result.parameters["boundary"] == "periodic"
+    np.testing.assert_allclose(result.normal_load, normal, rtol=1e-8)
+    np.testing.assert_allclose(result.force[:, 0], force, rtol=1e-8, atol=1e-12 * normal.max())
+    with pytest.raises(InputError, match="periodic"):
+        solve_frictional(surface, pom, friction_coefficient=MU, normal_force=normal, displacement=force * 0)
