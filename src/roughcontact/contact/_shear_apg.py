@@ -424,7 +424,7 @@ def solve_increment(
             delta = kernels.interior_mean(qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), RIM)
         np.copyto(wx, sx)
         np.copyto(wy, sy)
-        residual = optimality(qx, qy, c_flat, wx, wy, delta, state, flat, offset, tolerance).residual
+        residual = optimality(qx, qy, c_flat, wx, wy, delta, state, flat, (ex, ey)).residual
         if residual <= tolerance:
             stick = (state == kernels.STICK).reshape(shape)
             return ShearResult(qx, qy, wx, wy, delta, stick, iteration, float(residual))

@@ -136,27 +136,21 @@ class Optimality:
     z_norm: float
 
 
-def optimality(qx, qy, c_flat, sx, sy, delta, state, flat, offset, tolerance) -> Optimality:
+def optimality(qx, qy, c_flat, sx, sy, delta, state, flat, offset) -> Optimality:
     """Classify stick and slip, fill ``flat``'s directions and return the scale-free residual.
 
     ``sx, sy`` is C q + e (w = C q + e - delta on return); the residual is that of the module
-    docstring (the same for both increment solvers, so a tolerance means the same). Where it is
-    above ``tolerance``, the scale s_0 gets the floor rms_{A_c} |C q| (C q = w + delta - e from
-    ``offset`` = e): a step that sticks everywhere with delta = 0 (a frictional normal loading)
-    ends with s + e = 0, and the elastic displacement of its tractions is then its scale.
+    docstring (the same for both increment solvers, so a tolerance means the same). The scale s_0
+    has the floor rms_{A_c} |C q| (C q = s + e - e, with ``offset`` = e): a step that sticks
+    everywhere with delta = 0 (a frictional normal loading) ends with s + e = 0, and the elastic
+    displacement of its tractions is then its scale.
     """
-    changed, violation, weight, ss, n_contact, n_stick, zsx, zsy, z_norm = kernels.classify(
-        qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), delta[0], delta[1], RIM, state,
-        flat["zx"], flat["zy"], flat["nx"], flat["ny"], flat["bend"],
+    changed, violation, weight, ss, cc, n_contact, n_stick, zsx, zsy, z_norm = kernels.classify(
+        qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), offset[0].ravel(), offset[1].ravel(),
+        delta[0], delta[1], RIM, state, flat["zx"], flat["zy"], flat["nx"], flat["ny"], flat["bend"],
     )  # fmt: skip
-    scale = np.sqrt(ss / n_contact) + np.hypot(*delta) if n_contact else 0.0
+    scale = max(np.sqrt(ss / n_contact) + np.hypot(*delta), np.sqrt(cc / n_contact)) if n_contact else 0.0
     residual = violation / weight / scale if scale > 0.0 and weight > 0.0 else 0.0
-    if residual > tolerance and weight > 0.0:
-        contact = c_flat > 0.0
-        cx = sx.ravel()[contact] + delta[0] - offset[0].ravel()[contact]
-        cy = sy.ravel()[contact] + delta[1] - offset[1].ravel()[contact]
-        floor = float(np.sqrt(np.mean(cx * cx + cy * cy)))
-        residual = violation / weight / max(scale, floor) if max(scale, floor) > 0.0 else 0.0
     return Optimality(float(residual), bool(changed), int(n_stick), (zsx, zsy), z_norm)
 
 
@@ -213,7 +207,8 @@ def solve_increment(
     shape = bound.shape
     c = np.array(bound, dtype=float)
     contact = c > 0
-    ex, ey = offset
+    ex = np.ascontiguousarray(offset[0], dtype=float)
+    ey = np.ascontiguousarray(offset[1], dtype=float)
     load_control = force is not None
     if load_control:
         check_below_sliding(force, c, pixel_area)
@@ -237,7 +232,7 @@ def solve_increment(
         sy += ey
         if load_control:
             delta = kernels.interior_mean(qx.ravel(), qy.ravel(), c_flat, sx.ravel(), sy.ravel(), RIM)
-        check = optimality(qx, qy, c_flat, sx, sy, delta, state, flat, offset, tolerance)
+        check = optimality(qx, qy, c_flat, sx, sy, delta, state, flat, (ex, ey))
         residual, n_stick, (zsx, zsy), z_norm = check.residual, check.n_stick, check.stick_sum, check.z_norm
         if residual <= tolerance:
             stick = (state == kernels.STICK).reshape(shape)

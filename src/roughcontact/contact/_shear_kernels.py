@@ -40,15 +40,16 @@ def interior_mean(qx, qy, c, sx, sy, rim):
 
 
 @nb.njit(**_JIT)
-def classify(qx, qy, c, sx, sy, dx, dy, rim, state, zx, zy, nx, ny, bend):
+def classify(qx, qy, c, sx, sy, ex, ey, dx, dy, rim, state, zx, zy, nx, ny, bend):
     """Classify stick/slip, build the restricted gradient z, the rim normals and multipliers.
 
-    ``sx, sy`` hold s + e on entry and w = s + e - delta on return. Returns (changed: whether
-    ``state`` changed, weighted violation sum c|z|, sum c, sum |s + e|^2 over the contact,
-    contact points, stick points, sum z over the stick set (x, y), |z|^2).
+    ``sx, sy`` hold s + e on entry and w = s + e - delta on return; ``ex, ey`` is e. Returns
+    (changed: whether ``state`` changed, weighted violation sum c|z|, sum c, sum |s + e|^2 over
+    the contact, sum |s|^2 = |C q|^2 over the contact, contact points, stick points, sum z over
+    the stick set (x, y), |z|^2).
     """
     changed = False
-    violation, weight, ss = 0.0, 0.0, 0.0
+    violation, weight, ss, cc = 0.0, 0.0, 0.0, 0.0
     n_contact, n_stick = 0, 0
     zsx, zsy, zz = 0.0, 0.0, 0.0
     for i in range(c.size):
@@ -61,6 +62,8 @@ def classify(qx, qy, c, sx, sy, dx, dy, rim, state, zx, zy, nx, ny, bend):
         if ci > 0.0:
             n_contact += 1
             ss += s_x * s_x + s_y * s_y
+            cx, cy = s_x - ex[i], s_y - ey[i]
+            cc += cx * cx + cy * cy
             weight += ci
             norm = math.hypot(qx[i], qy[i])
             new = STICK
@@ -83,7 +86,7 @@ def classify(qx, qy, c, sx, sy, dx, dy, rim, state, zx, zy, nx, ny, bend):
             changed = True
             state[i] = new
         zx[i], zy[i], nx[i], ny[i], bend[i] = gx, gy, ux, uy, lam
-    return changed, violation, weight, ss, n_contact, n_stick, zsx, zsy, zz
+    return changed, violation, weight, ss, cc, n_contact, n_stick, zsx, zsy, zz
 
 
 @nb.njit(**_JIT)
