@@ -37,7 +37,7 @@ Seed paper 001, eqs. 1-4.
 from __future__ import annotations
 
 import numbers
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from functools import cached_property, partial
 
@@ -96,15 +96,16 @@ class Step:
     passes: int
 
 
+@dataclass(frozen=True)
 class Stepper:
     """Solves the steps of one programme: what stays fixed along it, and one method per part of a step.
 
-    Parameters
+    Attributes
     ----------
     operator : TractionCompliance
         Tangential (and coupling) compliance of the pair.
-    normal_operator : callable
-        Returns the surface compliance of the normal problem (built on first use).
+    build_normal_operator : callable
+        Returns the surface compliance of the normal problem (called on first use).
     separation : ndarray
         h_0 = max(h) - h [m].
     mu : float
@@ -120,39 +121,23 @@ class Stepper:
         The public solver, named in convergence messages.
     """
 
-    def __init__(
-        self,
-        operator: TractionCompliance,
-        normal_operator,
-        separation,
-        *,
-        mu,
-        coupled,
-        tolerance,
-        coupling_tolerance,
-        max_iterations,
-        max_passes,
-        preconditioner,
-        apg,
-        name="solve_tangential",
-    ):
-        self.name = name
-        self.operator = operator
-        self._normal_operator = normal_operator
-        self.separation = separation
-        self.mu = mu
-        self.coupled = coupled
-        self.tolerance = tolerance
-        self.coupling_tolerance = coupling_tolerance
-        self.max_iterations = max_iterations
-        self.max_passes = max_passes
-        self.preconditioner = preconditioner
-        self.apg = apg
+    operator: TractionCompliance
+    build_normal_operator: Callable[[], object]
+    separation: np.ndarray
+    mu: float
+    coupled: bool
+    tolerance: float
+    coupling_tolerance: float
+    max_iterations: int
+    max_passes: int
+    preconditioner: tuple | None
+    apg: dict | None
+    name: str = "solve_tangential"
 
     @cached_property
     def normal_operator(self):
         """The normal problem's compliance (built when a step first needs a normal solve)."""
-        return self._normal_operator()
+        return self.build_normal_operator()
 
     def step(self, state: State, normal: tuple[str, float], tangential: dict) -> Step:
         """Take ``state`` to the normal target ``normal`` and the tangential control ``tangential``.
