@@ -339,24 +339,36 @@ def _load_interference(records, context):
     return draw_load_interference(curves, common_omega_c(used), measured_of(context))
 
 
+def _first_case_panels(records, name: str, *, height: float):
+    """Return (record, dataset, figure, axes, count): a grid of up to 3 columns, one panel per stored map.
+
+    The first case with stored fields and the variable ``name``; None when there is none.
+    """
+    from ...plotting.layout import new_figure
+
+    record = next((r for r in records if r.fields_path is not None), None)
+    data = None if record is None else record.dataset()
+    if data is None or name not in data:
+        return None
+    count = data.sizes["map"]
+    columns = min(3, count)
+    figure, axes = new_figure(-(-count // columns), columns, width=4.2, height=height)
+    return record, data, figure, [ax for row in axes for ax in row], count
+
+
 @caption(
     "Von Mises stress maps of the first case at the stored loads, loading then unloading, on one "
     "colour scale (paper 002 Figs. 8-9); a panel at zero load says so."
 )
 def _von_mises(records, context):
     """Paper 002 Figs. 8-9: the stored von Mises maps of the first case, loading then unloading."""
-    from ...plotting.layout import colour_scale, new_figure, shared_colorbar
+    from ...plotting.layout import colour_scale, shared_colorbar
     from ...plotting.study import map_axes
 
-    record = next((r for r in records if r.fields_path is not None), None)
-    data = None if record is None else record.dataset()
-    if data is None or "von_mises" not in data:
+    panels = _first_case_panels(records, "von_mises", height=3.6)
+    if panels is None:
         return None
-    count = data.sizes["map"]
-    columns = min(3, count)
-    rows = -(-count // columns)
-    figure, axes = new_figure(rows, columns, width=4.2, height=3.6)
-    flat = [ax for row in axes for ax in row]
+    record, data, figure, flat, count = panels
     # one scale, the full range: the panels compare, and a smooth stress field has no spike to clip
     shared = colour_scale(data["von_mises"], from_zero=True, percentiles=(0, 100))
     image = None
@@ -395,18 +407,13 @@ def _von_mises(records, context):
     "zone below the contacts and, at zero load, the residual stress (paper 002 Fig. 9e)."
 )
 def _von_mises_section(records, context):
-    from ...plotting.layout import colour_scale, new_figure, shared_colorbar
+    from ...plotting.layout import colour_scale, shared_colorbar
 
-    record = next((r for r in records if r.fields_path is not None), None)
-    data = None if record is None else record.dataset()
-    if data is None or "von_mises_section" not in data:
+    panels = _first_case_panels(records, "von_mises_section", height=2.6)
+    if panels is None:
         return None
+    _, data, figure, flat, count = panels
     sections = data["von_mises_section"]
-    count = sections.sizes["map"]
-    columns = min(3, count)
-    rows = -(-count // columns)
-    figure, axes = new_figure(rows, columns, width=4.2, height=2.6)
-    flat = [ax for row in axes for ax in row]
     shared = colour_scale(sections, from_zero=True, percentiles=(0, 100))
     factor, _ = shared.prefixed("Pa")
     x = sections["x_section"].values * 1e6
