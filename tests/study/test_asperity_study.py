@@ -155,9 +155,10 @@ def test_asperity_scalars_equal_a_direct_call_on_the_surface_moments():
     assert output.scalars["peak_interference"] == float(curve["approach"][loading][-1])
 
 
-def test_load_unload_interferences_equal_a_direct_compress_island():
+def _island_case(pixels: int, **keys):
+    """Run the load_unload kind on paper 002's island (seed 4) on SU-8 over silicon to 1000 uN."""
     inputs = CaseInputs(
-        {"island": Paper002Island(generate="paper002_island", shape=(24, 24), seed=4)}, {}, MATERIALS
+        {"island": Paper002Island(generate="paper002_island", shape=(pixels, pixels), seed=4)}, {}, MATERIALS
     )
     kind = get_kind("load_unload")
     parameters = kind.parameters.model_validate(
@@ -168,9 +169,14 @@ def test_load_unload_interferences_equal_a_direct_compress_island():
             "film_thickness": "6.3 um",
             "peak_force": "1000 uN",
             "reference_force": "25 uN",
+            **keys,
         }
     )
-    output = kind.run(parameters, inputs)
+    return kind.run(parameters, inputs)
+
+
+def test_load_unload_interferences_equal_a_direct_compress_island():
+    output = _island_case(24)
     # compress_island's own default targets (0, 25 uN, 100 ... 1000 uN and back) are load_steps = 10's
     direct = compress_island(paper002_island(24, seed=4), SU8, substrate=SILICON, film_thickness=6.3e-6)
     peak = int(np.sum(direct.branch == "loading")) - 1
@@ -247,23 +253,7 @@ def test_a_curve_needs_max_force_and_nominal_area_together():
 
 
 def test_load_unload_with_volume_plasticity_equals_compress_island_and_keeps_residual_stress():
-    inputs = CaseInputs(
-        {"island": Paper002Island(generate="paper002_island", shape=(48, 48), seed=4)}, {}, MATERIALS
-    )
-    kind = get_kind("load_unload")
-    parameters = kind.parameters.model_validate(
-        {
-            "topography": "island",
-            "material": "SU-8",
-            "substrate": "silicon wafer",
-            "film_thickness": "6.3 um",
-            "peak_force": "1000 uN",
-            "reference_force": "25 uN",
-            "plasticity": "volume",
-            "layers": 8,
-        }
-    )
-    output = kind.run(parameters, inputs)
+    output = _island_case(48, plasticity="volume", layers=8)
     direct = compress_island(
         paper002_island(48, seed=4),
         SU8,
