@@ -267,11 +267,6 @@ def check_max_stick_change(value) -> None:
         )
 
 
-def _stick_fraction(state: State, stick_area: float, pixel_area: float) -> float:
-    contact = np.count_nonzero(state.pressure > 0) * pixel_area
-    return stick_area / contact if contact > 0 else np.nan
-
-
 @dataclass
 class Record:
     """Per-step series of a programme, filled by :func:`run` (SI; named as the result's fields)."""
@@ -344,7 +339,6 @@ def run(
     """
     normal_control, normal_values = normal
     tangential_control, tangential_values = tangential
-    pixel_area = stepper.operator.pixel_area
     record = Record.empty()
     previous = (float(start[0]), np.asarray(start[1], dtype=float))
     reached, last_move = previous, None  # the targets of the last step, and that step's move
@@ -382,10 +376,10 @@ def run(
                 ) from None
             contact = step.state.pressure > 0
             stick = step.increment.stick & contact
-            fraction_now = _stick_fraction(step.state, stick.sum() * pixel_area, pixel_area)
-            # Only a shrinking stick zone is resolved: re-sticking (a reversal) happens at once.
+            fraction_now = stick.sum() / contact.sum() if contact.any() else np.nan
+            # Only a shrinking stick zone is refined (re-sticking happens at once); after a reversal
+            # every point sticks first, so the fraction falls from 1 within the step.
             move = (point[0] - reached[0], point[1] - reached[1])
-            # at a reversal every point sticks again first: the fraction falls from 1 within the step
             before = 1.0 if _reverses(move, last_move) else stick_fraction
             change = max(before - fraction_now, 0.0) if np.isfinite(before) else 0.0
             if max_stick_change is not None and change > max_stick_change and length > SHORTEST_STEP:
