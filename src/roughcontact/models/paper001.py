@@ -552,9 +552,10 @@ def _analysed(result, normal_force: float, control: str) -> tuple[LoopAnalysis |
     """Analyse the last loop as paper 001 does where the programme has one that slides; else say why."""
     if control == "force":
         return None, "force control: the paper's loop analysis needs a displacement programme that slides"
-    if not result.loops():
+    loops = result.loops()
+    if not loops:
         return None, "no closed loop of the x programme"
-    start, stop = result.loops()[-1]
+    start, stop = loops[-1]
     loads = result.normal_load[start : stop + 1]
     if np.ptp(loads) > 1e-6 * loads.max():
         return None, "the normal force varies along the last loop: the paper's analysis needs it constant"
