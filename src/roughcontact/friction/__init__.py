@@ -1,6 +1,6 @@
 """Friction models: the Winkler-layer + Lennard-Jones adhesive friction model of paper 000."""
 
-from .readings import PRINTED, Readings
+from .readings import PAPER, PRINTED, Readings
 from .viscoelastic import PronySeries, material_after_hold, standard_linear_solid
 from .winkler_lj import (
     FrictionSweep,
@@ -12,6 +12,7 @@ from .winkler_lj import (
 )
 
 __all__ = [
+    "PAPER",
     "PRINTED",
     "FrictionSweep",
     "PronySeries",

@@ -3,7 +3,10 @@
 Paper 000 has unit and sign problems and gaps (see ``docs/winkler_lj.md`` for the derivations).
 Every disputed choice is a field of :class:`Readings`; the default of each field is the physically
 consistent reading and the paper's printed form is always one of the choices. :data:`PRINTED`
-selects the printed form everywhere (where the paper is silent, the choice closest to its text).
+selects the printed form everywhere (where the paper is silent, the choice closest to its text);
+:data:`PAPER` is the paper's own reading, the printed choices that give its headline results on
+its own scenario (see ``docs/winkler_lj.md``, "The paper's own reading"). :meth:`Readings.preset`
+returns either by name (:data:`PRESETS`).
 
 =====================  =======================  =====================================================
 field                  default                  alternatives (printed form first)
@@ -20,6 +23,7 @@ mechanical_height      ``cuboid``               ``printed_separation``: 1/d in e
 mechanical_energy      ``two_stage``            ``eq16_signed``: eq. 16's signed integral
 shear_poisson          ``geometric``            ``surface``, ``counter``: which nu enters G
 adhesive_range         ``maugis_dugdale``       ``all_springs``: every spring not in mechanical contact
+base                   ``lowest_point``         ``half_sphere``: the base of section 3.1's half-sphere tip
 adhesive_cutoff        ``inf``                  a distance [m] beyond which springs do not count
 =====================  =======================  =====================================================
 """
@@ -28,7 +32,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 
 from ..errors import InputError
 
@@ -45,6 +49,7 @@ CHOICES: dict[str, tuple[str, ...]] = {
     "mechanical_energy": ("two_stage", "eq16_signed"),
     "shear_poisson": ("geometric", "surface", "counter"),
     "adhesive_range": ("maugis_dugdale", "all_springs"),
+    "base": ("lowest_point", "half_sphere"),
 }
 """Allowed values of each string field of :class:`Readings`; the first is the default."""
 
@@ -103,6 +108,18 @@ class Readings:
         hold no bond to break. ``"all_springs"``: every spring not in mechanical contact (the
         paper's "l_i > epsilon"; the sum over a sphere then grows like the log of the scan size and
         over a flat like its area, see ``docs/winkler_lj.md``; the earlier default).
+    base : {"lowest_point", "half_sphere"}
+        The base level from which z_i and d are measured (eq. 8: "d is the distance between the
+        flat surface and the base of the rough surface"), which enters the printed heights
+        (``cuboid_height="printed"``: z_i + dz_i; ``mechanical_height="printed_separation"``: d).
+        ``"lowest_point"``: the lowest pixel of the composite surface in the scan window, so that
+        d grows with the window around a sphere (R = 1 um: d = 1 um in a 2 um window, 6.25 um at
+        the corners of a 5 um one). ``"half_sphere"``: section 3.1 models the tip "as a half
+        sphere", whose base is its equatorial plane, a tip radius R below its apex; z_i and d are
+        measured from that plane (d = R + the apex gap, whatever the window), and only the springs
+        under the half sphere (within R of the tip's apex, above its base) are modelled, in eq. 2
+        and in the friction, so that the result does not change with the window once the tip is
+        inside it. R is the model's ``tip_radius`` (default: the radius the tip was generated with).
     adhesive_cutoff : float
         Gap [m] beyond which springs are neither in eq. 2 nor in the friction (default: none,
         ``inf``).
@@ -125,6 +142,7 @@ class Readings:
     mechanical_energy: str = "two_stage"
     shear_poisson: str = "geometric"
     adhesive_range: str = "maugis_dugdale"
+    base: str = "lowest_point"
     adhesive_cutoff: float = math.inf
 
     def __post_init__(self):
@@ -144,13 +162,30 @@ class Readings:
         object.__setattr__(self, "adhesive_cutoff", cutoff)
 
     @classmethod
-    def from_strings(cls, items: Iterable[str]) -> Readings:
+    def preset(cls, name: str) -> Readings:
+        """Return a named set of readings: ``"default"``, ``"paper"`` (:data:`PAPER`), ``"printed"``.
+
+        ``"printed"`` is :data:`PRINTED`, every equation as printed.
+
+        Raises
+        ------
+        InputError
+            An unknown name (field ``reading``; the message lists the presets).
+        """
+        if name not in PRESETS:
+            raise InputError("reading", f"unknown preset {name!r}.", f"choose one of {list(PRESETS)}.")
+        return PRESETS[name]
+
+    @classmethod
+    def from_strings(cls, items: Iterable[str], *, preset: str = "default") -> Readings:
         """Build readings from ``"name=value"`` strings (a study's ``readings`` table, a command's options).
 
         Parameters
         ----------
         items : iterable of str
             e.g. ``["contact=zero_gap", "adhesive_cutoff=2e-8"]``; the cutoff is in metres.
+        preset : str
+            The readings that the items change (:meth:`preset`); the fields not named keep its value.
 
         Returns
         -------
@@ -181,7 +216,7 @@ class Readings:
                     f"adhesive_cutoff {value!r} is not a number.",
                     "give metres, e.g. 2e-8, or inf.",
                 ) from None
-        return cls(**values)
+        return replace(cls.preset(preset), **values)
 
     def changed(self) -> dict[str, object]:
         """Return the fields that differ from the defaults, ``{name: value}``."""
@@ -209,3 +244,31 @@ PRINTED = Readings(
 """Every equation as printed in paper 000 (``contact="epsilon"`` is the printed text's criterion;
 the paper does not say which Poisson's ratio enters G, ``"surface"`` is the closest to its text;
 ``adhesive_range="all_springs"`` reads "strictly adhesive contact" as the text's l_i > epsilon)."""
+
+
+PAPER = Readings(
+    winkler_factor="paper000_eq4_printed",
+    work_of_adhesion="printed",
+    shear="eq12_printed",
+    mechanical_height="printed_separation",
+    shear_poisson="surface",
+    adhesive_range="all_springs",
+    base="half_sphere",
+)
+"""The paper's own reading: the printed choices that give paper 000's headline results on its scenario.
+
+Printed eq. 4 (k), dgamma = sqrt(gamma1 gamma2), eq. 12's shear compliance, eq. 15 summed over every
+adhesive spring of the tip, eq. 17 with 1/d, G with the surface's nu (as :data:`PRINTED`), and the
+half-sphere tip of section 3.1: z_i and d measured from its base, a tip radius below its apex, and
+only the springs under it modelled, so that d = R + the apex gap and nothing depends on the scan
+window once the tip is inside it. Kept from the default, as the paper's own text or its units
+require: forces in eq. 2 (``balance_terms``) and the attraction adding to the load
+(``adhesion_sign``; the "sign of eq. 5"), the wall at epsilon (the printed text's criterion), the
+cuboid height of eq. 15 = the Winkler layer plus the extension (the text: "its height being the
+height of the Winkler's layer"; Fig. 3: "z_i is the height of the layer"), energies times S
+(eqs. 15, 17 give N/m otherwise), and the two stages of the text for eq. 16. On paper 000's
+scenario: adhesive friction about 19 times the mechanical part at 10 uN and a crossover near
+640 uN (paper: about 40 times, about 600 uN); ``docs/winkler_lj.md`` tabulates each choice."""
+
+PRESETS: dict[str, Readings] = {"default": Readings(), "paper": PAPER, "printed": PRINTED}
+"""Named sets of readings (a study's ``reading`` key, ``roughcontact friction --reading NAME``)."""

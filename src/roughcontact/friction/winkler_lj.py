@@ -75,6 +75,37 @@ def _surface_energy(value: float | None, body: Material | None, field_name: str)
     return value
 
 
+def _tip_radius(value: float | None, tip: Topography | None, readings: Readings) -> float | None:
+    """R of the half-sphere tip: ``value``, else the radius ``tip`` was generated with; None if unused."""
+    if readings.base != "half_sphere":
+        return None if value is None else positive(value, "tip_radius", example="1e-6", unit="m")
+    if value is None and tip is not None:
+        value = tip.info.get("radius")
+    if value is None:
+        raise InputError(
+            "tip_radius",
+            "readings.base='half_sphere' measures z_i and d from the base of the half-sphere tip, "
+            "and no tip radius is known.",
+            "give tip_radius (paper 000: 1e-6 m, a 2 um diameter tip) or a counter topography "
+            "generated as a sphere.",
+        )
+    return positive(value, "tip_radius", example="1e-6", unit="m")
+
+
+def _within_half_sphere(surface: Topography, tip: Topography | None, radius: float) -> np.ndarray:
+    """Pixels under the half-sphere tip: within ``radius`` of its apex (the tip's highest point).
+
+    Without a tip topography on the composite's grid the apex is the composite's highest point.
+    """
+    apex_heights = surface.heights if tip is None or tip.shape != surface.shape else tip.heights
+    apex = np.unravel_index(int(np.argmax(apex_heights)), apex_heights.shape)
+    squared = sum(
+        ((np.arange(n) - a) * h).reshape([-1 if k == axis else 1 for k in range(surface.dim)]) ** 2
+        for axis, (n, a, h) in enumerate(zip(surface.shape, apex, surface.spacing, strict=True))
+    )
+    return squared <= radius * radius
+
+
 def work_of_adhesion(
     surface_energy_1: float, surface_energy_2: float, *, reading: str = "girifalco_good"
 ) -> float:
@@ -115,7 +146,8 @@ class WinklerLJResult:
     normal_force : float
         Normal load N [N].
     separation : float
-        d: distance from the flat to the base (lowest point) of the composite surface [m].
+        d: distance from the flat to the base of the composite surface [m]: its lowest point, or
+        the base of the half-sphere tip (``readings.base``).
     approach : float
         Overlap of the highest point with the contact wall (epsilon or 0, see ``readings.contact``) [m];
         > 0 when springs are compressed.
@@ -292,7 +324,8 @@ class WinklerLJModel:
     _depth: np.ndarray = field(repr=False)  # z_max - z, ascending
     _cumulative_depth: np.ndarray = field(repr=False)  # [0, d0, d0 + d1, ...]
     _compression_at_depth: np.ndarray = field(repr=False)  # j d_j - sum_{i<j} d_i, summed compression at d_j
-    _rank: np.ndarray = field(repr=False)  # grid-shaped position of each pixel in the sorted order
+    _rank: np.ndarray = field(repr=False)  # grid-shaped position of each pixel, sorted (n: not modelled)
+    tip_radius: float | None = None  # R of the half-sphere tip (readings.base="half_sphere")
 
     # --- constants --------------------------------------------------------------------------
     @property
@@ -318,6 +351,16 @@ class WinklerLJModel:
         return math.inf
 
     @property
+    def base_depth(self) -> float:
+        """Depth of the base, from which z_i and d are measured, below the highest point [m].
+
+        ``readings.base="lowest_point"``: the lowest point of the composite surface;
+        ``"half_sphere"``: the tip radius R (the equatorial plane of the half sphere of paper 000,
+        section 3.1, whose apex is the highest point).
+        """
+        return self._depth[-1] if self.readings.base == "lowest_point" else self.tip_radius
+
+    @property
     def _wall(self) -> float:
         return self.epsilon if self.readings.contact == "epsilon" else 0.0
 
@@ -337,6 +380,8 @@ class WinklerLJModel:
         within = self._depth.size
         if math.isfinite(reach):
             within = int(np.searchsorted(self._depth, reach, side="right"))
+        if self.readings.base == "half_sphere":  # springs below the half sphere's base are not modelled
+            within = min(within, int(np.searchsorted(self._depth, self.tip_radius, side="right")))
         return mechanical, max(within, mechanical)
 
     def _attraction(self, gap: np.ndarray) -> np.ndarray:
@@ -473,7 +518,8 @@ class WinklerLJModel:
         count, within = self._split(approach)  # sorted order: [0, count) mechanical, [count, within) adhesive
         n, depth = self._depth.size, self._depth
         stiffness, eps, gamma = self.spring_stiffness, self.epsilon, self.work_of_adhesion
-        separation = depth[-1] + self._wall - approach
+        base = self.base_depth
+        separation = base + self._wall - approach
 
         compression = approach - depth[:count]
         adhesive_gap = depth[count:within] + (self._wall - approach)
@@ -486,7 +532,7 @@ class WinklerLJModel:
         if self.readings.cuboid_height == "layer":
             cuboid = self.layer_thickness + extension[:within]
         else:
-            cuboid = (depth[-1] - depth[:within]) + extension[:within]
+            cuboid = (base - depth[:within]) + extension[:within]
         height = cuboid.copy()
         if self.readings.mechanical_height == "printed_separation":
             height[:count] = separation
@@ -534,8 +580,8 @@ class WinklerLJModel:
         bonded_sorted = np.zeros(n, dtype=bool)
         bonded_sorted[count:within] = bonded
 
-        def to_grid(values: np.ndarray) -> np.ndarray:
-            return values[rank]
+        def to_grid(values: np.ndarray, outside: float = 0.0) -> np.ndarray:  # rank n: not modelled
+            return np.append(values, outside)[rank]
 
         return WinklerLJResult(
             normal_force=load,
@@ -543,8 +589,8 @@ class WinklerLJModel:
             approach=float(approach),
             mechanical=rank < count,
             adhesive=(rank >= count) & (rank < within),
-            bonded=bonded_sorted[rank],
-            gap=depth[rank] + (self._wall - approach),
+            bonded=to_grid(bonded_sorted, False),
+            gap=to_grid(depth + (self._wall - approach), math.inf),
             stress=to_grid(stress),
             extension=to_grid(extension),
             lateral_force=to_grid(lateral),
@@ -681,6 +727,7 @@ def winkler_lj_model(
     resample: bool = False,
     relaxation: Callable[[float], float] | None = None,
     hold_time: float = 0.0,
+    tip_radius: float | None = None,
 ) -> WinklerLJModel:
     """Prepare the Winkler-Lennard-Jones model of a surface (or two merged surfaces) against a flat.
 
@@ -710,6 +757,10 @@ def winkler_lj_model(
         E(t) [Pa] of the surface material (hold time); e.g. a PronySeries.
     hold_time : float
         Time held in contact before sliding [s]; used with ``relaxation``.
+    tip_radius : float, optional
+        Radius R of the half-sphere tip [m], used only with ``readings.base="half_sphere"``;
+        default the ``radius`` the counter topography was generated with
+        (:func:`~roughcontact.topography.generate.sphere_with_roughness`).
 
     Returns
     -------
@@ -719,9 +770,11 @@ def winkler_lj_model(
     ------
     InputError
         A 1D or mismatched topography (without ``resample``), epsilon or layer thickness not
-        positive, a missing, zero or negative surface energy, an invalid Poisson's ratio for eq. 4.
+        positive, a missing, zero or negative surface energy, an invalid Poisson's ratio for eq. 4,
+        ``readings.base="half_sphere"`` without a tip radius.
     """
     readings = Readings() if readings is None else readings
+    tip_radius = _tip_radius(tip_radius, counter_topography, readings)
     if not isinstance(topography, Topography) or topography.dim != 2:
         raise InputError("topography", "expected a 2D Topography.", "pass a height map (nx, ny) in metres.")
     surface = topography
@@ -756,12 +809,15 @@ def winkler_lj_model(
             "the Winkler layer needs compressible materials (nu < 0.5).",
         )
     shear_nu = {"geometric": math.sqrt(nu_1 * nu_2), "surface": nu_1, "counter": nu_2}[readings.shear_poisson]
-    heights = surface.heights.ravel()
+    modelled = np.arange(surface.heights.size)
+    if readings.base == "half_sphere":
+        modelled = np.flatnonzero(_within_half_sphere(surface, counter_topography, tip_radius))
+    heights = surface.heights.ravel()[modelled]
     order = np.argsort(-heights, kind="stable")
     depth = heights.max() - heights[order]
     cumulative = np.concatenate(([0.0], np.cumsum(depth)))
-    rank = np.empty(depth.size, dtype=np.intp)
-    rank[order] = np.arange(depth.size)
+    rank = np.full(surface.heights.size, depth.size, dtype=np.intp)
+    rank[modelled[order]] = np.arange(depth.size)
     return WinklerLJModel(
         topography=surface,
         readings=readings,
@@ -775,6 +831,7 @@ def winkler_lj_model(
         _cumulative_depth=cumulative,
         _compression_at_depth=np.arange(depth.size) * depth - cumulative[:-1],
         _rank=rank.reshape(surface.shape),
+        tip_radius=tip_radius,
     )
 
 
