@@ -66,6 +66,17 @@ def test_friction_text_json_and_outputs(capsys, files, tmp_path, cases):
     assert (folder / "figures" / "friction_friction_vs_load.png").read_bytes()[:8] == PNG_MAGIC
 
 
+def test_friction_paper_preset_changed_by_a_reading(capsys, files, cases):
+    argv = ["friction", files["scan"], files["tip"], *COMMON, "--json", "--reading", "paper"]
+    status, out, err = run(capsys, *argv, "--reading", "contact=zero_gap", "--tip-radius", "1 um")
+    assert status == 0, err
+    (case,) = cases(out)
+    assert case["parameters"]["reading"] == "paper"
+    assert case["parameters"]["readings"] == {"contact": "zero_gap"}
+    changed = case["scalars"]["readings"]
+    assert "base=half_sphere" in changed and "contact=zero_gap" in changed and "all_springs" in changed
+
+
 def test_friction_hold_time_changes_mu(capsys, files, scalars):
     _, out, _ = run(capsys, "friction", files["scan"], files["tip"], *COMMON, "--json")
     fresh = scalars(out)["mu"]
@@ -93,6 +104,9 @@ def test_friction_hold_time_changes_mu(capsys, files, scalars):
         (["--epsilon", "0 nm"], "--epsilon"),
         (["--load", "1 N"], "--normal-force"),
         (["--reading", "contact=glued"], "--reading"),
+        (["--reading", "papers"], "--reading"),
+        (["--reading", "paper", "--reading", "printed"], "--reading"),
+        (["--reading", "paper", "--tip-radius", "-1 um"], "--tip-radius"),
     ],
 )
 def test_friction_bad_input_exits_naming_the_option(capsys, files, extra, option):

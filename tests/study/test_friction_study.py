@@ -12,6 +12,7 @@
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -19,7 +20,7 @@ import xarray as xr
 from scipy import stats
 
 from roughcontact.experiment.compare import read_measured
-from roughcontact.friction import PronySeries, Readings, winkler_lj_model
+from roughcontact.friction import PAPER, PronySeries, Readings, winkler_lj_model
 from roughcontact.materials import get_material
 from roughcontact.study import load_study, run_study
 from roughcontact.study.config import StudyError
@@ -185,8 +186,12 @@ def _direct_surfaces():
             'relaxed_modulus = "80 GPa"\nrelaxation_time = "5 s"\nhold_time = "3 s"',
             {"relaxation": PronySeries(80e9, (110e9 - 80e9,), (5.0,)), "hold_time": 3.0},
         ),
+        (  # the preset, changed by the table; the tip's radius comes from its generator
+            'reading = "paper"\nreadings = {adhesive_range = "maugis_dugdale"}',
+            {"readings": replace(PAPER, adhesive_range="maugis_dugdale")},
+        ),
     ],
-    ids=["defaults", "readings", "hold"],
+    ids=["defaults", "readings", "hold", "paper"],
 )
 def test_scalars_are_those_of_the_model_called_directly(tmp_path, extra, options):
     path = tmp_path / "direct.toml"
@@ -266,6 +271,13 @@ def test_a_bad_reading_value_is_refused_with_its_name_and_the_choices(tmp_path):
     assert "'contact'" in problem and "touch" in problem
     assert "epsilon" in fix and "zero_gap" in fix
     assert "contact" in message
+
+
+def test_an_unknown_preset_is_refused_with_the_presets(tmp_path):
+    problems, _ = _problems(tmp_path, DIRECT.format(load="7 uN", extra='reading = "papers"'))
+    (field, problem, fix), *_ = problems
+    assert field.endswith(".reading") and "papers" in problem
+    assert "'paper'" in fix and "default" in fix and "printed" in fix
 
 
 def test_an_unknown_reading_name_is_refused_with_a_suggestion(tmp_path):

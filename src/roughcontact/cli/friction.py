@@ -25,23 +25,37 @@ from .options import (
 from .output import run_command
 
 
-def _readings(texts: list[str]) -> dict[str, str]:
-    """Return ``--reading NAME=VALUE`` (repeated) as a study's ``readings`` table (checked by the model)."""
-    readings = {}
+def _readings(texts: list[str]) -> tuple[str | None, dict[str, str]]:
+    """Return ``--reading`` (repeated) as a study's ``reading`` preset and ``readings`` table.
+
+    ``--reading PRESET`` (no ``=``, at most one: default, paper, printed) names the preset;
+    ``--reading NAME=VALUE`` changes one of its fields. Both are checked by the study model.
+    """
+    preset, readings = None, {}
     for text in texts:
         name, separator, value = text.partition("=")
+        if not separator and name.strip() and preset is None:
+            preset = name.strip()
+            continue
         if not separator or not name.strip() or not value.strip():
             raise InputError(
-                "--reading", f"cannot read {text!r}.", "write NAME=VALUE, e.g. contact=zero_gap."
+                "--reading",
+                f"cannot read {text!r}" + (f" beside the preset {preset!r}." if preset else "."),
+                "write NAME=VALUE, e.g. contact=zero_gap, or one preset name: default, paper, printed.",
             )
         readings[name.strip()] = value.strip()
-    return readings
+    return preset, readings
 
 
 def _model_keys(args: argparse.Namespace) -> dict:
     """Return the model's keys the two commands share, with the option of each."""
     keys = options(args, "surface_energy", "counter_surface_energy", "layer_thickness", "epsilon")
-    return keys | {"readings": (_readings(args.reading) or None, "--reading")}
+    preset, readings = _readings(args.reading)
+    return keys | {
+        "reading": (preset, "--reading"),
+        "readings": (readings or None, "--reading"),
+        **options(args, "tip_radius"),
+    }
 
 
 def _friction(args: argparse.Namespace) -> int:
@@ -177,8 +191,14 @@ def _shared_options(parser: argparse.ArgumentParser, *, surface_energy: str | No
         "--reading",
         action="append",
         default=[],
-        metavar="NAME=VALUE",
-        help="reading of a disputed equation of paper 000, e.g. contact=zero_gap (see docs/winkler_lj.md)",
+        metavar="NAME=VALUE|PRESET",
+        help="reading of a disputed equation of paper 000, e.g. contact=zero_gap, or a preset they change: "
+        "default, paper (the paper's own reading: its headline results), printed (see docs/winkler_lj.md)",
+    )
+    parser.add_argument(
+        "--tip-radius",
+        help="radius of the half-sphere tip (reading base=half_sphere, in the preset paper), e.g. '1 um'; "
+        "default: the generated tip's",
     )
     add_output_options(parser)
 

@@ -25,7 +25,15 @@ Paper 000's equations have unit and sign problems and gaps; every disputed choic
 reading (:class:`~roughcontact.friction.readings.Readings`), given in the study file as a table of
 name = value strings, e.g. ``readings = {contact = "zero_gap", adhesive_cutoff = "20 nm"}``
 (``adhesive_cutoff`` takes a length with its unit, or ``inf``). A reading not
-named keeps its default, the physically consistent one. Stated assumptions of the model (paper
+named keeps its default, the physically consistent one, or the value of the preset named by
+``reading``: ``"default"``, ``"paper"`` (the paper's own reading,
+:data:`~roughcontact.friction.readings.PAPER`: printed eqs. 4, 12, 15 and 17 and dgamma, the
+half-sphere tip of section 3.1, which gives the paper's headline results) or ``"printed"``
+(every equation as printed, :data:`~roughcontact.friction.readings.PRINTED`); the entries of the
+``readings`` table change the preset's fields, e.g. ``reading = "paper"`` with ``readings =
+{adhesive_range = "maugis_dugdale"}``. The half-sphere tip (``base = "half_sphere"``, in the
+``"paper"`` preset) needs the tip's radius: ``tip_radius``, default the ``radius`` the counter
+topography was generated with. Stated assumptions of the model (paper
 000, sections 2-3): elastic contact only (no plasticity), the flat is rigid, the cuboid tops are
 the scan's pixels (S = 20 nm x 20 nm in the paper), epsilon = 2 nm and h = the thickness of the
 measured layer (50 nm), the defaults here.
@@ -107,8 +115,12 @@ class FrictionParameters(CaseParameters):
         Winkler layer height h and the Lennard-Jones equilibrium distance [m] (paper 000: 50 nm, 2 nm).
     surface_energy, counter_surface_energy : float, optional
         gamma1, gamma2 [J/m^2]; default the materials' own.
+    reading : str
+        Preset the ``readings`` table changes: ``"default"``, ``"paper"`` or ``"printed"``.
     readings : dict
         Reading name -> value (strings; ``adhesive_cutoff`` in metres after validation).
+    tip_radius : float, optional
+        Radius of the half-sphere tip [m] (``base = "half_sphere"``); default the generated tip's.
     resample : bool
         Bring topographies of different pixel sizes onto a common grid instead of refusing them.
     relaxed_modulus, relaxation_time, hold_time : float, optional
@@ -126,12 +138,29 @@ class FrictionParameters(CaseParameters):
     epsilon: Length = 2e-9
     surface_energy: SurfaceEnergy | None = None
     counter_surface_energy: SurfaceEnergy | None = None
+    reading: str = "default"
     readings: dict[str, str | float] = Field(default_factory=dict)
+    tip_radius: Length | None = None
     resample: bool = False
     relaxed_modulus: Pressure | None = None
     relaxation_time: Time = 1.0
     hold_time: Time = 0.0
     crossover: bool = False
+
+    @field_validator("reading")
+    @classmethod
+    def _check_preset(cls, value: str) -> str:
+        from ...friction.readings import PRESETS
+
+        if value not in PRESETS:
+            close = difflib.get_close_matches(value, list(PRESETS), n=1)
+            hint = f"did you mean {close[0]!r}? " if close else ""
+            raise PydanticCustomError(
+                "readings",
+                "unknown preset of the readings",
+                {"fix": f"{hint}reading is one of {list(PRESETS)}."},
+            )
+        return value
 
     @field_validator("readings")
     @classmethod
@@ -245,7 +274,8 @@ def readings_of(parameters: FrictionParameters):
     """Return the :class:`~roughcontact.friction.readings.Readings` of a case."""
     from ...friction.readings import Readings
 
-    return Readings.from_strings(f"{name}={text}" for name, text in parameters.readings.items())
+    items = (f"{name}={text}" for name, text in parameters.readings.items())
+    return Readings.from_strings(items, preset=parameters.reading)
 
 
 def build_model(parameters: FrictionParameters, inputs):
@@ -284,6 +314,7 @@ def build_model(parameters: FrictionParameters, inputs):
         surface_energy=parameters.surface_energy,
         counter_surface_energy=parameters.counter_surface_energy,
         readings=readings_of(parameters),
+        tip_radius=parameters.tip_radius,
         resample=parameters.resample,
         **options,
     )
