@@ -49,7 +49,7 @@ def test_paper000_example_end_to_end(tmp_path, shrunk, cli):
     output = tmp_path / "out"
     status, out, err = cli("run", study, "-o", output, "--no-progress")
     assert status == 0, err
-    assert "18 cases run, 0 reused, 0 failed" in out
+    assert "27 cases run, 0 reused, 0 failed" in out
     _check_results_table(output)
     _check_comparison(output, study)
     _check_figures_and_report(output)
@@ -85,6 +85,10 @@ def _check_results_table(output):
     assert sorted({float(row["normal_force [N]"]) for row in sweep}) == pytest.approx(
         [1e-6, math.sqrt(1e-9), 1e-3]
     )
+    paper = _rows(output, "load_sweep_paper")  # reading = "paper": the preset's readings, a crossover each
+    assert len(paper) == 3 * 3 and {row["status"] for row in paper} == {"done"}
+    assert all("base=half_sphere" in row["readings"] for row in paper)
+    assert all(float(row["crossover_load [N]"]) > 0 for row in paper)
 
 
 def _check_comparison(output, study):
@@ -117,6 +121,7 @@ def _check_figures_and_report(output):
     figures = output / "figures"
     drawn = {path.name for path in figures.glob("*.png")}
     assert {"validation_mu_boxes.png", "validation_mu_means.png", "load_sweep_friction_vs_load.png"} <= drawn
+    assert "load_sweep_paper_friction_vs_load.png" in drawn
     assert "validation_friction_vs_load.png" not in drawn  # one load: nothing to draw against load
     assert all((figures / name).stat().st_size > 10_000 for name in drawn)
     report = (output / "report.html").read_text()

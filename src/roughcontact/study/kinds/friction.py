@@ -78,7 +78,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, field_validator, model_serializer, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...errors import InputError
@@ -146,6 +146,16 @@ class FrictionParameters(CaseParameters):
     relaxation_time: Time = 1.0
     hold_time: Time = 0.0
     crossover: bool = False
+
+    @model_serializer(mode="wrap")
+    def _without_unset_newer_keys(self, handler):
+        """Leave ``reading`` and ``tip_radius`` out at their defaults, so that older case keys stay valid."""
+        data = handler(self)
+        if data.get("reading") == "default":
+            del data["reading"]
+        if data.get("tip_radius", 0.0) is None:
+            del data["tip_radius"]
+        return data
 
     @field_validator("reading")
     @classmethod
