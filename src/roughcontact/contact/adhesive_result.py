@@ -1,0 +1,238 @@
+"""Immutable result of an adhesive contact programme (:func:`roughcontact.contact.solve_adhesive`)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, ClassVar
+
+import numpy as np
+
+from ..topography import Topography
+from .interaction import INTERACTION_FRACTION
+
+RESOLVED_ZONE_PIXELS = 2.0
+"""Pixels the cohesive zone must span for the pull-off of a JKR-like contact to be mesh-independent."""
+
+MAP_STATES = ("peak", "pull_off", "end")
+"""The states whose pressure and gap maps are kept: the largest approach, the pull-off, the last."""
+
+
+@dataclass(frozen=True, eq=False)
+class AdhesiveResult:
+    """Adhesive contact along an approach programme (SI; per step unless noted).
+
+    Attributes
+    ----------
+    topography : Topography
+        The surface solved.
+    interaction : interaction law
+        :class:`~roughcontact.contact.interaction.MaugisDugdale`, ``Exponential`` or ``LennardJones``.
+    delta : ndarray
+        The flat's imposed position [m] (equal to ``approach`` for a free boundary).
+    approach : ndarray
+        Approach from the first touch [m] (periodic: zero-mean displacement convention).
+    force : ndarray
+        Normal force [N] (N/m for a profile), compressive positive, tensile negative.
+    contact_area, interaction_area : ndarray
+        Area at the wall (in repulsion for Lennard-Jones) [m^2]; area out of contact under a tension
+        of at least ``INTERACTION_FRACTION`` of the peak tension [m^2].
+    requested : ndarray of bool
+        True for the programme's own steps, False for steps inserted to resolve fast changes
+        or to reach detachment.
+    jump : ndarray of bool
+        True where the state jumped from the previous step (an instability, bracketed to the
+        jump resolution).
+    iterations : ndarray of int
+    residual : ndarray
+        Largest force imbalance of a pixel relative to the peak tension, per step.
+    maps : dict
+        ``{state: (pressure [Pa], gap [m])}`` at the states of :data:`MAP_STATES`.
+    map_steps : dict
+        The step index of each of those states.
+    pixel_area : float
+        [m^2] (a profile: the spacing [m]).
+    contact_modulus : float
+        E* [Pa].
+    boundary : str
+    tolerance : float
+    cohesive_zone : float
+        (pi / 4) E* w / sigma0^2 [m], the cohesive-zone length the grid must resolve.
+    parameters : dict
+    """
+
+    topography: Topography
+    interaction: Any
+    delta: np.ndarray
+    approach: np.ndarray
+    force: np.ndarray
+    contact_area: np.ndarray
+    interaction_area: np.ndarray
+    requested: np.ndarray
+    jump: np.ndarray
+    iterations: np.ndarray
+    residual: np.ndarray
+    maps: dict = field(repr=False)
+    map_steps: dict
+    pixel_area: float
+    contact_modulus: float
+    boundary: str
+    tolerance: float
+    cohesive_zone: float
+    parameters: dict = field(default_factory=dict)
+
+    UNITS: ClassVar[dict[str, str]] = {
+        "pull_off_force": "N",
+        "pull_off_approach": "m",
+        "max_force": "N",
+        "max_approach": "m",
+        "jump_in_approach": "m",
+        "jump_out_approach": "m",
+        "dissipated_energy": "J",
+        "max_contact_area": "m^2",
+        "contact_area_at_pull_off": "m^2",
+        "interaction_area_at_pull_off": "m^2",
+        "work_of_adhesion": "J/m^2",
+        "interaction_length": "m",
+        "peak_tension": "Pa",
+        "cohesive_zone_length": "m",
+    }
+
+    @classmethod
+    def from_states(cls, *, topography, interaction, states, pixel_area, **common) -> AdhesiveResult:
+        """Build the result from the engine's states (see :mod:`roughcontact.contact.adhesive`)."""
+        law = interaction
+        touching = (lambda s: s.gap <= 0.0) if law.hard_wall else (lambda s: s.gap < 0.0)
+        threshold = -INTERACTION_FRACTION * law.peak_tension
+        force = np.array([s.pressure.sum() * pixel_area for s in states])
+        delta = np.array([s.delta for s in states])
+        steps = {
+            "peak": int(np.argmax(delta)),
+            "pull_off": int(np.argmin(force)),
+            "end": len(states) - 1,
+        }
+        shape = topography.shape
+        return cls(
+            topography=topography,
+            interaction=law,
+            delta=delta,
+            approach=np.array([s.approach for s in states]),
+            force=force,
+            contact_area=np.array([touching(s).sum() * pixel_area for s in states]),
+            interaction_area=np.array(
+                [(~touching(s) & (law.traction(s.gap) <= threshold)).sum() * pixel_area for s in states]
+            ),
+            iterations=np.array([s.iterations for s in states]),
+            residual=np.array([s.residual for s in states]),
+            maps={
+                name: (states[i].pressure.reshape(shape).copy(), states[i].gap.reshape(shape).copy())
+                for name, i in steps.items()
+            },
+            map_steps=steps,
+            pixel_area=pixel_area,
+            **common,
+        )
+
+    @property
+    def converged(self) -> bool:
+        """True: every step met the tolerance (an unconverged step raises instead)."""
+        return bool(np.all(self.residual <= self.tolerance))
+
+    @property
+    def pull_off_force(self) -> float:
+        """Most tensile force [N], positive (parabola through the smallest force and its neighbours)."""
+        return -self._pull_off()[1]
+
+    def _pull_off(self) -> tuple[float, float]:
+        i = int(np.argmin(self.force))
+        approach, force = float(self.approach[i]), float(self.force[i])
+        if 0 < i < len(self.force) - 1 and not (self.jump[i] or self.jump[i + 1]):
+            x, y = self.approach[i - 1 : i + 2], self.force[i - 1 : i + 2]
+            if np.all(np.diff(x) != 0) and abs(x[2] - x[0]) > 0:
+                a, b, c = np.polyfit(x - x[1], y, 2)
+                if a > 0:
+                    vertex = -b / (2 * a)
+                    if min(x - x[1]) <= vertex <= max(x - x[1]):
+                        return float(x[1] + vertex), float(c - b * b / (4 * a))
+        return approach, force
+
+    def _jump_approach(self, loading: bool) -> float:
+        rising = np.diff(self.delta) > 0
+        marks = [i for i in np.flatnonzero(self.jump) if i > 0 and rising[i - 1] == loading]
+        if not marks:
+            return float("nan")
+        i = marks[0] if loading else marks[-1]
+        return float(0.5 * (self.approach[i - 1] + self.approach[i]))
+
+    @property
+    def dissipated_energy(self) -> float:
+        """Work done by the flat along the programme [J]: -sum F d(approach) (trapezoid rule)."""
+        return float(-np.sum(0.5 * (self.force[1:] + self.force[:-1]) * np.diff(self.approach)))
+
+    def range_warnings(self) -> list[str]:
+        """Why the answer may depend on the grid: a cohesive zone narrower than two pixels."""
+        spacing = float(np.sqrt(self.pixel_area)) if self.topography.dim == 2 else self.pixel_area
+        pixels = self.cohesive_zone / spacing
+        if pixels >= RESOLVED_ZONE_PIXELS:
+            return []
+        return [
+            f"the cohesive zone (pi/4) E* w / sigma0^2 = {self.cohesive_zone:.3g} m spans {pixels:.2g} "
+            f"pixels of {spacing:.3g} m; below {RESOLVED_ZONE_PIXELS:g} the pull-off and the jumps "
+            f"depend on the grid: use a pixel of at most {self.cohesive_zone / RESOLVED_ZONE_PIXELS:.3g} m "
+            "or a longer interaction length."
+        ]
+
+    def scalars(self) -> dict[str, Any]:
+        """Return the headline numbers (SI), see ``UNITS``."""
+        law = self.interaction
+        pull_off_approach, pull_off = self._pull_off()
+        i = self.map_steps["pull_off"]
+        spacing = float(np.sqrt(self.pixel_area)) if self.topography.dim == 2 else self.pixel_area
+        return {
+            "law": law.name,
+            "work_of_adhesion": law.work_of_adhesion,
+            "interaction_length": law.length,
+            "peak_tension": law.peak_tension,
+            "pull_off_force": -pull_off,
+            "pull_off_approach": pull_off_approach,
+            "max_force": float(self.force.max()),
+            "max_approach": float(self.approach.max()),
+            "jump_in_approach": self._jump_approach(True),
+            "jump_out_approach": self._jump_approach(False),
+            "jumps": int(self.jump.sum()),
+            "dissipated_energy": self.dissipated_energy,
+            "max_contact_area": float(self.contact_area.max()),
+            "contact_area_at_pull_off": float(self.contact_area[i]),
+            "interaction_area_at_pull_off": float(self.interaction_area[i]),
+            "cohesive_zone_length": self.cohesive_zone,
+            "cohesive_zone_pixels": self.cohesive_zone / spacing,
+            "boundary": self.boundary,
+            "steps": int(self.force.size),
+            "inserted_steps": int((~self.requested).sum()),
+            "iterations": int(self.iterations.sum()),
+            "residual": float(self.residual.max()),
+            "converged": self.converged,
+        }
+
+    def to_xarray(self):
+        """Return the force-approach curve per step and the pressure and gap maps of :data:`MAP_STATES`."""
+        import xarray as xr
+
+        data = {
+            "delta": ("step", self.delta, {"units": "m", "long_name": "imposed position of the flat"}),
+            "approach": ("step", self.approach, {"units": "m"}),
+            "force": ("step", self.force, {"units": "N"}),
+            "contact_area": ("step", self.contact_area, {"units": "m^2"}),
+            "interaction_area": ("step", self.interaction_area, {"units": "m^2"}),
+            "requested": ("step", self.requested),
+            "jump": ("step", self.jump),
+            "iterations": ("step", self.iterations),
+            "residual": ("step", self.residual),
+        }
+        axes = ("x", "y")[: self.topography.dim]
+        dims = ("state", *axes)
+        coords = {a: (a, c, {"units": "m"}) for a, c in zip(axes, self.topography.coordinates(), strict=True)}
+        data["pressure"] = (dims, np.stack([self.maps[s][0] for s in MAP_STATES]), {"units": "Pa"})
+        data["gap"] = (dims, np.stack([self.maps[s][1] for s in MAP_STATES]), {"units": "m"})
+        data["state_step"] = ("state", np.array([self.map_steps[s] for s in MAP_STATES]))
+        coords["state"] = ("state", list(MAP_STATES))
+        return xr.Dataset(data, coords=coords, attrs={"law": self.interaction.describe()})
