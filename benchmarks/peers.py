@@ -498,3 +498,252 @@ def tamaas_elastic_plastic(
         out["seconds"].append(seconds)
     out["total"] = float(np.sum(out["seconds"]))
     return out
+
+
+# --------------------------------------------------------------------------------------------------------
+# adhesive contact: hard wall plus an exponential attraction, under approach control (see ADHESIVE below)
+
+ADHESIVE = """Adhesive adapters: ``{peer}_adhesive(heights, size, contact_modulus, work_of_adhesion, length,
+approaches, tolerance, *, until_detached=True)``.
+
+The problem (the same for every peer): a rigid surface ``heights`` (m, towards the body, periodic grid)
+against an elastic half-space (Johnson's E* = ``contact_modulus``), a hard wall ``g >= 0`` and an
+exponential attraction of energy per area ``phi(g) = -w exp(-g / rho)`` (``w = work_of_adhesion`` J/m^2,
+``rho = length`` m; tension ``(w / rho) exp(-g / rho)``, ``w / rho`` at contact). Approach control:
+``g = h0 - delta + u >= 0`` with ``h0 = max(h) - h``, ``u`` the elastic displacement (into the body, zero
+mean over the periodic cell), ``delta`` = ``approaches[k]`` at step k (m, from first touch), each step
+started from the previous state (the first from ``u = 0``), so the branch is followed through loading and
+unloading. Returned dict: ``approach`` (m, the approaches solved), ``force`` (N per step, total over the
+cell, compressive positive: the mean elastic pressure times the cell area), ``contact_fraction`` (points
+at the wall), ``pull_off_force`` (N, ``-min(force)``: the most tensile force of the steps, no refinement),
+``seconds`` (solve calls only), ``iterations`` (total), ``step_iterations``, ``converged`` (every step by
+the peer's own verdict), ``step_converged``, ``detached`` and ``steps``. ``until_detached``: the programme
+stops after the first step of a decreasing stroke that ends with no point at the wall once contact has
+been made (the rest of the programme is out of contact); ``steps`` says how many were solved.
+
+tamaas 2.9.0: ``PolonskyKeerRey(model, h, tolerance, gap, gap)`` (primal and constraint: the gap; hard
+wall g >= 0; controlled by the MEAN GAP, ``solve(mean(h0) - delta)``: with the zero-mean periodic kernel
+that is exactly approach control) plus ``ExponentialAdhesionFunctional`` added with ``addFunctionalTerm``,
+``parameters = {"rho": rho, "surface_energy": w}``. Checked on the installed build: its functional is
+``-w sum_i exp(-g_i / rho)`` and its gradient ``(w / rho) exp(-g_i / rho)`` per point (``w`` is the
+energy per area at contact, the same w as ours, not 2 gamma), on the same per-point scale as the elastic
+functional; ``model.traction`` is then the elastic pressure, equal to ``-(w / rho) exp(-g / rho)`` off
+contact to 1e-12. The state (``model["gap"]``, the primal) is kept between solves; tamaas rescales it to
+the new mean gap on entry. The first state is set here to the undeformed gap ``max(h0 - delta_0, 0)``:
+left alone, tamaas starts from a uniform gap, i.e. a body already moulded on the surface, which sticks at
+any approach. Error: tamaas' own, ``<= tolerance`` (the normal adapters' measure). Out of contact (no
+point at the wall) that error is undefined (it divides by a vanishing sum) and the solve runs to
+``max_iter``: such a step is reported as not converged by tamaas' verdict, though its force is right
+(it matches contactmechanics), hence ``until_detached``. Free boundary: not with adhesion here (the
+adhesion functional and the gap formulation go through the periodic Westergaard operator).
+
+ContactMechanics 1.8.3 + Adhesion 0.93: ``Adhesion.System.BoundedSmoothContactSystem`` (hard wall as the
+L-BFGS-B lower bound ``u >= h + offset``, i.e. ``g >= 0``; ``_lbounds_from_heights``) on a
+``PeriodicFFTElasticHalfSpace`` with ``Adhesion.Interactions.Exponential(gamma0=w, rho)``, whose energy is
+``V(g) = -gamma0 exp(-g / rho)`` (source: ``V(0) = -gamma0``, so ``gamma0`` IS the work of adhesion w,
+not w / 2; its quadratic continuation for g < 0 is never used behind the wall). Minimiser: scipy
+``L-BFGS-B`` on the displacements (as Adhesion's examples: ``maxcor=3``, ``ftol=0``), ``gtol = tolerance *
+(w / rho) * pixel area`` (the largest force imbalance of a pixel relative to the peak tension, ours'
+measure). Variable: the displacement, control: the rigid ``offset`` (``gap = u - h - offset``, ``delta =
+max(h) + offset - mean(u)``). The mean mode of ``u`` has the stiffness ``stiffness_q0``: 0 would let the
+body float (zero total force), and a large one stalls L-BFGS-B (x100 the top stiffness: 5x the
+iterations, x1e4: 17x); so it is set to the top mode's stiffness ``pi E* q_max`` and the offset is
+corrected for the small mean displacement it leaves (predicted from the previous steps, re-solved when
+the approach solved misses the programme by more than ``1e-4 rho``), so the zero-mean convention above
+holds. Iterations: L-BFGS-B's ``nit`` (``nfev``, one FFT pair each, also returned). Converged:
+``result.success``. Free boundary: ``FreeFFTElasticHalfSpace`` works with these systems in Adhesion, but it
+is not used here (the benchmark is periodic)."""
+
+
+def adhesive_solvers(names: Sequence[str] | None = None) -> dict[str, Callable[..., dict]]:
+    """Return {label: solve} of the adhesive peers that import (contactmechanics needs Adhesion too)."""
+    found = {}
+    for name in available_peers():
+        if (names is not None and name not in names) or f"{name}_adhesive" not in globals():
+            continue
+        if name == "contactmechanics":
+            try:
+                importlib.import_module("Adhesion")
+            except Exception:  # ContactMechanics without Adhesion: no adhesive peer
+                continue
+        found[name] = globals()[f"{name}_adhesive"]
+    return found
+
+
+def _adhesive_inputs(heights, size, contact_modulus, work_of_adhesion, length, approaches, tolerance):
+    h, lx, ly = _check(heights, size, contact_modulus, 1.0, tolerance)
+    for value, what in ((work_of_adhesion, "work_of_adhesion"), (length, "length")):
+        if not (np.isfinite(value) and value > 0):
+            raise ValueError(f"{what} must be positive and finite, got {value}")
+    programme = np.asarray(approaches, dtype=np.float64).ravel()
+    if programme.size == 0 or not np.all(np.isfinite(programme)):
+        raise ValueError("approaches must be a non-empty sequence of finite approaches (m)")
+    return h, lx, ly, programme
+
+
+def _detached(programme: np.ndarray, k: int, touching: bool, touched: bool) -> bool:
+    """True once a decreasing stroke has left contact (after contact was made)."""
+    return touched and not touching and k > 0 and programme[k] < programme[k - 1]
+
+
+def _adhesive_result(approach, force, contact, seconds, iterations, converged, detached, **extra) -> dict:
+    force = np.array(force, dtype=np.float64)
+    return {
+        "approach": np.array(approach, dtype=np.float64),
+        "force": force,
+        "contact_fraction": np.array(contact, dtype=np.float64),
+        "pull_off_force": float(max(-force.min(), 0.0)),
+        "seconds": float(seconds),
+        "iterations": int(sum(i for i in iterations if i is not None)),
+        "step_iterations": list(iterations),
+        "converged": bool(all(converged)),
+        "step_converged": list(converged),
+        "detached": bool(detached),
+        "steps": len(force),
+        **extra,
+    }
+
+
+def tamaas_adhesive(
+    heights: np.ndarray,
+    size: Sequence[float],
+    contact_modulus: float,
+    work_of_adhesion: float,
+    length: float,
+    approaches: Sequence[float],
+    tolerance: float,
+    *,
+    until_detached: bool = True,
+) -> dict:
+    """Periodic adhesive contact with tamaas: ``PolonskyKeerRey`` (gap) + ``ExponentialAdhesionFunctional``.
+
+    See :data:`ADHESIVE` for the problem, the conventions and what is returned.
+    """
+    h, lx, ly, programme = _adhesive_inputs(
+        heights, size, contact_modulus, work_of_adhesion, length, approaches, tolerance
+    )
+    tm = importlib.import_module("tamaas")
+    model = _tamaas_model(tm, h, lx, ly, contact_modulus)
+    solver = tm.PolonskyKeerRey(model, h, float(tolerance), tm.PolonskyKeerRey.gap, tm.PolonskyKeerRey.gap)
+    solver.max_iter = _MAX_ITER
+    adhesion = tm.ExponentialAdhesionFunctional(h)
+    adhesion.parameters = {"rho": float(length), "surface_energy": float(work_of_adhesion)}
+    solver.addFunctionalTerm(adhesion)
+    h0 = h.max() - h
+    model["gap"][...] = np.maximum(h0 - programme[0], 0.0)  # start undeformed (u = 0), see ADHESIVE
+    pixel_area = lx * ly / h.size
+    approach, force, contact, iterations, converged = [], [], [], [], []
+    seconds, touched, detached = 0.0, False, False
+    for k, delta in enumerate(programme):
+        error, step_seconds, step_iterations = _tamaas_solve(tm, solver, float(h0.mean() - delta))
+        seconds += step_seconds
+        gap = np.asarray(model["gap"])
+        touching = bool(np.any(gap <= 0.0))
+        approach.append(float(delta))
+        force.append(float(np.sum(model.traction)) * pixel_area)
+        contact.append(float(np.mean(gap <= 0.0)))
+        iterations.append(step_iterations)
+        converged.append(bool(error <= tolerance))
+        if until_detached and _detached(programme, k, touching, touched):
+            detached = True
+            break
+        touched = touched or touching
+    return _adhesive_result(approach, force, contact, seconds, iterations, converged, detached)
+
+
+def contactmechanics_adhesive(
+    heights: np.ndarray,
+    size: Sequence[float],
+    contact_modulus: float,
+    work_of_adhesion: float,
+    length: float,
+    approaches: Sequence[float],
+    tolerance: float,
+    *,
+    until_detached: bool = True,
+    approach_tolerance: float | None = None,
+) -> dict:
+    """Periodic adhesive contact with Adhesion's ``BoundedSmoothContactSystem`` (L-BFGS-B, hard wall bound).
+
+    ``approach_tolerance`` (m, default ``1e-4 * length``): how closely the approach solved must match the
+    programme (the mean-mode correction, see :data:`ADHESIVE`). Also returns ``function_evaluations``
+    and ``corrections`` (extra solves for the mean mode).
+    """
+    h, lx, ly, programme = _adhesive_inputs(
+        heights, size, contact_modulus, work_of_adhesion, length, approaches, tolerance
+    )
+    cm = importlib.import_module("ContactMechanics")
+    optimize = importlib.import_module("scipy.optimize")
+    topography_module = importlib.import_module("SurfaceTopography")
+    interactions = importlib.import_module("Adhesion.Interactions")
+    systems = importlib.import_module("Adhesion.System")
+    nx, ny = h.shape
+    q_max = np.hypot(nx / 2 / lx, ny / 2 / ly)  # cycles per metre, as ContactMechanics' kernel
+    substrate = cm.PeriodicFFTElasticHalfSpace(
+        h.shape, float(contact_modulus), physical_sizes=(lx, ly), stiffness_q0=np.pi * contact_modulus * q_max
+    )
+    topography = topography_module.Topography(h, (lx, ly), periodic=True)
+    interaction = interactions.Exponential(float(work_of_adhesion), float(length))
+    system = systems.BoundedSmoothContactSystem(substrate, interaction, topography)
+    pixel_area = lx * ly / h.size
+    options = {
+        "gtol": float(tolerance) * work_of_adhesion / length * pixel_area,
+        "ftol": 0.0,
+        "maxcor": 3,
+        "maxiter": _MAX_ITER,
+        "maxfun": 2 * _MAX_ITER,
+    }
+    if approach_tolerance is None:
+        approach_tolerance = 1e-4 * length
+    top = float(h.max())
+    u = np.zeros(h.shape)
+    means: list[float] = []  # mean(u) of the steps solved
+    approach, force, contact, iterations, evaluations, converged = [], [], [], [], [], []
+    seconds, corrections, touched, detached = 0.0, 0, False, False
+    for k, delta in enumerate(programme):
+        mean = 2 * means[-1] - means[-2] if len(means) > 1 else (means[-1] if means else 0.0)  # predicted
+        step_iterations = step_evaluations = 0
+        for attempt in range(6):
+            offset = float(delta) - top + mean
+            start = time.perf_counter()
+            result = optimize.minimize(
+                system.objective(offset, gradient=True),
+                u.ravel(),
+                method="L-BFGS-B",
+                jac=True,
+                bounds=system._reshape_bounds(system._lbounds_from_heights(offset)),
+                options=options,
+            )
+            seconds += time.perf_counter() - start
+            step_iterations += int(result.nit)
+            step_evaluations += int(result.nfev)
+            u = result.x.reshape(h.shape)
+            solved = top + offset - float(u.mean())
+            if abs(solved - delta) <= approach_tolerance or attempt == 5:
+                break
+            corrections += 1
+            mean = float(u.mean())
+        system._update_state(offset, result)
+        means.append(float(u.mean()))
+        touching = bool(np.any(system.gap <= 0.0))
+        approach.append(solved)
+        force.append(float(system.compute_normal_force()))
+        contact.append(float(np.mean(system.gap <= 0.0)))
+        iterations.append(step_iterations)
+        evaluations.append(step_evaluations)
+        converged.append(bool(result.success))
+        if until_detached and _detached(programme, k, touching, touched):
+            detached = True
+            break
+        touched = touched or touching
+    return _adhesive_result(
+        approach,
+        force,
+        contact,
+        seconds,
+        iterations,
+        converged,
+        detached,
+        function_evaluations=int(sum(evaluations)),
+        corrections=corrections,
+    )
