@@ -534,8 +534,9 @@ left alone, tamaas starts from a uniform gap, i.e. a body already moulded on the
 any approach. Error: tamaas' own, ``<= tolerance`` (the normal adapters' measure). Out of contact (no
 point at the wall) that error is undefined (it divides by a vanishing sum) and the solve runs to
 ``max_iter``: such a step is reported as not converged by tamaas' verdict, though its force is right
-(it matches contactmechanics), hence ``until_detached``. Free boundary: not with adhesion here (the
-adhesion functional and the gap formulation go through the periodic Westergaard operator).
+(it matches contactmechanics), hence ``until_detached``. Free boundary: not tried with adhesion
+(``registerNonPeriodic`` + ``setIntegralOperator`` serve the normal adapters; whether the gap formulation
+and the adhesion functional honour them is unchecked), so the benchmark is periodic.
 
 ContactMechanics 1.8.3 + Adhesion 0.93: ``Adhesion.System.BoundedSmoothContactSystem`` (hard wall as the
 L-BFGS-B lower bound ``u >= h + offset``, i.e. ``g >= 0``; ``_lbounds_from_heights``) on a
@@ -551,8 +552,8 @@ iterations, x1e4: 17x); so it is set to the top mode's stiffness ``pi E* q_max``
 corrected for the small mean displacement it leaves (predicted from the previous steps, re-solved when
 the approach solved misses the programme by more than ``1e-4 rho``), so the zero-mean convention above
 holds. Iterations: L-BFGS-B's ``nit`` (``nfev``, one FFT pair each, also returned). Converged:
-``result.success``. Free boundary: ``FreeFFTElasticHalfSpace`` works with these systems in Adhesion, but it
-is not used here (the benchmark is periodic)."""
+``result.success``. Free boundary: Adhesion's own examples pair ``FreeFFTElasticHalfSpace`` with these systems;
+not tried here (the benchmark is periodic)."""
 
 
 def adhesive_solvers(names: Sequence[str] | None = None) -> dict[str, Callable[..., dict]]:
