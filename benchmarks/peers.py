@@ -552,8 +552,8 @@ iterations, x1e4: 17x); so it is set to the top mode's stiffness ``pi E* q_max``
 corrected for the small mean displacement it leaves (predicted from the previous steps, re-solved when
 the approach solved misses the programme by more than ``1e-4 rho``), so the zero-mean convention above
 holds. Iterations: L-BFGS-B's ``nit`` (``nfev``, one FFT pair each, also returned). Converged:
-``result.success``. Free boundary: Adhesion's own examples pair ``FreeFFTElasticHalfSpace`` with these systems;
-not tried here (the benchmark is periodic)."""
+``result.success``. Free boundary: Adhesion's own examples pair ``FreeFFTElasticHalfSpace`` with these
+systems; not tried here (the benchmark is periodic)."""
 
 
 def adhesive_solvers(names: Sequence[str] | None = None) -> dict[str, Callable[..., dict]]:
