@@ -39,7 +39,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 from scipy import optimize
@@ -158,7 +158,8 @@ class WinklerLJResult:
         The adhesive springs within the adhesive range (``readings.adhesive_range``): only they add
         adhesive friction (eq. 15); the other adhesive springs have Q = 0.
     gap : ndarray
-        Undeformed gap l_i = d - z_i [m].
+        Undeformed gap l_i = d - z_i [m]; with ``gap_model="bem"`` the boundary-element solution's
+        (deformed) distance l = g + epsilon, which is then also the bond distance l_ia.
     stress : ndarray
         Normal stress on each spring [Pa]: compression (> 0) of mechanical springs, minus the
         attraction of eq. 7 on adhesive ones, 0 elsewhere.
@@ -191,6 +192,11 @@ class WinklerLJResult:
         spring_area, readings.
     topography : Topography
         The composite surface.
+    gap_model : {"winkler", "bem"}
+        The gap field the friction sums used: the Winkler springs' (paper 000) or the adhesive
+        boundary-element solution's at the same load (see :meth:`WinklerLJModel.solve`).
+    bem : AdhesiveResult or None
+        With ``gap_model="bem"``: the boundary-element programme whose last state carries the load.
     """
 
     normal_force: float
@@ -215,6 +221,8 @@ class WinklerLJResult:
     pulled_in_springs: int
     parameters: dict = field(repr=False)
     topography: Topography = field(repr=False)
+    gap_model: str = "winkler"
+    bem: Any = field(default=None, repr=False)
 
     UNITS: ClassVar[dict[str, str]] = {
         "normal_force": "N",
@@ -225,11 +233,26 @@ class WinklerLJResult:
         "approach": "m",
         "mechanical_force": "N",
         "adhesive_force": "N",
+        "bem_force": "N",
     }
     """SI units of the dimensional entries of :meth:`scalars`."""
 
     def scalars(self) -> dict[str, float]:
-        """Return the scalar results as a flat dictionary (SI; units in :attr:`UNITS`)."""
+        """Return the scalar results as a flat dictionary (SI; units in :attr:`UNITS`).
+
+        With ``gap_model="bem"`` also ``gap_model`` (the gap field the friction sums used; the
+        attribute names it in either case), ``bem_force`` (the boundary-element solution's normal
+        force, equal to ``normal_force`` within :data:`BEM_LOAD_RTOL`) and ``bem_load_error``
+        (|bem_force - N| / N).
+        """
+        extra = {}
+        if self.bem is not None:
+            force = float(self.bem.force[-1])
+            extra = {
+                "gap_model": self.gap_model,
+                "bem_force": force,
+                "bem_load_error": abs(force - self.normal_force) / self.normal_force,
+            }
         return {
             "normal_force": self.normal_force,
             "mu": self.mu,
@@ -247,7 +270,7 @@ class WinklerLJResult:
             "max_strain": self.max_strain,
             "negative_energy_springs": self.negative_energy_springs,
             "pulled_in_springs": self.pulled_in_springs,
-        }
+        } | extra
 
     def to_xarray(self):
         """Return an ``xarray.Dataset``: spring fields on (x, y), scalars and parameters as attributes."""
@@ -265,7 +288,7 @@ class WinklerLJResult:
             "bonded": (self.bonded.astype(np.int8), ""),
         }
         data = {name: (("x", "y"), values, {"units": unit}) for name, (values, unit) in fields_.items()}
-        attributes = dict(self.scalars())
+        attributes = dict(self.scalars()) | {"gap_model": self.gap_model}
         attributes.update({k: v for k, v in self.parameters.items() if k != "readings"})
         attributes.update({f"reading_{k}": str(v) for k, v in vars(self.parameters["readings"]).items()})
         coords = {axis: (axis, values, {"units": "m"}) for axis, values in grid.items()}
@@ -304,6 +327,194 @@ class FrictionSweep:
         return xr.Dataset(data, coords={"normal_force": ("normal_force", self.normal_force, {"units": "N"})})
 
 
+GAP_MODELS = ("winkler", "bem")
+"""Gap fields the friction sums (eqs. 8-17) can use: the Winkler springs' (paper 000) or the BEM's."""
+
+BEM_LOAD_RTOL = 1e-6
+"""Relative tolerance on the normal force of the boundary-element state found for a load."""
+
+
+@dataclass(frozen=True, eq=False)
+class WinklerNormalCurve:
+    """Normal force of the Winkler-Lennard-Jones model against the flat's approach (SI, per approach).
+
+    The approach is counted as :func:`roughcontact.contact.solve_adhesive` counts it: from the first
+    touch of the undeformed composite surface (the highest spring at l = epsilon), i.e. minus the
+    change of the separation d from its value there. The springs have no hysteresis: eq. 2 takes
+    the attraction of eq. 7 at each spring's undeformed gap and the compression of the mechanical
+    springs, so each spring feels only its own load, the force is one function of the approach,
+    loading and unloading follow the same curve, and nothing jumps.
+
+    Attributes
+    ----------
+    approach : ndarray
+        The flat's approach [m] (negative: apart).
+    force : ndarray
+        Net normal force of eq. 2, sum P S - sum f S [N] (compressive positive).
+    contact_area : ndarray
+        Area of the springs in mechanical contact [m^2].
+    interaction_area : ndarray
+        Area of the adhesive springs whose attraction is at least
+        :data:`~roughcontact.contact.interaction.INTERACTION_FRACTION` of the peak of eq. 7 [m^2]
+        (the criterion of :class:`~roughcontact.contact.AdhesiveResult`).
+    pull_off_force, pull_off_approach : float
+        Most tensile force [N] (positive) and the approach where it acts [m], from
+        :meth:`WinklerLJModel.pull_off_force`'s search.
+    parameters : dict
+        The model's constants (:meth:`WinklerLJModel.parameters`).
+    """
+
+    approach: np.ndarray
+    force: np.ndarray
+    contact_area: np.ndarray
+    interaction_area: np.ndarray
+    pull_off_force: float
+    pull_off_approach: float
+    parameters: dict = field(repr=False)
+
+    UNITS: ClassVar[dict[str, str]] = {
+        "pull_off_force": "N",
+        "pull_off_approach": "m",
+        "max_force": "N",
+        "max_approach": "m",
+        "max_contact_area": "m^2",
+        "work_of_adhesion": "J/m^2",
+        "epsilon": "m",
+    }
+
+    def scalars(self) -> dict[str, Any]:
+        """Return the headline numbers (SI), see ``UNITS``."""
+        return {
+            "pull_off_force": self.pull_off_force,
+            "pull_off_approach": self.pull_off_approach,
+            "max_force": float(self.force.max()),
+            "max_approach": float(self.approach.max()),
+            "max_contact_area": float(self.contact_area.max()),
+            "work_of_adhesion": self.parameters["work_of_adhesion"],
+            "epsilon": self.parameters["epsilon"],
+        }
+
+    def to_xarray(self):
+        """Return the force, contact and interaction areas against the approach (dimension ``step``)."""
+        import xarray as xr
+
+        data = {
+            "approach": ("step", self.approach, {"units": "m"}),
+            "force": ("step", self.force, {"units": "N"}),
+            "contact_area": ("step", self.contact_area, {"units": "m^2"}),
+            "interaction_area": ("step", self.interaction_area, {"units": "m^2"}),
+        }
+        return xr.Dataset(data, attrs=self.scalars())
+
+
+def bem_state_at_load(
+    topography: Topography,
+    contact_modulus: float,
+    law,
+    normal_force: float,
+    *,
+    boundary: str = "free",
+    load_rtol: float = BEM_LOAD_RTOL,
+    tolerance: float = 1e-6,
+):
+    """Return the adhesive boundary-element state on the loading branch that carries ``normal_force``.
+
+    :func:`~roughcontact.contact.solve_adhesive` loads the surface from apart (approach -2 eps) in
+    steps of eps / 2 until the force passes the load (the programme doubles its reach until it
+    does); then Brent's method on the last approach, each evaluation one loading programme from
+    apart through the bracket's lower step to the trial approach (so every state lies on the
+    loading branch, with its jumps bracketed by the solver), stops when |F - N| <= ``load_rtol`` N.
+
+    Parameters
+    ----------
+    topography : Topography
+        The (composite) surface [m].
+    contact_modulus : float
+        E* [Pa].
+    law : interaction law
+        E.g. ``LennardJones(dgamma, eps)`` (:mod:`roughcontact.contact.interaction`).
+    normal_force : float
+        Compressive load N [N], > 0.
+    boundary : {"free", "periodic"}
+        Boundary of the boundary-element window (default free: a tip is not periodic).
+    load_rtol : float
+        Relative tolerance on the force.
+    tolerance : float
+        The solver's tolerance (largest force imbalance of a pixel relative to the peak tension).
+
+    Returns
+    -------
+    AdhesiveResult
+        The last programme; its last step (``maps["end"]``: pressure and gap) carries the load.
+
+    Raises
+    ------
+    InputError
+        A load that is not positive, or one the law's bound l >= eps / 2 does not let the surface
+        carry (raised by the solver).
+    """
+    from ..contact.adhesive import solve_adhesive
+
+    load = positive(normal_force, "normal_force", example="10e-6", unit="N")
+    length = law.length
+    start, stride = -2.0 * length, 0.5 * length
+
+    def programme(lower: float, upper: float) -> np.ndarray:
+        steps = np.arange(start, lower + 0.5 * stride, stride)
+        return np.append(steps[steps < upper], upper)
+
+    def run(points: np.ndarray):
+        return solve_adhesive(
+            topography,
+            contact_modulus,
+            law,
+            approach=points,
+            boundary=boundary,
+            tolerance=tolerance,
+            until_detached=False,
+        )
+
+    reach = 2.0 * length
+    for _ in range(40):
+        result = run(programme(reach, reach))
+        above = np.flatnonzero(result.force >= load)
+        if above.size:
+            break
+        reach *= 2.0
+    else:  # pragma: no cover - the law's bound refuses first
+        raise InputError("normal_force", f"{load:.4g} N was not reached.", "lower the load.")
+    first = int(above[0])
+    if abs(result.force[first] - load) <= load_rtol * load:
+        return run(programme(result.delta[first], result.delta[first]))
+    if first == 0:  # pragma: no cover - apart at the start, the force is tensile
+        raise InputError("normal_force", f"{load:.4g} N is carried at the start.", "give a larger load.")
+    low, high = float(result.delta[first - 1]), float(result.delta[first])
+    found = {}
+
+    class _Done(Exception):
+        pass
+
+    def residual(approach: float) -> float:
+        trial = run(programme(low, approach))
+        found["result"] = trial
+        error = float(trial.force[-1]) - load
+        if abs(error) <= load_rtol * load:
+            raise _Done
+        return error
+
+    try:
+        optimize.brentq(residual, low, high, xtol=1e-9 * length, rtol=4 * np.finfo(float).eps, maxiter=100)
+    except _Done:
+        return found["result"]
+    trial = found["result"]
+    raise InputError(
+        "normal_force",
+        f"the boundary-element force {trial.force[-1]:.6g} N misses {load:.6g} N by more than "
+        f"{load_rtol:g} of it at the closest approach (a jump across the load?).",
+        "give another load, or a larger load tolerance.",
+    )
+
+
 @dataclass(frozen=True, eq=False)
 class WinklerLJModel:
     """A prepared surface and its constants; :meth:`solve` gives the friction at a load.
@@ -326,6 +537,8 @@ class WinklerLJModel:
     _compression_at_depth: np.ndarray = field(repr=False)  # j d_j - sum_{i<j} d_i, summed compression at d_j
     _rank: np.ndarray = field(repr=False)  # grid-shaped position of each pixel, sorted (n: not modelled)
     tip_radius: float | None = None  # R of the half-sphere tip (readings.base="half_sphere")
+    gap_model: str = "winkler"  # gap field of the friction sums: "winkler" (eq. 2) or "bem"
+    bem_boundary: str = "free"  # boundary of the boundary-element window (gap_model="bem")
 
     # --- constants --------------------------------------------------------------------------
     @property
@@ -493,6 +706,17 @@ class WinklerLJModel:
     def solve(self, normal_force: float) -> WinklerLJResult:
         """Solve eq. 2 for the separation at ``normal_force`` and return the friction (eqs. 8-17).
 
+        With ``gap_model="bem"`` eq. 2 is replaced by the adhesive boundary-element solution
+        (:func:`bem_state_at_load`: the elastic half-space under the same composite surface, E*
+        and ``LennardJones(dgamma, epsilon)``, the state on the loading branch that carries the
+        load within :data:`BEM_LOAD_RTOL`), and eqs. 8-17 take its fields: pixels in repulsion
+        (g < 0) are the mechanical springs with P_i the BEM pressure; the others within
+        ``readings.adhesive_cutoff`` are adhesive, with the bond distance l_ia = g + epsilon (the
+        gap is already deformed: no eq. 8 extension is subtracted); the cuboid extension is
+        dz_i = -p_i k h / E (eq. 8 for adhesive pixels, the compression for mechanical ones).
+        Eq. 2's own readings (``balance_terms``, ``adhesion_sign``, ``contact``) have no role
+        there; their non-default values are refused by :func:`winkler_lj_model`.
+
         Parameters
         ----------
         normal_force : float
@@ -514,6 +738,8 @@ class WinklerLJModel:
                 f"{load!r} N is not a positive finite load.",
                 "give a compressive load > 0 (mu = F / N); use net_normal_force() for tensile states.",
             )
+        if self.gap_model == "bem":
+            return self._solve_bem(load)
         approach = self._solve_approach(load)
         count, within = self._split(approach)  # sorted order: [0, count) mechanical, [count, within) adhesive
         n, depth = self._depth.size, self._depth
@@ -699,6 +925,10 @@ class WinklerLJModel:
         float
             Pull-off force [N] (> 0 when adhesion can hold the bodies together).
         """
+        return -self._pull_off()[1]
+
+    def _pull_off(self) -> tuple[float, float]:
+        """Apex overlap [m] and net force [N] of the most tensile state (see :meth:`pull_off_force`)."""
         grid = np.linspace(-2.0 * self.epsilon, self.epsilon, 401)
         values = np.array([self.net_normal_force(a) for a in grid])
         best = int(np.argmin(values))
@@ -709,7 +939,135 @@ class WinklerLJModel:
             method="bounded",
             options={"xatol": 1e-6 * step},
         )
-        return -float(min(refined.fun, values[best]))
+        if refined.fun < values[best]:
+            return float(refined.x), float(refined.fun)
+        return float(grid[best]), float(values[best])
+
+    # --- beside the adhesive boundary-element solution ------------------------------------------
+    def _overlap_of(self, approach: float) -> float:
+        """Apex overlap with the contact wall at an approach counted from l = epsilon at the apex."""
+        return approach - self.epsilon + self._wall
+
+    def normal_curve(self, approach: Sequence[float]) -> WinklerNormalCurve:
+        """Return the normal force, contact and interaction areas of eq. 2 over a programme of approaches.
+
+        The approach is that of :func:`roughcontact.contact.solve_adhesive`: from the first touch
+        of the undeformed composite surface (the highest spring at l = epsilon), so both models
+        can be drawn on one axis. The springs have no hysteresis (each feels only its own load),
+        so the order of the programme does not matter.
+
+        Parameters
+        ----------
+        approach : sequence of float
+            Approaches [m] (negative: apart).
+
+        Returns
+        -------
+        WinklerNormalCurve
+        """
+        from ..contact.interaction import INTERACTION_FRACTION
+
+        approach = np.atleast_1d(np.asarray(approach, dtype=float))
+        threshold = INTERACTION_FRACTION * lj.PEAK_STRESS_FACTOR * self.work_of_adhesion / self.epsilon
+        force, contact, interacting = [], [], []
+        for value in approach:
+            overlap = self._overlap_of(float(value))
+            force.append(self.net_normal_force(overlap))
+            mechanical, within = self._split(overlap)
+            gap = self._depth[mechanical:within] + (self._wall - overlap)
+            contact.append(mechanical * self.spring_area)
+            interacting.append(np.count_nonzero(self._attraction(gap) >= threshold) * self.spring_area)
+        overlap, pull = self._pull_off()
+        return WinklerNormalCurve(
+            approach=approach,
+            force=np.array(force),
+            contact_area=np.array(contact),
+            interaction_area=np.array(interacting),
+            pull_off_force=-pull,
+            pull_off_approach=overlap + self.epsilon - self._wall,
+            parameters=self.parameters(),
+        )
+
+    def _solve_bem(self, load: float) -> WinklerLJResult:
+        """Eqs. 8-17 on the gap and pressure of the adhesive BEM at ``load`` (``gap_model="bem"``)."""
+        from ..contact.interaction import LennardJones
+
+        eps, gamma, stiffness = self.epsilon, self.work_of_adhesion, self.spring_stiffness
+        law = LennardJones(gamma, eps)
+        bem = bem_state_at_load(self.topography, self.contact_modulus, law, load, boundary=self.bem_boundary)
+        pressure, bem_gap = (values.ravel() for values in bem.maps["end"])
+        approach = float(bem.approach[-1])
+        distance = bem_gap + eps  # l = g + eps: the deformed distance, the bond distance l_ia
+        rank = self._rank.ravel()
+        n = self._depth.size
+        depth = np.full(rank.size, math.inf)
+        depth[rank < n] = self._depth[rank[rank < n]]
+        base = self.base_depth
+        modelled = (rank < n) & (depth <= (base if self.readings.base == "half_sphere" else math.inf))
+        mechanical = modelled & (bem_gap < 0.0)  # in repulsion, as the BEM counts its contact area
+        adhesive = modelled & ~mechanical & (distance <= self.readings.adhesive_cutoff)
+        separation = base + eps - approach
+        extension = np.where(mechanical | adhesive, -pressure / stiffness, 0.0)  # eq. 8 at the BEM stress
+        if self.readings.cuboid_height == "layer":
+            cuboid = self.layer_thickness + extension
+        else:
+            cuboid = (base - depth) + extension
+        height = cuboid.copy()
+        if self.readings.mechanical_height == "printed_separation":
+            height[mechanical] = separation
+        bonded = adhesive & (distance <= self.adhesive_range)
+        energy = np.zeros(rank.size)
+        energy[bonded] = lj.separation_energy(np.maximum(distance[bonded], eps), gamma, eps)
+        compression = np.maximum(pressure[mechanical], 0.0)
+        signed = lj.separation_energy(lj.repulsive_distance(compression, gamma, eps), gamma, eps)
+        if self.readings.mechanical_energy == "two_stage":
+            energy[mechanical] = 2.0 * gamma - signed
+            negative = 0
+        else:
+            energy[mechanical] = np.maximum(signed, 0.0)
+            negative = int(np.count_nonzero(signed < 0))
+        active = mechanical | bonded
+        if np.any((height[active] <= 0) | (cuboid[active] <= 0)):
+            raise InputError(
+                "readings.cuboid_height",
+                f"the printed height is not positive for some springs at {load:.4g} N.",
+                "use the default reading (the layer height h + dz_i) or a smaller load.",
+            )
+        lateral = np.zeros(rank.size)
+        lateral[active] = self._lateral_force(energy[active], height[active], cuboid[active])
+        stress = np.where(mechanical | adhesive, pressure, 0.0)
+        area = self.spring_area
+        mechanical_force = area * float(compression.sum())
+        adhesive_force = -area * float(pressure[adhesive].sum())
+        mechanical_friction = float(lateral[mechanical].sum())
+        adhesive_friction = float(lateral[adhesive].sum())
+        shape = self.topography.shape
+        return WinklerLJResult(
+            normal_force=load,
+            separation=float(separation),
+            approach=approach,
+            mechanical=mechanical.reshape(shape),
+            adhesive=adhesive.reshape(shape),
+            bonded=bonded.reshape(shape),
+            gap=np.where(modelled, distance, math.inf).reshape(shape),
+            stress=stress.reshape(shape),
+            extension=extension.reshape(shape),
+            lateral_force=lateral.reshape(shape),
+            mechanical_force=mechanical_force,
+            adhesive_force=adhesive_force,
+            adhesive_friction=adhesive_friction,
+            mechanical_friction=mechanical_friction,
+            friction=adhesive_friction + mechanical_friction,
+            mu=(adhesive_friction + mechanical_friction) / load,
+            residual=abs(float(bem.force[-1]) - load) / load,
+            max_strain=float(compression.max(initial=0.0) / stiffness / self.layer_thickness),
+            negative_energy_springs=negative,
+            pulled_in_springs=int(np.count_nonzero(adhesive & (distance <= eps))),
+            parameters=self.parameters(),
+            topography=self.topography,
+            gap_model="bem",
+            bem=bem,
+        )
 
 
 @renamed(counter="counter_body", counter_surface="counter_topography")
@@ -728,6 +1086,8 @@ def winkler_lj_model(
     relaxation: Callable[[float], float] | None = None,
     hold_time: float = 0.0,
     tip_radius: float | None = None,
+    gap_model: str = "winkler",
+    bem_boundary: str = "free",
 ) -> WinklerLJModel:
     """Prepare the Winkler-Lennard-Jones model of a surface (or two merged surfaces) against a flat.
 
@@ -761,6 +1121,13 @@ def winkler_lj_model(
         Radius R of the half-sphere tip [m], used only with ``readings.base="half_sphere"``;
         default the ``radius`` the counter topography was generated with
         (:func:`~roughcontact.topography.generate.sphere_with_roughness`).
+    gap_model : {"winkler", "bem"}
+        The gap field of the friction sums (eqs. 8-17): ``"winkler"`` (default, paper 000): the
+        springs' l_i = d - z_i - dz_i from eq. 2; ``"bem"``: the adhesive boundary-element
+        solution's gap and pressure at the same load (see :meth:`WinklerLJModel.solve`; each
+        solve runs the boundary-element solver, seconds on 64^2).
+    bem_boundary : {"free", "periodic"}
+        Boundary of the boundary-element window with ``gap_model="bem"`` (default free).
 
     Returns
     -------
@@ -771,9 +1138,11 @@ def winkler_lj_model(
     InputError
         A 1D or mismatched topography (without ``resample``), epsilon or layer thickness not
         positive, a missing, zero or negative surface energy, an invalid Poisson's ratio for eq. 4,
-        ``readings.base="half_sphere"`` without a tip radius.
+        ``readings.base="half_sphere"`` without a tip radius, an unknown ``gap_model`` or
+        ``bem_boundary``, ``gap_model="bem"`` with a non-default reading of eq. 2.
     """
     readings = Readings() if readings is None else readings
+    _check_gap_model(gap_model, bem_boundary, readings)
     tip_radius = _tip_radius(tip_radius, counter_topography, readings)
     if not isinstance(topography, Topography) or topography.dim != 2:
         raise InputError("topography", "expected a 2D Topography.", "pass a height map (nx, ny) in metres.")
@@ -832,7 +1201,28 @@ def winkler_lj_model(
         _compression_at_depth=np.arange(depth.size) * depth - cumulative[:-1],
         _rank=rank.reshape(surface.shape),
         tip_radius=tip_radius,
+        gap_model=gap_model,
+        bem_boundary=bem_boundary,
     )
+
+
+def _check_gap_model(gap_model: str, boundary: str, readings: Readings) -> None:
+    if gap_model not in GAP_MODELS:
+        raise InputError("gap_model", f"unknown gap model {gap_model!r}.", f"use one of {list(GAP_MODELS)}.")
+    if boundary not in ("free", "periodic"):
+        raise InputError("bem_boundary", f"unknown boundary {boundary!r}.", "use 'free' or 'periodic'.")
+    if gap_model == "bem":
+        changed = {
+            k: v for k, v in readings.changed().items() if k in ("balance_terms", "adhesion_sign", "contact")
+        }
+        if changed:
+            raise InputError(
+                "gap_model",
+                f"gap_model='bem' replaces eq. 2 by the boundary-element solution, so the readings of "
+                f"eq. 2 {changed} have no meaning there.",
+                "leave balance_terms, adhesion_sign and contact at their defaults, "
+                "or use gap_model='winkler'.",
+            )
 
 
 @renamed(counter="counter_body", load="normal_force")
