@@ -55,6 +55,7 @@ def _model_keys(args: argparse.Namespace) -> dict:
         "reading": (preset, "--reading"),
         "readings": (readings or None, "--reading"),
         **options(args, "tip_radius"),
+        "gap_model": (args.gap_model, "--gap-model"),
     }
 
 
@@ -199,6 +200,12 @@ def _shared_options(parser: argparse.ArgumentParser, *, surface_energy: str | No
         "--tip-radius",
         help="radius of the half-sphere tip (reading base=half_sphere, in the preset paper), e.g. '1 um'; "
         "default: the generated tip's",
+    )
+    parser.add_argument(
+        "--gap-model",
+        choices=("winkler", "bem"),
+        help="gap field of the friction sums: winkler (default, paper 000's springs) or bem (the adhesive "
+        "boundary-element solution at the same load; docs/winkler_lj.md)",
     )
     add_output_options(parser)
 

@@ -38,6 +38,18 @@ topography was generated with. Stated assumptions of the model (paper
 the scan's pixels (S = 20 nm x 20 nm in the paper), epsilon = 2 nm and h = the thickness of the
 measured layer (50 nm), the defaults here.
 
+Gap model (``gap_model``): ``"winkler"`` (default, the paper's): eq. 2 gives the springs'
+separations l_i = d - z_i - dz_i that the friction sums (eqs. 8-17) use; ``"bem"``: the friction
+sums use the gap and pressure of the adhesive boundary-element solution at the same load instead
+(the elastic half-space under the same composite surface, contact modulus E of eq. 1 and
+paper 000's law ``LennardJones(dgamma, epsilon)``, free boundary; its state on the loading branch
+whose force equals ``normal_force`` within 1e-6 of it): pixels in repulsion are the mechanical
+springs with the BEM pressure, the others bond at l = g + epsilon
+(:meth:`~roughcontact.friction.WinklerLJModel.solve`). Eq. 2's readings (``balance_terms``,
+``adhesion_sign``, ``contact``) must keep their defaults there, and ``crossover`` is refused (a
+search over loads of boundary-element solves). The scalar ``gap_model`` says which was used; with
+``"bem"`` also ``bem_force`` and ``bem_load_error``.
+
 Hold time (paper 000, end of section 2: "a time-dependent elastic modulus"): with
 ``relaxed_modulus`` the surface material is a standard linear solid from its Young's modulus E0 to
 ``relaxed_modulus`` with ``relaxation_time`` tau, and E(hold_time) = E_inf + (E0 - E_inf)
@@ -75,7 +87,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import fields
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 from pydantic import Field, field_validator, model_serializer, model_validator
@@ -127,6 +139,8 @@ class FrictionParameters(CaseParameters):
         Standard linear solid of the surface's body [Pa, s] and the hold time before sliding [s].
     crossover : bool
         Also find the load where mechanical friction overtakes adhesive friction.
+    gap_model : str
+        ``"winkler"`` (the springs' gaps of eq. 2) or ``"bem"`` (the adhesive BEM's gap field).
     """
 
     topography: TopographyName
@@ -146,13 +160,16 @@ class FrictionParameters(CaseParameters):
     relaxation_time: Time = 1.0
     hold_time: Time = 0.0
     crossover: bool = False
+    gap_model: Literal["winkler", "bem"] = "winkler"
 
     @model_serializer(mode="wrap")
     def _without_unset_newer_keys(self, handler):
-        """Leave ``reading`` and ``tip_radius`` out at their defaults, so that older case keys stay valid."""
+        """Leave ``reading``, ``tip_radius`` and ``gap_model`` out at their defaults (old keys stay valid)."""
         data = handler(self)
         if data.get("reading") == "default":
             del data["reading"]
+        if data.get("gap_model") == "winkler":
+            del data["gap_model"]
         if data.get("tip_radius", 0.0) is None:
             del data["tip_radius"]
         return data
@@ -199,6 +216,12 @@ class FrictionParameters(CaseParameters):
                 "quantity",
                 "hold_time must be >= 0 and relaxed_modulus > 0",
                 {"fix": "e.g. relaxed_modulus = '80 GPa', hold_time = '30 s'"},
+            )
+        if self.gap_model == "bem" and self.crossover:
+            raise PydanticCustomError(
+                "quantity",
+                "crossover is not searched with gap_model = 'bem' (a boundary-element solve per load)",
+                {"fix": "remove crossover, or use gap_model = 'winkler'", "field": "crossover"},
             )
         if self.hold_time > 0 and self.relaxed_modulus is None:
             raise PydanticCustomError(
@@ -326,6 +349,7 @@ def build_model(parameters: FrictionParameters, inputs):
         readings=readings_of(parameters),
         tip_radius=parameters.tip_radius,
         resample=parameters.resample,
+        gap_model=parameters.gap_model,
         **options,
     )
 
@@ -355,6 +379,7 @@ def run(parameters: FrictionParameters, inputs) -> CaseOutput:
     scalars: dict[str, Any] = dict(result.scalars())
     changed = model.readings.changed()
     scalars["readings"] = ", ".join(f"{k}={v}" for k, v in changed.items()) or "defaults"
+    scalars["gap_model"] = result.gap_model
     mechanical = result.mechanical_friction
     scalars["adhesive_to_mechanical"] = result.adhesive_friction / mechanical if mechanical > 0 else None
     for name in (
@@ -639,6 +664,7 @@ KIND = Kind(
     run=run,
     units=WinklerLJResult.UNITS
     | {
+        "bem_force": "N",
         "crossover_load": "N",
         "load_capacity": "N",
         "contact_modulus": "Pa",
