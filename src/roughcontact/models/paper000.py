@@ -14,13 +14,18 @@ instead of the synthetic ones.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any, ClassVar
 
 import numpy as np
 
 from .._deprecation import renamed
+from ..contact.adhesive import solve_adhesive
+from ..contact.interaction import LennardJones
 from ..experiment.compare import simulate_mu
 from ..friction.readings import Readings
-from ..materials import get_material
+from ..friction.winkler_lj import WinklerNormalCurve, winkler_lj_model
+from ..materials import Material, get_material
 from ..topography import Topography
 from ..topography.generate import self_affine, sphere_with_roughness
 from ..topography.process import scale_to_ra
@@ -151,3 +156,149 @@ def paper000_simulation(
         counter_topography=tip,
         **paper000_model_options(surface_energy=surface_energy, readings=readings),
     )
+
+
+@dataclass(frozen=True, eq=False)
+class WinklerBesideBEM:
+    """Paper 000's Winkler-Lennard-Jones model beside the adhesive BEM on one surface (SI).
+
+    Both are evaluated over the same approach programme, counted from the first touch of the
+    undeformed composite surface: the BEM follows it with its hysteresis and jumps (and continues
+    to detachment), the Winkler springs, which have none, are evaluated at every approach the BEM
+    visited (``winkler.approach`` equals ``bem.approach``).
+
+    Attributes
+    ----------
+    winkler : WinklerNormalCurve
+        Normal force, contact and interaction areas of eq. 2, and its pull-off.
+    bem : AdhesiveResult
+        The boundary-element programme (half-space of contact modulus E of eq. 1, the same
+        composite surface, ``LennardJones(dgamma, epsilon)``).
+    """
+
+    winkler: WinklerNormalCurve
+    bem: Any
+
+    UNITS: ClassVar[dict[str, str]] = {
+        "winkler_pull_off_force": "N",
+        "bem_pull_off_force": "N",
+        "winkler_pull_off_approach": "m",
+        "bem_pull_off_approach": "m",
+        "winkler_max_contact_area": "m^2",
+        "bem_max_contact_area": "m^2",
+        "winkler_max_force": "N",
+        "bem_max_force": "N",
+        "max_approach": "m",
+        "bem_dissipated_energy": "J",
+        "work_of_adhesion": "J/m^2",
+        "epsilon": "m",
+        "contact_modulus": "Pa",
+    }
+
+    def scalars(self) -> dict[str, Any]:
+        """Return both pull-offs and their ratio, the areas and forces at the largest approach (SI)."""
+        bem = self.bem.scalars()
+        peak = int(np.argmax(self.bem.approach))
+        winkler_pull, bem_pull = self.winkler.pull_off_force, bem["pull_off_force"]
+        bem_area, winkler_area = float(self.bem.contact_area[peak]), float(self.winkler.contact_area[peak])
+        return {
+            "winkler_pull_off_force": winkler_pull,
+            "bem_pull_off_force": bem_pull,
+            "pull_off_ratio": winkler_pull / bem_pull if bem_pull > 0 else None,
+            "winkler_pull_off_approach": self.winkler.pull_off_approach,
+            "bem_pull_off_approach": bem["pull_off_approach"],
+            "winkler_max_contact_area": winkler_area,
+            "bem_max_contact_area": bem_area,
+            "contact_area_ratio": winkler_area / bem_area if bem_area > 0 else None,
+            "winkler_max_force": float(self.winkler.force[peak]),
+            "bem_max_force": float(self.bem.force[peak]),
+            "max_approach": float(self.bem.approach[peak]),
+            "bem_dissipated_energy": bem["dissipated_energy"],
+            "bem_jumps": bem["jumps"],
+            "work_of_adhesion": bem["work_of_adhesion"],
+            "epsilon": bem["interaction_length"],
+            "contact_modulus": self.bem.contact_modulus,
+            "converged": self.bem.converged,
+        }
+
+    def to_xarray(self):
+        """Return both curves against the BEM's steps (dimension ``step``) and the BEM's gap maps."""
+        import xarray as xr
+
+        data = {
+            "approach": ("step", self.bem.approach, {"units": "m"}),
+            "bem_force": ("step", self.bem.force, {"units": "N"}),
+            "winkler_force": ("step", self.winkler.force, {"units": "N"}),
+            "bem_contact_area": ("step", self.bem.contact_area, {"units": "m^2"}),
+            "winkler_contact_area": ("step", self.winkler.contact_area, {"units": "m^2"}),
+            "bem_interaction_area": ("step", self.bem.interaction_area, {"units": "m^2"}),
+            "winkler_interaction_area": ("step", self.winkler.interaction_area, {"units": "m^2"}),
+            "bem_jump": ("step", self.bem.jump),
+        }
+        attributes = {k: v for k, v in self.scalars().items() if v is not None}
+        return xr.Dataset(data, attrs=attributes)
+
+
+def winkler_beside_bem(
+    topography: Topography,
+    material: Material,
+    counter_body: Material | None = None,
+    *,
+    approach: Sequence[float],
+    counter_topography: Topography | None = None,
+    layer_thickness: float = 50e-9,
+    epsilon: float = 2e-9,
+    surface_energy: float | None = None,
+    counter_surface_energy: float | None = None,
+    readings: Readings | None = None,
+    resample: bool = False,
+    boundary: str = "free",
+    tolerance: float = 1e-6,
+) -> WinklerBesideBEM:
+    """Run paper 000's Winkler-Lennard-Jones model and the adhesive BEM on one surface and programme.
+
+    The Winkler model is built as the friction model builds it
+    (:func:`~roughcontact.friction.winkler_lj_model`: composite surface, E of eq. 1, dgamma from
+    the surface energies by ``readings.work_of_adhesion``); the BEM solves that composite surface
+    on an elastic half-space of contact modulus E with ``LennardJones(dgamma, epsilon)``, the law
+    of eq. 7 with the gap counted from epsilon (:func:`~roughcontact.contact.solve_adhesive`).
+
+    Parameters
+    ----------
+    topography, material, counter_body, counter_topography, layer_thickness, epsilon,
+    surface_energy, counter_surface_energy, readings, resample :
+        As :func:`~roughcontact.friction.winkler_lj_model` (defaults: paper 000's 50 nm, 2 nm).
+    approach : sequence of float
+        The flat's approach [m] from the first touch, e.g. loading then unloading
+        ``[-4e-9, ..., 4e-9, ..., -4e-9]``; the BEM continues the last stroke to detachment.
+    boundary : {"free", "periodic"}
+        The BEM window's boundary (default free: a tip is not periodic).
+    tolerance : float
+        The BEM's tolerance (force imbalance of a pixel relative to the peak tension).
+
+    Returns
+    -------
+    WinklerBesideBEM
+    """
+    model = winkler_lj_model(
+        topography,
+        material,
+        counter_body,
+        layer_thickness=layer_thickness,
+        counter_topography=counter_topography,
+        epsilon=epsilon,
+        surface_energy=surface_energy,
+        counter_surface_energy=counter_surface_energy,
+        readings=readings,
+        resample=resample,
+    )
+    law = LennardJones(model.work_of_adhesion, model.epsilon)
+    bem = solve_adhesive(
+        model.topography,
+        model.contact_modulus,
+        law,
+        approach=approach,
+        boundary=boundary,
+        tolerance=tolerance,
+    )
+    return WinklerBesideBEM(winkler=model.normal_curve(bem.approach), bem=bem)
