@@ -11,9 +11,21 @@ interaction. The total energy per pixel area A
 
 with S the surface stiffness (the inverse of the compliance kernel, applied by FFT), phi the
 interaction law (:mod:`roughcontact.contact.interaction`) and h0 the undeformed separation
-(0 at the highest point), is minimised from the previous state by L-BFGS-B (Byrd et al. 1995;
-``scipy.optimize.minimize``) with the hard wall g >= 0 as bounds. Its gradient
-A (S u - p(g)) is the difference of the elastic and the interaction pressures, so a stationary
+(0 at the highest point), is minimised from the previous state under the bounds g >= 0 (the
+hard wall; g >= -eps/2 for the Lennard-Jones law) by a projected nonlinear conjugate gradient:
+
+1. gradient G = S u - p(g) (elastic minus interaction pressure; in the padding of a free window
+   S u alone); points at the bound whose G pushes further into it are held (the active set);
+2. preconditioned direction Z = K G on the free points, K the compliance (the inverse of S, one
+   FFT pair): the exact inverse of the elastic Hessian, so the conditioning left is that of the
+   interaction and of the active set (a few tens of iterations per step, independent of the grid
+   in our measurements); Polak-Ribiere+ conjugation, restarted when the active set changes;
+3. step: the minimiser of the elastic quadratic along the direction, at most :data:`MAX_MOVE`
+   interaction lengths at any pixel of the window (so that the state settles in the nearest
+   minimum instead of crossing a barrier), projected on the bounds, halved until the energy falls
+   by the Armijo condition.
+
+Its gradient is the difference of the elastic and the interaction pressures, so a stationary
 point is the equilibrium p_elastic = p(g) off the wall and p_elastic >= p(0) on it; in the padding
 of a free window p_elastic = 0 at the solution, which is the free boundary: the circulant
 embedding of Love's kernel on the padded grid is positive, so its inverse is the stiffness of the
@@ -28,15 +40,15 @@ convention (:func:`roughcontact.contact.solve_normal`). The force-approach curve
 softer control can only move where a jump happens, never the most tensile force (every jump of a
 control stiffer than load control comes after it).
 
-Scaling: u in units of the law's length l and the energy in units of A sigma0 l (sigma0 the
-peak tension), so that the gradient of a pixel is (S u - p) / sigma0 and L-BFGS-B's projected
-gradient tolerance is the residual: the largest force imbalance of a pixel relative to the
-peak tension (a scale-free number, the same in nm or m).
+Residual: the largest force imbalance |G| of a free pixel relative to the law's peak tension
+(a scale-free number, the same in nm or m).
 
 References
 ----------
-Byrd, R. H., Lu, P., Nocedal, J. and Zhu, C. (1995). SIAM J. Sci. Comput. 16, 1190-1208.
-doi:10.1137/0916069
+Polonsky, I. A. and Keer, L. M. (1999). Wear 231, 206-219 (the projected conjugate gradient).
+doi:10.1016/S0043-1648(99)00113-1
+Rey, V., Anciaux, G. and Molinari, J.-F. (2017). Comput. Mech. 60, 69-81 (adhesion in the gap
+formulation). doi:10.1007/s00466-017-1392-5
 Pastewka, L. and Robbins, M. O. (2014). PNAS 111, 3298-3303 (the same minimisation of the
 displacements for rough adhesive contact). doi:10.1073/pnas.1320846111
 """
@@ -50,6 +62,11 @@ import numpy as np
 from .._backend import RealFFT2
 from ..elasticity.halfspace import SurfaceCompliance
 from ..errors import ConvergenceError, InputError
+
+MAX_MOVE = 0.5
+"""Largest change of the gap in one iteration, in units of the law's length: a descent step must
+not carry the state over an energy barrier into another minimum (a jump the programme's step
+control is there to bracket)."""
 
 
 @dataclass(frozen=True)
@@ -151,7 +168,10 @@ class AdhesiveEnergy:
             response = self.elastic_pressure(direction)
             slope = float(np.vdot(gradient, direction))
             curvature = float(np.vdot(direction, response))
+            reach = float(np.abs(self._in_window(direction)).max())
             step = -slope / curvature
+            if reach > 0.0:
+                step = min(step, MAX_MOVE * self.length / reach)
             while True:
                 trial = np.maximum(u + step * direction, lower)
                 clipped = not np.array_equal(trial, u + step * direction)

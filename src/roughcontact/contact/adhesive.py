@@ -39,14 +39,15 @@ from ..materials import Material
 from ..topography import Topography
 from ._adhesive_engine import AdhesiveEnergy
 from .adhesive_result import AdhesiveResult
-from .interaction import INTERACTION_FRACTION, cohesive_zone_length
+from .interaction import cohesive_zone_length
 from .normal import compliance_for
 
 MAX_HALVINGS = 16
 """A step is halved at most this many times before it is refused (a jump is bracketed before)."""
 
-JUMP_ENERGY = 0.05
-"""A step that dissipates more than this fraction of w times the interacting area is a jump."""
+JUMP_PIXELS = 10.0
+"""A step that dissipates more than this many pixels' worth of w (w times the pixel area) and
+keeps doing so when halved down to the jump resolution is a jump."""
 
 MAX_DETACHING_STEPS = 1000
 """Steps of the last stroke added at most to reach detachment (``until_detached``)."""
@@ -181,21 +182,19 @@ class _Path:
     """The states solved so far, and the step control that brackets jumps.
 
     A step is a jump when it dissipates energy: the work of the force over the step (trapezoid
-    rule) exceeds the drop of the total energy by more than :data:`JUMP_ENERGY` times w over the
-    area that interacts, or ten pixels' worth of w (on a branch the two are equal to the
-    truncation error of the trapezoid rule). Such a step is halved until the jump is bracketed
-    within the resolution.
+    rule) exceeds the drop of the total energy by more than :data:`JUMP_PIXELS` pixels' worth of
+    w. On a branch the difference is the trapezoid rule's error, which falls eightfold with each
+    halving of the step; across a jump it is the energy the jump dissipates, whatever the step.
+    So a step above the threshold is halved until it falls below it (a branch, resolved) or the
+    step reaches the resolution (a jump, bracketed). A step on which the body starts or stops
+    touching uses a tenth of the threshold (the jump-in and jump-out of a single contact).
     """
 
     def __init__(self, energy: AdhesiveEnergy, resolution: float, tolerance, max_iterations):
         self.energy, self.resolution = energy, resolution
         self.options = {"tolerance": tolerance, "max_iterations": max_iterations}
         self.states, self.requested, self.jumps = [], [], []
-        law = energy.law
-        self._scale = law.work_of_adhesion * energy.pixel_area
-        self._interacting = lambda state: np.count_nonzero(
-            law.traction(state.gap) <= -INTERACTION_FRACTION * law.peak_tension
-        )
+        self._threshold = JUMP_PIXELS * energy.law.work_of_adhesion * energy.pixel_area
 
     def start(self, delta: float) -> None:
         start = np.zeros(self.energy.grid)
@@ -207,8 +206,11 @@ class _Path:
         self.jumps.append(jump)
 
     def touching(self) -> bool:
-        """Whether the last state touches: a pixel at the wall (in repulsion for Lennard-Jones)."""
-        state = self.states[-1]
+        """Whether the last state touches (see :meth:`_touching`)."""
+        return self._touching(self.states[-1])
+
+    def _touching(self, state) -> bool:
+        """Whether a pixel is at the wall (in repulsion for Lennard-Jones)."""
         return bool(np.any(state.gap <= 0.0) if self.energy.law.hard_wall else np.any(state.gap < 0.0))
 
     def _dissipated(self, old, new) -> float:
@@ -216,10 +218,6 @@ class _Path:
         area = self.energy.pixel_area
         work = 0.5 * (old.pressure.sum() + new.pressure.sum()) * area * (new.delta - old.delta)
         return work - (new.energy - old.energy)
-
-    def _threshold(self, old, new) -> float:
-        pixels = max(self._interacting(old), self._interacting(new))
-        return self._scale * max(10.0, JUMP_ENERGY * pixels)
 
     def advance(self, target: float, *, requested: bool) -> None:
         """Step to ``target`` [m], bracketing any jump on the way to the resolution."""
@@ -230,7 +228,9 @@ class _Path:
                 return
             for _ in range(MAX_HALVINGS):
                 candidate = self.energy.relax(last.displacement, last.delta + step, **self.options)
-                jump = self._dissipated(last, candidate) > self._threshold(last, candidate)
+                dissipated = self._dissipated(last, candidate)
+                touch = self._touching(last) != self._touching(candidate)
+                jump = dissipated > self._threshold * (0.1 if touch else 1.0)
                 if not jump or abs(step) <= self.resolution:
                     break
                 step *= 0.5

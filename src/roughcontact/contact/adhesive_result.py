@@ -165,8 +165,12 @@ class AdhesiveResult:
 
     @property
     def dissipated_energy(self) -> float:
-        """Work done by the flat along the programme [J]: -sum F d(approach) (trapezoid rule)."""
-        return float(-np.sum(0.5 * (self.force[1:] + self.force[:-1]) * np.diff(self.approach)))
+        """Work done by the flat along the programme [J]: sum F d(approach) (trapezoid rule).
+
+        Over a cycle that starts and ends apart, the energy the adhesive hysteresis dissipated
+        (the area between the loading and the unloading curves), >= 0.
+        """
+        return float(np.sum(0.5 * (self.force[1:] + self.force[:-1]) * np.diff(self.approach)))
 
     def range_warnings(self) -> list[str]:
         """Why the answer may depend on the grid: a cohesive zone narrower than two pixels."""
