@@ -138,6 +138,32 @@ def _loop():
     return analyse_loop(path, force, 0.025)
 
 
+def _adhesive():
+    from roughcontact.contact.adhesive import solve_adhesive
+    from roughcontact.contact.interaction import Exponential
+    from roughcontact.topography.generate import sphere
+
+    ball = sphere((16, 16), (1.2, 1.2), radius=1.0, kind="paraboloid")
+    return solve_adhesive(ball, 1.0, Exponential(1e-3, 0.02), approach=[0.01, -0.02])
+
+
+def _winkler_beside_bem():
+    from roughcontact.models.paper000 import winkler_beside_bem
+    from roughcontact.topography import Topography
+
+    x = (np.arange(16) - 8) * 10e-9
+    heights = -(x[:, None] ** 2 + x[None, :] ** 2) / 2e-6
+    surface = Topography(heights, 160e-9, periodic=False)
+    return winkler_beside_bem(
+        surface,
+        get_material("polysilicon"),
+        get_material("SiO2"),
+        approach=[0.0, -1e-9],
+        surface_energy=0.05,
+        counter_surface_energy=0.072,
+    )
+
+
 BUILDERS = {
     "normal contact": _normal,
     "tangential path": _tangential,
@@ -152,6 +178,8 @@ BUILDERS = {
     "asperity parameters": _asperity_parameters,
     "indentation": _indentation,
     "loop analysis": _loop,
+    "adhesive contact": _adhesive,
+    "Winkler beside the adhesive BEM (paper 000)": _winkler_beside_bem,
 }
 SOLVED = {
     "normal contact",
@@ -161,6 +189,7 @@ SOLVED = {
     "island compression (paper 002)",
     "volume load-unload",
     "island in the volume (paper 002)",
+    "adhesive contact",
 }
 
 
@@ -204,6 +233,7 @@ def test_dimensional_scalars_are_in_units(named_result):
         "springs",
         "strain",
         "alpha",
+        "pixels",
     )
     exact = {"n"}  # eq. 9 exponent
     fitted = {

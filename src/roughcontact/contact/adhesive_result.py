@@ -146,13 +146,15 @@ class AdhesiveResult:
         i = int(np.argmin(self.force))
         approach, force = float(self.approach[i]), float(self.force[i])
         if 0 < i < len(self.force) - 1 and not (self.jump[i] or self.jump[i + 1]):
-            x, y = self.approach[i - 1 : i + 2], self.force[i - 1 : i + 2]
-            if np.all(np.diff(x) != 0) and abs(x[2] - x[0]) > 0:
-                a, b, c = np.polyfit(x - x[1], y, 2)
-                if a > 0:
-                    vertex = -b / (2 * a)
-                    if min(x - x[1]) <= vertex <= max(x - x[1]):
-                        return float(x[1] + vertex), float(c - b * b / (4 * a))
+            (x0, x1, x2), (y0, y1, y2) = self.approach[i - 1 : i + 2], self.force[i - 1 : i + 2]
+            if x0 != x1 != x2 != x0:
+                slope_left, slope_right = (y1 - y0) / (x1 - x0), (y2 - y1) / (x2 - x1)
+                curvature = (slope_right - slope_left) / (x2 - x0)  # the parabola's leading coefficient
+                if curvature > 0:
+                    vertex = 0.5 * (x0 + x1) - slope_left / (2 * curvature)
+                    if min(x0, x2) <= vertex <= max(x0, x2):
+                        value = y1 + (vertex - x1) * (slope_left + curvature * (vertex - x0))
+                        return float(vertex), float(value)
         return approach, force
 
     def _jump_approach(self, loading: bool) -> float:
@@ -227,16 +229,16 @@ class AdhesiveResult:
             "force": ("step", self.force, {"units": "N"}),
             "contact_area": ("step", self.contact_area, {"units": "m^2"}),
             "interaction_area": ("step", self.interaction_area, {"units": "m^2"}),
-            "requested": ("step", self.requested),
-            "jump": ("step", self.jump),
-            "iterations": ("step", self.iterations),
-            "residual": ("step", self.residual),
+            "requested": ("step", self.requested, {"units": "1"}),
+            "jump": ("step", self.jump, {"units": "1"}),
+            "iterations": ("step", self.iterations, {"units": "1"}),
+            "residual": ("step", self.residual, {"units": "1"}),
         }
         axes = ("x", "y")[: self.topography.dim]
         dims = ("state", *axes)
         coords = {a: (a, c, {"units": "m"}) for a, c in zip(axes, self.topography.coordinates(), strict=True)}
         data["pressure"] = (dims, np.stack([self.maps[s][0] for s in MAP_STATES]), {"units": "Pa"})
         data["gap"] = (dims, np.stack([self.maps[s][1] for s in MAP_STATES]), {"units": "m"})
-        data["state_step"] = ("state", np.array([self.map_steps[s] for s in MAP_STATES]))
+        data["state_step"] = ("state", np.array([self.map_steps[s] for s in MAP_STATES]), {"units": "1"})
         coords["state"] = ("state", list(MAP_STATES))
         return xr.Dataset(data, coords=coords, attrs={"law": self.interaction.describe()})
