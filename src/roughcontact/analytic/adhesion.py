@@ -69,6 +69,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
+from ..checks import positive
 from ..errors import InputError
 
 #: Johnson parameter alpha above which a wavy surface jumps into full contact at zero load:
@@ -78,15 +79,6 @@ WAVY_JKR_SPONTANEOUS_ALPHA = 3.0**0.75 / 4.0  # = 0.5699 [-]
 #: Johnson parameter above which no stable partial contact exists at any mean pressure:
 #: max of 4 sin^(3/2) psi cos^(5/2) psi, at tan^2 psi = 3/5.
 WAVY_JKR_NO_PARTIAL_CONTACT_ALPHA = 4.0 * (3.0 / 8.0) ** 0.75 * (5.0 / 8.0) ** 1.25  # = 1.0651
-
-
-def _positive(field: str, value: float) -> float:
-    value = float(value)
-    if not (math.isfinite(value) and value > 0.0):
-        raise InputError(
-            field, f"must be a positive finite number, got {value!r}.", "Pass a value > 0 in SI units."
-        )
-    return value
 
 
 # --- sphere on flat -------------------------------------------------------------------------
@@ -111,7 +103,7 @@ def jkr_pull_off(work_of_adhesion: float, radius: float) -> float:
     ----------
     Johnson, Kendall, Roberts (1971), eq. 11. doi:10.1098/rspa.1971.0141
     """
-    return 1.5 * math.pi * _positive("work_of_adhesion", work_of_adhesion) * _positive("radius", radius)
+    return 1.5 * math.pi * positive(work_of_adhesion, "work_of_adhesion") * positive(radius, "radius")
 
 
 def dmt_pull_off(work_of_adhesion: float, radius: float) -> float:
@@ -133,7 +125,7 @@ def dmt_pull_off(work_of_adhesion: float, radius: float) -> float:
     ----------
     Derjaguin, Muller, Toporov (1975). doi:10.1016/0021-9797(75)90018-1
     """
-    return 2.0 * math.pi * _positive("work_of_adhesion", work_of_adhesion) * _positive("radius", radius)
+    return 2.0 * math.pi * positive(work_of_adhesion, "work_of_adhesion") * positive(radius, "radius")
 
 
 def tabor_parameter(
@@ -157,10 +149,10 @@ def tabor_parameter(
     Tabor (1977), doi:10.1016/0021-9797(77)90366-6; in this (E*) form as in Johnson & Greenwood
     (1997), doi:10.1006/jcis.1997.4984.
     """
-    w = _positive("work_of_adhesion", work_of_adhesion)
-    r = _positive("radius", radius)
-    e = _positive("contact_modulus", contact_modulus)
-    z0 = _positive("equilibrium_distance", equilibrium_distance)
+    w = positive(work_of_adhesion, "work_of_adhesion")
+    r = positive(radius, "radius")
+    e = positive(contact_modulus, "contact_modulus")
+    z0 = positive(equilibrium_distance, "equilibrium_distance")
     return (r * w**2 / (e**2 * z0**3)) ** (1.0 / 3.0)
 
 
@@ -192,10 +184,10 @@ def maugis_parameter(
     Maugis (1992), eq. 6.13 with K = 4E*/3, doi:10.1016/0021-9797(92)90285-T;
     Johnson & Greenwood (1997), doi:10.1006/jcis.1997.4984.
     """
-    w = _positive("work_of_adhesion", work_of_adhesion)
-    r = _positive("radius", radius)
-    k = 4.0 / 3.0 * _positive("contact_modulus", contact_modulus)
-    s0 = _positive("peak_stress", peak_stress)
+    w = positive(work_of_adhesion, "work_of_adhesion")
+    r = positive(radius, "radius")
+    k = 4.0 / 3.0 * positive(contact_modulus, "contact_modulus")
+    s0 = positive(peak_stress, "peak_stress")
     return 2.0 * s0 * (r / (math.pi * w * k**2)) ** (1.0 / 3.0)
 
 
@@ -262,7 +254,7 @@ def maugis_dugdale_curve(
     Maugis (1992), eqs. 6.17-6.19, doi:10.1016/0021-9797(92)90285-T; Johnson & Greenwood (1997),
     eqs. 2-4, doi:10.1006/jcis.1997.4984.
     """
-    lam = _positive("maugis_parameter", maugis_parameter)
+    lam = positive(maugis_parameter, "maugis_parameter")
     a = np.asarray(contact_radius, dtype=float)
     if not np.all(np.isfinite(a)) or np.any(a < 0.0):
         raise InputError("contact_radius", "must be finite and >= 0.", "Pass nondimensional radii A >= 0.")
@@ -339,7 +331,7 @@ def maugis_dugdale_pull_off(maugis_parameter: float) -> float:
     float
         Positive nondimensional pull-off force P_c = F_c / (pi w R) [-].
     """
-    lam = _positive("maugis_parameter", maugis_parameter)
+    lam = positive(maugis_parameter, "maugis_parameter")
     grid = np.linspace(0.0, 3.0, 121)
     loads = np.array([_md_point(float(a), lam)[0] for a in grid])
     i = int(np.argmin(loads))
@@ -375,10 +367,10 @@ def wavy_adhesion_parameter(
     ----------
     Johnson (1995), doi:10.1016/0020-7683(94)00111-9.
     """
-    lam = _positive("wavelength", wavelength)
-    d = _positive("amplitude", amplitude)
-    e = _positive("contact_modulus", contact_modulus)
-    w = _positive("work_of_adhesion", work_of_adhesion)
+    lam = positive(wavelength, "wavelength")
+    d = positive(amplitude, "amplitude")
+    e = positive(contact_modulus, "contact_modulus")
+    w = positive(work_of_adhesion, "work_of_adhesion")
     return math.sqrt(2.0 * lam * w / (math.pi**2 * d**2 * e))
 
 
