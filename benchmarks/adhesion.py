@@ -50,12 +50,11 @@ import argparse
 import json
 import os
 import platform
-import sys
 import time
-from pathlib import Path
 
 import numpy as np
 
+import peers
 from roughcontact.topography import Topography
 from roughcontact.topography.generate import self_affine, sphere
 
@@ -65,15 +64,6 @@ LENGTH = 1e-9
 RADIUS = 3e-6
 CELL = 0.8e-6
 ROUGH_RMS_HEIGHT = 6e-9
-
-
-def _peers():
-    sys.path.insert(0, str(Path(__file__).parent))
-    try:
-        import peers
-    except ImportError:
-        return None
-    return peers
 
 
 def jkr_height_unit() -> float:
@@ -214,8 +204,7 @@ def main() -> None:
     parser.add_argument("--quick", action="store_true", help="64^2 and 128^2")
     args = parser.parse_args()
     sizes = [64, 128] if args.quick else args.sizes
-    peers = None if args.no_peers else _peers()
-    peer_solvers = peers.adhesive_solvers(args.peers) if peers is not None else {}
+    peer_solvers = {} if args.no_peers else peers.adhesive_solvers(args.peers)
     warm_up_seconds = warm_up()
     z = jkr_height_unit()
     print(
