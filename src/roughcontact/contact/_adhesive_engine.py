@@ -101,12 +101,7 @@ class AdhesiveEnergy:
         self.grid = compliance.transform_shape
         self.periodic = compliance.boundary == "periodic"
         self.separation = separation
-        kernel = compliance.kernel
-        stiffness = np.zeros_like(kernel)
-        positive = kernel > 0
-        stiffness[positive] = 1.0 / kernel[positive]
-        if not positive.flat[0]:
-            stiffness.flat[0] = stiffness[positive].min()
+        stiffness = compliance.inverse_kernel()
         self.length = law.length
         self.pixel_area = compliance.pixel_area
         self.scale = law.peak_tension
@@ -156,7 +151,7 @@ class AdhesiveEnergy:
             steer = self._fft.convolve(gradient, self._compliance)
             steer[~free] = 0.0
             product = float(np.vdot(gradient, steer))
-            if direction is None or previous is None or not np.array_equal(free, previous[1]):
+            if previous is None or not np.array_equal(free, previous[1]):
                 direction = -steer
             else:
                 beta = max(0.0, (product - float(np.vdot(gradient, previous[2]))) / previous[0])
@@ -173,8 +168,9 @@ class AdhesiveEnergy:
             if reach > 0.0:
                 step = min(step, MAX_MOVE * self.length / reach)
             while True:
-                trial = np.maximum(u + step * direction, lower)
-                clipped = not np.array_equal(trial, u + step * direction)
+                unclipped = u + step * direction
+                trial = np.maximum(unclipped, lower)
+                clipped = not np.array_equal(trial, unclipped)
                 trial_elastic = self.elastic_pressure(trial) if clipped else elastic + step * response
                 trial_energy = self._energy(trial, trial_elastic, delta)
                 if trial_energy <= energy + 1e-4 * step * slope or step < 1e-12:

@@ -40,7 +40,7 @@ from ..topography import Topography
 from ._adhesive_engine import AdhesiveEnergy
 from .adhesive_result import AdhesiveResult
 from .interaction import cohesive_zone_length
-from .normal import compliance_for
+from .normal import check_heights, compliance_for
 
 MAX_HALVINGS = 16
 """A step is halved at most this many times before it is refused (a jump is bracketed before)."""
@@ -128,12 +128,7 @@ def solve_adhesive(
             "pass MaugisDugdale(w, rho), Exponential(w, rho) or LennardJones(w, eps) "
             "from roughcontact.contact.interaction.",
         )
-    if not np.all(np.isfinite(topography.heights)):
-        raise InputError(
-            "heights",
-            "the topography has undefined (NaN or infinite) heights.",
-            "fill them first (read_topography(..., undefined='interpolate')).",
-        )
+    check_heights(topography)
     positive(tolerance, "tolerance", example=1e-6)
     if jump_resolution is None:
         jump_resolution = 0.25 * interaction.length
@@ -165,7 +160,7 @@ def solve_adhesive(
         states=path.states,
         requested=np.array(path.requested),
         jump=np.array(path.jumps),
-        pixel_area=topography.pixel_area if topography.dim == 2 else topography.spacing[0],
+        pixel_area=topography.pixel_area,
         contact_modulus=compliance.contact_modulus,
         boundary=compliance.boundary,
         tolerance=tolerance,
@@ -210,8 +205,8 @@ class _Path:
         return self._touching(self.states[-1])
 
     def _touching(self, state) -> bool:
-        """Whether a pixel is at the wall (in repulsion for Lennard-Jones)."""
-        return bool(np.any(state.gap <= 0.0) if self.energy.law.hard_wall else np.any(state.gap < 0.0))
+        """Whether a pixel of ``state`` is in contact (the law's ``in_contact``)."""
+        return bool(np.any(self.energy.law.in_contact(state.gap)))
 
     def _dissipated(self, old, new) -> float:
         """Energy the step from ``old`` to ``new`` dissipated [J]: its work minus the energy change."""

@@ -101,7 +101,6 @@ class AdhesiveResult:
     def from_states(cls, *, topography, interaction, states, pixel_area, **common) -> AdhesiveResult:
         """Build the result from the engine's states (see :mod:`roughcontact.contact.adhesive`)."""
         law = interaction
-        touching = (lambda s: s.gap <= 0.0) if law.hard_wall else (lambda s: s.gap < 0.0)
         threshold = -INTERACTION_FRACTION * law.peak_tension
         force = np.array([s.pressure.sum() * pixel_area for s in states])
         delta = np.array([s.delta for s in states])
@@ -117,9 +116,12 @@ class AdhesiveResult:
             delta=delta,
             approach=np.array([s.approach for s in states]),
             force=force,
-            contact_area=np.array([touching(s).sum() * pixel_area for s in states]),
+            contact_area=np.array([law.in_contact(s.gap).sum() * pixel_area for s in states]),
             interaction_area=np.array(
-                [(~touching(s) & (law.traction(s.gap) <= threshold)).sum() * pixel_area for s in states]
+                [
+                    np.count_nonzero(~law.in_contact(s.gap) & (law.traction(s.gap) <= threshold)) * pixel_area
+                    for s in states
+                ]
             ),
             iterations=np.array([s.iterations for s in states]),
             residual=np.array([s.residual for s in states]),
@@ -174,9 +176,14 @@ class AdhesiveResult:
         """
         return float(np.sum(0.5 * (self.force[1:] + self.force[:-1]) * np.diff(self.approach)))
 
+    @property
+    def _spacing(self) -> float:
+        """Pixel size [m] (the side of a square pixel; the spacing of a profile)."""
+        return float(np.sqrt(self.pixel_area)) if self.topography.dim == 2 else self.pixel_area
+
     def range_warnings(self) -> list[str]:
         """Why the answer may depend on the grid: a cohesive zone narrower than two pixels."""
-        spacing = float(np.sqrt(self.pixel_area)) if self.topography.dim == 2 else self.pixel_area
+        spacing = self._spacing
         pixels = self.cohesive_zone / spacing
         if pixels >= RESOLVED_ZONE_PIXELS:
             return []
@@ -192,7 +199,7 @@ class AdhesiveResult:
         law = self.interaction
         pull_off_approach, pull_off = self._pull_off()
         i = self.map_steps["pull_off"]
-        spacing = float(np.sqrt(self.pixel_area)) if self.topography.dim == 2 else self.pixel_area
+        spacing = self._spacing
         return {
             "law": law.name,
             "work_of_adhesion": law.work_of_adhesion,

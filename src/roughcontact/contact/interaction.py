@@ -69,6 +69,10 @@ class _Law:
         """Smallest admissible gap [m]: 0 with a hard wall."""
         return 0.0
 
+    def in_contact(self, gap: np.ndarray) -> np.ndarray:
+        """Where the surfaces touch: at the wall, g <= 0 (in repulsion, g < 0, for Lennard-Jones)."""
+        return gap <= 0.0 if self.hard_wall else gap < 0.0
+
     def describe(self) -> str:
         """One line naming the law and its parameters (SI)."""
         return (

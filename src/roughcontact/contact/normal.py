@@ -116,7 +116,8 @@ def _one_target(**targets) -> tuple[str, float]:
     return name, float(value)
 
 
-def _check_heights(topography: Topography) -> None:
+def check_heights(topography: Topography) -> None:
+    """Refuse a topography with undefined (NaN or infinite) heights, naming the fix."""
     if not np.all(np.isfinite(topography.heights)):
         raise InputError(
             "heights",
@@ -196,7 +197,7 @@ def solve_normal(
     Seed paper 001, eq. 4; seed paper 002 (elastic-plastic compression).
     """
     name, value = _one_target(mean_pressure=mean_pressure, force=force, approach=approach)
-    _check_heights(topography)
+    check_heights(topography)
     if compliance is None:
         compliance = compliance_for(
             topography, material, counter_body=counter_body, layer=layer, boundary=boundary

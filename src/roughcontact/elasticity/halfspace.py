@@ -214,9 +214,14 @@ class SurfaceCompliance:
         of the longest wavelength); for a free boundary the inverse of the zero-padded operator,
         restricted to the window, which approximates the inverse of the free operator.
         """
-        return self._fft.convolve(displacement, self._inverse_kernel(), out)
+        return self._fft.convolve(displacement, self.inverse_kernel(), out)
 
-    def _inverse_kernel(self) -> np.ndarray:
+    def inverse_kernel(self) -> np.ndarray:
+        """Return the stiffness kernel 1 / K [Pa/m], made once.
+
+        The mean mode of a periodic half-space (zero compliance) gets the stiffness of the longest
+        wavelength (see :meth:`inverse`).
+        """
         if "inverse" not in self._derived:
             inverse = np.zeros_like(self.kernel)
             positive = self.kernel > 0
@@ -246,7 +251,7 @@ class SurfaceCompliance:
                 precision="single",
             )
             self._derived["kernel/N"] = self._fft.prepared(self.kernel)
-            self._derived["inverse/N single"] = single.prepared(self._inverse_kernel())
+            self._derived["inverse/N single"] = single.prepared(self.inverse_kernel())
             self._derived["quadratic single"] = single.quadratic_form_weights(self.kernel)
             self._derived["single"] = single
         single = self._derived["single"]
