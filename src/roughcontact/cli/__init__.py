@@ -1,10 +1,10 @@
-"""Command line: ``roughcontact inspect | plot | contact | friction | asperity | presliding | run | ...``.
+"""Command line: ``roughcontact inspect | plot | contact | adhesion | friction | presliding | run | ...``.
 
 One module per command group: :mod:`.topography` (``inspect``, ``plot``), :mod:`.study` (``run``,
-``validate``, ``report``, ``models``, ``demo``), :mod:`.contact`, :mod:`.friction`,
-:mod:`.asperity`, :mod:`.presliding` (``presliding``, ``loop-analysis``) and :mod:`.indentation`
-(``nanoindent``). What they share is public in :mod:`.options` (options, a command as a study)
-and :mod:`.output` (running it and showing its results).
+``validate``, ``report``, ``models``, ``demo``), :mod:`.contact`, :mod:`.adhesion`,
+:mod:`.friction`, :mod:`.asperity`, :mod:`.presliding` (``presliding``, ``loop-analysis``) and
+:mod:`.indentation` (``nanoindent``). What they share is public in :mod:`.options` (options, a
+command as a study) and :mod:`.output` (running it and showing its results).
 
 The edges of the program live here: unit strings from the user are converted once (through
 :mod:`roughcontact.units`, inside the study schemas), errors become one readable line naming the
@@ -21,7 +21,7 @@ from collections.abc import Sequence
 
 from .._version import __version__
 from ..errors import ConvergenceError, InputError
-from . import asperity, contact, friction, indentation, presliding, study, topography
+from . import adhesion, asperity, contact, friction, indentation, presliding, study, topography
 from .options import EXIT_CASES_FAILED, EXIT_INPUT_ERROR, EXIT_INTERRUPTED, EXIT_NOT_CONVERGED
 
 __all__ = [
@@ -33,7 +33,7 @@ __all__ = [
     "main",
 ]
 
-GROUPS = (topography, contact, friction, asperity, presliding, indentation, study)
+GROUPS = (topography, contact, adhesion, friction, asperity, presliding, indentation, study)
 """The command groups, in the order ``roughcontact --help`` lists them."""
 
 

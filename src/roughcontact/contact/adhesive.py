@@ -36,6 +36,7 @@ from ..checks import finite_array, no_string, positive
 from ..elasticity.halfspace import ElasticLayer
 from ..errors import InputError
 from ..materials import Material
+from ..progress import tracked
 from ..topography import Topography
 from ._adhesive_engine import AdhesiveEnergy
 from .adhesive_result import AdhesiveResult
@@ -140,7 +141,7 @@ def solve_adhesive(
     energy = AdhesiveEnergy(compliance, heights.max() - heights, interaction)
     path = _Path(energy, jump_resolution, tolerance, max_iterations)
     path.start(float(programme[0]))
-    for target in programme[1:]:
+    for target in tracked(programme[1:], what="adhesive steps"):
         path.advance(float(target), requested=True)
     if until_detached and programme.size > 1 and programme[-1] < programme[-2]:
         stride = float(programme[-1] - programme[-2])

@@ -141,7 +141,11 @@ class AdhesiveResult:
 
     @property
     def pull_off_force(self) -> float:
-        """Most tensile force [N], positive (parabola through the smallest force and its neighbours)."""
+        """Most tensile force [N], positive (parabola through the smallest force and its neighbours).
+
+        The parabola's vertex is used when it lies between the neighbours and below the smallest
+        force by no more than the neighbours lie above it; otherwise the smallest force itself.
+        """
         return -self._pull_off()[1]
 
     def _pull_off(self) -> tuple[float, float]:
@@ -156,7 +160,10 @@ class AdhesiveResult:
                     vertex = 0.5 * (x0 + x1) - slope_left / (2 * curvature)
                     if min(x0, x2) <= vertex <= max(x0, x2):
                         value = y1 + (vertex - x1) * (slope_left + curvature * (vertex - x0))
-                        return float(vertex), float(value)
+                        # an interpolation, not an extrapolation: uneven steps across a change of
+                        # regime (contact starting) can put a parabola's vertex far below the points
+                        if y1 - value <= max(y0, y2) - y1:
+                            return float(vertex), float(value)
         return approach, force
 
     def _jump_approach(self, loading: bool) -> float:
@@ -182,17 +189,39 @@ class AdhesiveResult:
         return float(np.sqrt(self.pixel_area)) if self.topography.dim == 2 else self.pixel_area
 
     def range_warnings(self) -> list[str]:
-        """Why the answer may depend on the grid: a cohesive zone narrower than two pixels."""
+        """Why the answer may depend on the grid or the window.
+
+        A cohesive zone narrower than :data:`RESOLVED_ZONE_PIXELS` pixels; on a free window, an
+        interaction that reaches the window's edge at the pull-off (the attraction beyond it is
+        missing, so the pull-off is too small).
+        """
+        warnings = []
         spacing = self._spacing
         pixels = self.cohesive_zone / spacing
-        if pixels >= RESOLVED_ZONE_PIXELS:
-            return []
-        return [
-            f"the cohesive zone (pi/4) E* w / sigma0^2 = {self.cohesive_zone:.3g} m spans {pixels:.2g} "
-            f"pixels of {spacing:.3g} m; below {RESOLVED_ZONE_PIXELS:g} the pull-off and the jumps "
-            f"depend on the grid: use a pixel of at most {self.cohesive_zone / RESOLVED_ZONE_PIXELS:.3g} m "
-            "or a longer interaction length."
-        ]
+        finest = self.cohesive_zone / RESOLVED_ZONE_PIXELS
+        if pixels < RESOLVED_ZONE_PIXELS:
+            warnings.append(
+                f"the cohesive zone (pi/4) E* w / sigma0^2 = {self.cohesive_zone:.3g} m spans {pixels:.2g} "
+                f"pixels of {spacing:.3g} m; below {RESOLVED_ZONE_PIXELS:g} the pull-off and the jumps "
+                f"depend on the grid: use a pixel of at most {finest:.3g} m "
+                "or a longer interaction length."
+            )
+        if self.boundary == "free" and self._interacting_at_edge():
+            warnings.append(
+                "the surfaces still attract at the window's edge at the pull-off: the attraction "
+                "beyond the window is missing and the pull-off is underestimated; use a larger window "
+                "or a shorter interaction length."
+            )
+        return warnings
+
+    def _interacting_at_edge(self) -> bool:
+        """Whether an edge pixel is under a tension of INTERACTION_FRACTION of the peak at the pull-off."""
+        pressure = self.maps["pull_off"][0]
+        edges = [pressure[0], pressure[-1]]
+        if pressure.ndim == 2:
+            edges += [pressure[:, 0], pressure[:, -1]]
+        threshold = -INTERACTION_FRACTION * self.interaction.peak_tension
+        return any(bool(np.any(edge <= threshold)) for edge in edges)
 
     def scalars(self) -> dict[str, Any]:
         """Return the headline numbers (SI), see ``UNITS``."""

@@ -8,6 +8,7 @@
 ``load_unload``       an elastic-plastic load-unload of a surface or paper 002's island (Fig. 7)
 ``asperity``          McCool parameters and the statistical KKE load-unload (paper 002)
 ``friction``          the Winkler-layer Lennard-Jones friction at one load (paper 000)
+``adhesion``          an adhesive load-unload cycle (BEM), pull-off; paper 000's springs beside
 ``presliding``        a rough ball's partial-slip loops under paper 001's or your programme, K_L
 ``loop_analysis``     a measured friction loop: stroke, mu, eq. 9 fit, K_L (paper 001)
 ``nanoindentation``   Oliver-Pharr modulus with the hold-creep correction (paper 001 eqs. 5-8)
@@ -34,6 +35,7 @@ MODULES = {
     "load_unload": "load_unload",
     "asperity": "asperity",
     "friction": "friction",
+    "adhesion": "adhesion",
     "presliding": "presliding",
     "loop_analysis": "loop_analysis",
     "nanoindentation": "nanoindentation",

@@ -1,0 +1,119 @@
+"""The ``adhesion`` study kind on a small adhesive sphere.
+
+* the kind's case is :func:`solve_adhesive` on the same surface, law and programme (same numbers);
+* the work of adhesion from the surface energies by either combining rule;
+* the smooth sphere's closed forms beside a generated sphere's result;
+* bad input refused before anything runs (naming the key), or by the case (naming the key).
+
+The command is tested in tests/cli/test_cli_adhesion.py.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from roughcontact.analytic.adhesion import maugis_dugdale_pull_off, maugis_parameter
+from roughcontact.contact.adhesive import solve_adhesive
+from roughcontact.contact.interaction import MaugisDugdale
+from roughcontact.materials import Material, get_material
+from roughcontact.study import load_study
+from roughcontact.study.config import StudyError
+from roughcontact.study.run import execute, make_task
+from roughcontact.topography.generate import sphere
+
+FILM = Material(4e9, 0.3, name="film")
+BALL = {"shape": (32, 32), "size": 200e-9, "radius": 1e-6}
+
+STUDY = """
+[study]
+name = "adhesive ball"
+[topographies.ball]
+generate = "sphere"
+shape = 32
+size = "200 nm"
+radius = "1 um"
+[materials.film]
+youngs_modulus = "4 GPa"
+poissons_ratio = 0.3
+surface_energy = "{gamma}"
+[[analysis]]
+name = "cycle"
+model = "adhesion"
+topography = "ball"
+material = "film"
+interaction_range = "1.9 nm"
+max_approach = "1 nm"
+steps = 10
+{extra}
+"""
+
+
+def _study(tmp_path, *, gamma="25 mJ/m^2", extra='work_of_adhesion = "50 mJ/m^2"'):
+    path = tmp_path / "adhesion.toml"
+    path.write_text(STUDY.format(gamma=gamma, extra=extra))
+    return load_study(path)
+
+
+def _case(tmp_path, **options):
+    study = _study(tmp_path, **options)
+    record, dataset = execute(make_task(study, study.cases[0]))
+    assert record["status"] == "done", record["error"]
+    return record, dataset
+
+
+def test_a_case_is_solve_adhesive_on_the_same_surface_law_and_programme(tmp_path):
+    record, dataset = _case(tmp_path)
+    programme = np.concatenate([np.linspace(-9.5e-9, 1e-9, 11), np.linspace(-9.5e-9, 1e-9, 11)[-2::-1]])
+    direct = solve_adhesive(sphere(**BALL), FILM, MaugisDugdale(0.05, 1.9e-9), approach=programme)
+    scalars = record["scalars"]
+    assert scalars["pull_off_force"] == pytest.approx(direct.pull_off_force, rel=1e-12)
+    assert scalars["dissipated_energy"] == pytest.approx(direct.dissipated_energy, rel=1e-9)
+    np.testing.assert_allclose(dataset["force"], direct.force, rtol=1e-12, atol=0)
+    assert set(dataset["state"].values) == {"peak", "pull_off", "end"}
+    assert dataset["pressure"].attrs["units"] == "Pa" and dataset["approach"].attrs["units"] == "m"
+
+
+def test_the_smooth_sphere_closed_forms_stand_beside_a_generated_sphere(tmp_path):
+    scalars = _case(tmp_path)[0]["scalars"]
+    contact_modulus = FILM.youngs_modulus / (1 - FILM.poissons_ratio**2)
+    lam = maugis_parameter(0.05, 1e-6, contact_modulus, 0.05 / 1.9e-9)
+    assert scalars["maugis_parameter"] == pytest.approx(lam, rel=1e-12)
+    reference = maugis_dugdale_pull_off(lam) * math.pi * 0.05 * 1e-6
+    assert scalars["maugis_dugdale_pull_off"] == pytest.approx(reference, rel=1e-12)
+    assert scalars["jkr_pull_off"] == pytest.approx(1.5 * math.pi * 0.05e-6)
+    assert scalars["dmt_pull_off"] == pytest.approx(2.0 * math.pi * 0.05e-6)
+    # lambda = 0.3, a cohesive zone of ~40 pixels: the coarse cycle is within 5 % of Maugis (1992)
+    assert scalars["pull_off_to_maugis_dugdale"] == pytest.approx(1.0, abs=0.05)
+
+
+@pytest.mark.parametrize(("rule", "factor"), [(None, 2.0), ("girifalco_good", 2.0), ("printed", 1.0)])
+def test_the_work_of_adhesion_comes_from_the_surface_energies_by_the_combining_rule(tmp_path, rule, factor):
+    extra = 'counter_body = "SiO2"' + (f'\ncombining_rule = "{rule}"' if rule else "")
+    scalars = _case(tmp_path, gamma="25 mJ/m^2", extra=extra)[0]["scalars"]
+    gamma_sio2 = get_material("SiO2").surface_energy
+    assert scalars["work_of_adhesion"] == pytest.approx(factor * math.sqrt(0.025 * gamma_sio2), rel=1e-12)
+
+
+def test_a_rigid_flat_without_a_surface_energy_is_refused_naming_the_key(tmp_path):
+    study = _study(tmp_path, extra="")
+    with pytest.raises(Exception, match="counter_surface_energy"):
+        execute(make_task(study, study.cases[0], raise_errors=True))
+
+
+@pytest.mark.parametrize(
+    ("extra", "words"),
+    [
+        ('work_of_adhesion = "-50 mJ/m^2"', "work_of_adhesion must be positive"),
+        ('work_of_adhesion = "50 mJ/m^2"\nstart = "2 nm"', "start must lie below max_approach"),
+        ('work_of_adhesion = "50 mJ/m^2"\nwinkler = true', "law = 'lennard_jones'"),
+        ('work_of_adhesion = "50 mJ/m^2"\nlaw = "morse"', "law"),
+        ('work_of_adhesion = "50"', "unit"),
+    ],
+)
+def test_bad_keys_are_refused_before_anything_runs(tmp_path, extra, words):
+    with pytest.raises(StudyError) as caught:
+        _study(tmp_path, extra=extra)
+    assert words in str(caught.value)
