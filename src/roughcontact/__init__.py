@@ -14,7 +14,7 @@ The names of the common jobs, all in SI units (m, Pa, N, J/m^2)::
   :func:`load_topography`, :mod:`generate`, :func:`spectral_moments`;
 * materials: :class:`Material`, :func:`get_material`, :func:`contact_modulus`;
 * models: :func:`solve_normal`, :func:`solve_tangential`, :func:`solve_frictional`, :func:`load_unload`,
-  :func:`solve_winkler_lj` (paper 000), :func:`statistical_load_unload` (paper 002),
+  :func:`solve_adhesive`, :func:`solve_winkler_lj` (paper 000), :func:`statistical_load_unload` (paper 002),
   :func:`presliding` (paper 001), :func:`analyse_loop`, :func:`oliver_pharr`;
 * studies: :func:`load_study`, :func:`run_study`;
 * units and errors: :func:`quantity`, :class:`InputError`, :class:`UnitError`,
@@ -42,6 +42,7 @@ _HOMES = {
     "solve_normal": "roughcontact.contact",
     "solve_tangential": "roughcontact.contact",
     "solve_frictional": "roughcontact.contact",
+    "solve_adhesive": "roughcontact.contact",
     "load_unload": "roughcontact.contact",
     "solve_winkler_lj": "roughcontact.friction",
     "statistical_load_unload": "roughcontact.asperity",
@@ -74,6 +75,7 @@ __all__ = [
     "read_topography",
     "run_study",
     "save_topography",
+    "solve_adhesive",
     "solve_normal",
     "solve_tangential",
     "solve_frictional",

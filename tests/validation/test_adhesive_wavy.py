@@ -35,9 +35,10 @@ pixels for the same zone resolution). The cohesive zone is (pi/4) E* w / sigma0^
 (:func:`~roughcontact.contact.interaction.cohesive_zone_length`).
 
 Programmes. On unloading and near the jumps the flat moves by a quarter of the law's length rho per
-step: a step longer than rho pulls every contact pixel of the previous state out of a
-Maugis-Dugdale law's range in the first iterate, and the solver then lands in the detached state
-without flagging a jump (pull-off 0.10-0.14 p* instead of 0.19-0.25 p*: the xfail test at the end).
+step. A step longer than rho pulls every contact pixel of the previous state out of a
+Maugis-Dugdale law's range in the first iterate, and the relaxation lands in the detached state
+(pull-off 0.10-0.14 p* instead of 0.19-0.25 p*); the step control halves such steps, which raise
+the energy beyond their work (the last test: 1.5 rho steps give the pull-off of rho / 4 steps).
 
 References
 ----------
@@ -340,21 +341,14 @@ def test_above_alpha_0_5699_full_contact_forms_under_tension():
     assert spring - 0.01 <= result.delta[first] / AMPLITUDE <= spring + step + 0.01
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="solver: an unloading step longer than the Maugis-Dugdale range rho warm-starts every "
-    "contact pixel out of range, the relaxation lands in the detached state and the step control "
-    "(which halves only on positive dissipation) accepts it; the pull-off drops from 0.203 to 0.128 p*",
-)
 def test_unloading_steps_longer_than_the_range_keep_the_contact():
     """Maugis-Dugdale, alpha = 0.5, sigma0 = 2.5 p*, 1024 pixels (16 of the zone).
 
-    The pull-off with unloading steps of 1.5 rho should be that with steps of rho / 4 (0.2033 p*;
-    0.2039 with 0.9 rho): the adhesive.py docstring promises to halve a step whose state changes by
-    more than half the interaction length. Measured 0.128 p* (0.137 with 1.1 rho steps): the contact
-    is lost at the first step under tension, the energy rising above the work done (a negative
-    dissipation, which no physical jump has: 448 pixels' worth of w at sigma0 = 10 p*, 2048 pixels).
-    Strict: once the solver keeps the contact this reports XPASS; then drop the marker.
+    The pull-off with unloading steps of 1.5 rho is that with steps of rho / 4 (0.2033 p*; 0.2039
+    with 0.9 rho). Before the step control halved steps that raise the energy beyond their work,
+    it was 0.128 p* (0.137 with 1.1 rho steps): each contact pixel, started out of range, lost its
+    contact at the first step under tension (a negative dissipation, which no physical jump has:
+    448 pixels' worth of w at sigma0 = 10 p*, 2048 pixels).
     """
     fine = _unload("maugis_dugdale", 0.5, 2.5, 1024).pull_off_force
     coarse = _unload("maugis_dugdale", 0.5, 2.5, 1024, stride=1.5).pull_off_force

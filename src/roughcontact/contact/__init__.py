@@ -4,13 +4,19 @@
 ``tangential`` (:func:`solve_tangential`: partial slip under a displacement or force programme),
 ``frictional`` (:func:`solve_frictional`: combined normal and tangential programmes with friction
 from the unloaded state),
+``adhesive`` (:func:`solve_adhesive`: adhesive contact through an approach programme, with the
+interaction laws of ``interaction``: :class:`MaugisDugdale`, :class:`Exponential`,
+:class:`LennardJones`),
 ``plastic`` (:func:`load_unload`: elastic-perfectly-plastic load-unload), ``sweep``
 (:func:`load_path`: warm-started sequences of normal solves), ``paths`` (tangential programmes:
 paper 001's stroke path, symmetric cycles, a CSV) and their results, each with ``scalars()``,
 ``UNITS`` and ``to_xarray()`` (:mod:`roughcontact.results`).
 """
 
+from .adhesive import solve_adhesive
+from .adhesive_result import AdhesiveResult
 from .frictional import solve_frictional
+from .interaction import Exponential, LennardJones, MaugisDugdale
 from .normal import compliance_for, solve_normal
 from .paths import read_path_csv, read_programme_csv, stroke_path, symmetric_path
 from .plastic import LoadUnloadResult, load_unload
@@ -20,7 +26,11 @@ from .tangential import solve_tangential
 from .tangential_result import TangentialPathResult, TangentialState
 
 __all__ = [
+    "AdhesiveResult",
+    "Exponential",
+    "LennardJones",
     "LoadUnloadResult",
+    "MaugisDugdale",
     "NormalContactResult",
     "TangentialPathResult",
     "TangentialState",
@@ -30,6 +40,7 @@ __all__ = [
     "solve_frictional",
     "read_path_csv",
     "read_programme_csv",
+    "solve_adhesive",
     "solve_normal",
     "solve_tangential",
     "stroke_path",

@@ -334,6 +334,14 @@ def _draw_cycle(ax, data, record, colour, scales) -> None:
     )
     if "winkler_force" in data:
         ax.plot(approach, np.asarray(data["winkler_force"]) / f_scale, "--", color=colour, lw=1.2)
+        ax.plot(
+            scalars["winkler_pull_off_approach"] / a_scale,
+            -scalars["winkler_pull_off_force"] / f_scale,
+            "s",
+            mfc="none",
+            color=colour,
+            label=f"Winkler springs: pull-off {_with_unit(scalars['winkler_pull_off_force'])}",
+        )
 
 
 def _approach_limits(datasets) -> tuple[float, float]:
@@ -362,7 +370,8 @@ def _with_unit(value: float, scale: tuple[float, str] | None = None) -> str:
     "Normal force against the flat's approach (from the first touch of the undeformed surface) over "
     "the load-unload cycle of up to six cases: solid, the boundary-element solution step by step; "
     "dotted, a jump into or out of contact (bracketed to the jump resolution); triangle, the pull-off "
-    "force; dashed, paper 000's Winkler-layer springs on the same surface (winkler = true). The area "
+    "force; dashed and open square, paper 000's Winkler-layer springs on the same surface and their "
+    "pull-off (winkler = true). The area "
     "inside a cycle is the energy it dissipates."
 )
 def _force_approach(records, context):
@@ -484,7 +493,7 @@ def _pull_off(records, context):
     series = {
         "boundary elements": ("pull_off_force", "o-"),
         "Winkler springs (paper 000)": ("winkler_pull_off_force", "s--"),
-        "Maugis-Dugdale, smooth sphere": ("maugis_dugdale_pull_off", "k:"),
+        "Maugis-Dugdale, smooth sphere": ("maugis_dugdale_pull_off", "kx:"),
     }
     x_scale = _scale(x, unit)
     y_scale = _scale([r.scalars["pull_off_force"] for r in order], "N")
