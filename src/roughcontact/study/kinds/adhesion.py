@@ -368,7 +368,8 @@ def _with_unit(value: float, scale: tuple[float, str] | None = None) -> str:
 
 @caption(
     "Normal force against the flat's approach (from the first touch of the undeformed surface) over "
-    "the load-unload cycle of up to six cases: solid, the boundary-element solution step by step; "
+    "the load-unload cycle of up to six cases (left: the whole cycle; right: near the pull-off, forces "
+    "within 1.5 times the largest pull-off force): solid, the boundary-element solution step by step; "
     "dotted, a jump into or out of contact (bracketed to the jump resolution); triangle, the pull-off "
     "force; dashed and open square, paper 000's Winkler-layer springs on the same surface and their "
     "pull-off (winkler = true). The area "
@@ -388,18 +389,32 @@ def _force_approach(records, context):
             "N/m" if "y" not in datasets[0].dims else "N",
         ),
     )
-    figure, axes = new_figure(1, 1, width=6.0, height=4.4)
-    ax = axes[0][0]
-    for index, (record, data) in enumerate(zip(chosen, datasets, strict=True)):
-        _draw_cycle(ax, data, record, f"C{index}", scales)
-    ax.axhline(0.0, color="0.6", lw=0.6)
-    ax.set_xlim(*(limit / scales[0][0] for limit in _approach_limits(datasets)))
-    ax.set_xlabel(f"approach ({scales[0][1]})")
-    ax.set_ylabel(f"normal force ({scales[1][1]})")
+    figure, axes = new_figure(1, 2, width=5.4, height=4.4)
+    whole, zoom = axes[0]
+    for ax in (whole, zoom):
+        for index, (record, data) in enumerate(zip(chosen, datasets, strict=True)):
+            _draw_cycle(ax, data, record, f"C{index}", scales)
+        ax.axhline(0.0, color="0.6", lw=0.6)
+        ax.set_xlabel(f"approach ({scales[0][1]})")
+        ax.set_ylabel(f"normal force ({scales[1][1]})")
+    whole.set_xlim(*(limit / scales[0][0] for limit in _approach_limits(datasets)))
+    tension = max(float(r.scalars["pull_off_force"]) for r in chosen) or 1.0
+    zoom.set_ylim(-ZOOM * tension / scales[1][0], ZOOM * tension / scales[1][0])
+    left, _ = _approach_limits(datasets)
+    right = max(
+        float(np.asarray(d["approach"])[np.asarray(d["force"]) <= ZOOM * tension].max()) for d in datasets
+    )
+    zoom.set_xlim(left / scales[0][0], right / scales[0][0])
     winkler = any("winkler_force" in d for d in datasets)
-    ax.set_title("adhesive load-unload cycle" + (" (dashed: Winkler springs, paper 000)" if winkler else ""))
+    whole.set_title("load-unload cycle" + (" (dashed: Winkler springs)" if winkler else ""))
+    zoom.set_title("near the pull-off")
+    ax = zoom
     legend(ax, fontsize="small")
     return figure
+
+
+ZOOM = 1.5
+"""The right panel of ``force_approach`` spans forces of +-this many times the largest pull-off."""
 
 
 MAP_MARGIN = 4
