@@ -84,7 +84,7 @@ class AdhesionParameters(CaseParameters):
     max_approach: Length
     """Deepest approach of the cycle [m], from the first touch."""
     start: Length | None = None
-    """First (and last requested) approach [m]; default START_RANGES ranges apart."""
+    """First (and last requested) approach [m]; default five interaction ranges apart."""
     steps: int = Field(default=40, ge=2, le=2000)
     """Equal steps from start to max_approach (and back); more are inserted at fast changes."""
     jump_resolution: Length | None = None
