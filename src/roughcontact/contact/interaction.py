@@ -18,7 +18,9 @@ eps, so that g = 0 is contact for every law. It has no hard wall: the repulsion 
 keeps the surfaces apart, and the solver bounds l >= eps / 2 (a compression of 1344 w / eps;
 reaching it is reported as an error, see :mod:`roughcontact.contact.adhesive`).
 
-Each law's ``length`` is its range (rho, or eps) and ``peak_tension`` its largest tension sigma0.
+Each law's ``length`` is its range (rho, or eps) and ``peak_tension`` its largest tension sigma0;
+``stiffness`` is d^2 phi / d g^2 = -dp/dg, which the solver's preconditioner and step length use
+where it is positive (the Lennard-Jones repulsion and the top of its attraction).
 The Maugis parameter of a sphere uses sigma0 (Maugis 1992); for the Lennard-Jones law
 sigma0 = 16 w / (9 sqrt(3) eps) ~ 1.026 w / eps.
 
@@ -111,6 +113,10 @@ class MaugisDugdale(_Law):
         """p(g) = -dphi/dg [Pa]: -sigma0 inside the range, 0 beyond."""
         return np.where(gap < self.length, -self.peak_tension, 0.0)
 
+    def stiffness(self, gap: np.ndarray) -> np.ndarray:
+        """d^2 phi / d g^2 [Pa/m]: 0 (constant tension; the drop at rho is not a stiffness)."""
+        return np.zeros_like(gap, dtype=float)
+
 
 @dataclass(frozen=True)
 class Exponential(_Law):
@@ -141,6 +147,10 @@ class Exponential(_Law):
     def traction(self, gap: np.ndarray) -> np.ndarray:
         """p(g) = -(w / rho) exp(-g / rho) [Pa]."""
         return -self.peak_tension * np.exp(-gap / self.length)
+
+    def stiffness(self, gap: np.ndarray) -> np.ndarray:
+        """d^2 phi / d g^2 = -(w / rho^2) exp(-g / rho) [Pa/m] (negative: the tension falls with g)."""
+        return -(self.peak_tension / self.length) * np.exp(-gap / self.length)
 
 
 @dataclass(frozen=True)
@@ -182,6 +192,16 @@ class LennardJones(_Law):
     def traction(self, gap: np.ndarray) -> np.ndarray:
         """p(g) [Pa]: repulsive (> 0) below the equilibrium distance, tensile beyond."""
         return -lj.attractive_stress(gap + self.length, self.work_of_adhesion, self.length)
+
+    def stiffness(self, gap: np.ndarray) -> np.ndarray:
+        """d^2 phi / d g^2 = (8 w / 3 eps^2) [9 (eps/l)^10 - 3 (eps/l)^4] [Pa/m]: 16 w / eps^2 at g = 0.
+
+        Positive below the peak tension (l < 3^(1/6) eps), growing as l^-10 in repulsion.
+        """
+        ratio = self.length / (gap + self.length)
+        fourth = ratio**4
+        scale = 8.0 * self.work_of_adhesion / (3.0 * self.length**2)
+        return scale * fourth * (9.0 * fourth * ratio * ratio - 3.0)
 
 
 LAWS = {"maugis_dugdale": MaugisDugdale, "exponential": Exponential, "lennard_jones": LennardJones}
