@@ -123,12 +123,13 @@ def solve_adhesive(
         A step did not converge (its residual and iterations are reported).
     """
     programme = _programme(approach)
-    if not hasattr(interaction, "traction"):
+    if not all(hasattr(interaction, name) for name in ("energy", "traction", "stiffness")):
         raise InputError(
             "interaction",
             f"{interaction!r} is not an interaction law.",
             "pass MaugisDugdale(w, rho), Exponential(w, rho) or LennardJones(w, eps) "
-            "from roughcontact.contact.interaction.",
+            "from roughcontact.contact.interaction (a law of your own needs energy, traction and "
+            "stiffness of the gap).",
         )
     check_heights(topography)
     positive(tolerance, "tolerance", example=1e-6)
