@@ -49,7 +49,7 @@ def test_paper000_example_end_to_end(tmp_path, shrunk, cli):
     output = tmp_path / "out"
     status, out, err = cli("run", study, "-o", output, "--no-progress")
     assert status == 0, err
-    assert "28 cases run, 0 reused, 0 failed" in out
+    assert "30 cases run, 0 reused, 0 failed" in out
     _check_results_table(output)
     _check_comparison(output, study)
     _check_figures_and_report(output)
