@@ -42,13 +42,23 @@ within 1 % and faster than both. A 32^2 warm-up compiles the numba kernels first
 ``--quick``: 64^2 and 128^2. ``tolerance`` (default 1e-6) is handed to everyone: ours and
 contactmechanics read it as the largest force imbalance of a pixel over the peak tension, tamaas as its
 own error; 1e-8 stalls ours (ConvergenceError at 64^2, residual 1.1e-8).
+
+Threads: OpenBLAS (numpy's ``vdot``, scipy's L-BFGS-B) runs on ``OPENBLAS_NUM_THREADS`` threads, set to 1
+here unless given: on a loaded 2-core machine its spinning threads made one ``np.vdot`` of 128^2 doubles
+take 0.2-18 ms instead of 3-50 us, which made ours (then on ``np.vdot``) 100 x slower per iteration at
+128^2 than at 64^2 and contactmechanics (L-BFGS-B) 320 s instead of 6.5 s at 128^2
+(``benchmarks/results/adhesion_2026-11-24.md``). tamaas's wheel is serial; ours keeps its default FFT
+threads.
 """
 
 from __future__ import annotations
 
+import os
+
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # before numpy's first import, see Threads above
+
 import argparse
 import json
-import os
 import platform
 import time
 
@@ -211,7 +221,8 @@ def main() -> None:
         f"adhesive contact, tolerance {args.tolerance:g}, {os.cpu_count()} CPUs, "
         f"{platform.processor() or platform.machine()}; warm-up (JIT) {warm_up_seconds:.2f} s; "
         f"E* {CONTACT_MODULUS:g} Pa, w {WORK_OF_ADHESION:g} J/m^2, rho {LENGTH:g} m, sphere R {RADIUS:g} m "
-        f"(JKR height unit {z:.3g} m), cell {CELL:g} m",
+        f"(JKR height unit {z:.3g} m), cell {CELL:g} m; "
+        f"OPENBLAS_NUM_THREADS={os.environ.get('OPENBLAS_NUM_THREADS')}",
         flush=True,
     )
     print(
@@ -231,6 +242,7 @@ def main() -> None:
                 "benchmark": "adhesion",
                 "tolerance": args.tolerance,
                 "to_detachment": args.to_detachment,
+                "openblas_num_threads": os.environ.get("OPENBLAS_NUM_THREADS"),
                 "warm_up_seconds": warm_up_seconds,
                 "contact_modulus": CONTACT_MODULUS,
                 "work_of_adhesion": WORK_OF_ADHESION,
