@@ -29,18 +29,12 @@ def _law(text: str) -> str:
 
 def _adhesion(args: argparse.Namespace) -> int:
     command = CommandStudy("roughcontact adhesion", f"adhesive load-unload cycle of {args.file.name}")
-    counter = None
-    if args.counter_file is not None:
-        counter = command.topography_file("counter_surface", args, file=args.counter_file)
     ranges = args.ranges or [args.range]
     index = command.analysis(
         "adhesion",
         "adhesion",
-        {
-            "topography": (command.topography_file("surface", args), "FILE"),
-            "counter_topography": (counter, "COUNTER_FILE"),
-            "material": (command.material("material", args, required=True), "--material"),
-            "counter_body": (command.material("counter_body", args), "--counter-body"),
+        command.two_bodies(args)
+        | {
             "law": (args.law, "--law"),
             "interaction_range": (ranges[0], "--ranges" if args.ranges else "--range"),
             "winkler": (args.winkler or None, "--winkler"),

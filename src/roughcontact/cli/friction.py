@@ -61,18 +61,12 @@ def _model_keys(args: argparse.Namespace) -> dict:
 
 def _friction(args: argparse.Namespace) -> int:
     command = CommandStudy("roughcontact friction", f"friction of {args.file.name} (paper 000's model)")
-    counter = None
-    if args.counter_file is not None:
-        counter = command.topography_file("counter_surface", args, file=args.counter_file)
     forces = args.normal_forces or [args.normal_force]
     index = command.analysis(
         "friction",
         "friction",
-        {
-            "topography": (command.topography_file("surface", args), "FILE"),
-            "counter_topography": (counter, "COUNTER_FILE"),
-            "material": (command.material("material", args, required=True), "--material"),
-            "counter_body": (command.material("counter_body", args), "--counter-body"),
+        command.two_bodies(args)
+        | {
             "normal_force": (forces[0], "--normal-forces" if args.normal_forces else "--normal-force"),
             "crossover": (args.crossover or None, "--crossover"),
             "resample": (args.resample or None, "--resample"),

@@ -271,6 +271,22 @@ class CommandStudy:
             self.set((*where, "detrend"), args.detrend, "--detrend")
         return name
 
+    def two_bodies(self, args: argparse.Namespace) -> dict[str, tuple[Any, str]]:
+        """Return the keys of FILE merged with COUNTER_FILE (when given) and their two materials.
+
+        ``topography``, ``counter_topography``, ``material`` (required) and ``counter_body``, each
+        with the option that gave it, for the commands of two rough bodies (friction, adhesion).
+        """
+        counter = None
+        if args.counter_file is not None:
+            counter = self.topography_file("counter_surface", args, file=args.counter_file)
+        return {
+            "topography": (self.topography_file("surface", args), "FILE"),
+            "counter_topography": (counter, "COUNTER_FILE"),
+            "material": (self.material("material", args, required=True), "--material"),
+            "counter_body": (self.material("counter_body", args), "--counter-body"),
+        }
+
     def topography(self, name: str, table: dict[str, Any], flag: str) -> str:
         """Add a generated topography (a ``generate = ...`` table); return ``name``."""
         self.document["topographies"][name] = table

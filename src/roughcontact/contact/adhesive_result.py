@@ -8,7 +8,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ..topography import Topography
-from .interaction import INTERACTION_FRACTION
+from .interaction import INTERACTION_FRACTION, MaugisDugdale
 
 RESOLVED_ZONE_PIXELS = 2.0
 """Pixels the cohesive zone must span for a smooth law's pull-off to be mesh-independent (the
@@ -211,7 +211,7 @@ class AdhesiveResult:
         warnings = []
         spacing = self._spacing
         pixels = self.cohesive_zone / spacing
-        stepped = self.interaction.name == "Maugis-Dugdale"
+        stepped = isinstance(self.interaction, MaugisDugdale)
         needed = MAUGIS_DUGDALE_ZONE_PIXELS if stepped else RESOLVED_ZONE_PIXELS
         if pixels < needed:
             largest = self.cohesive_zone / needed

@@ -48,7 +48,7 @@ from ...contact.adhesive_result import AdhesiveResult
 from ...errors import InputError
 from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Length, MaterialName, SurfaceEnergy, TopographyName
-from .common import evenly_chosen
+from .common import box_around, evenly_chosen
 
 START_RANGES = 5.0
 """Default start of the programme: this many interaction ranges apart (the Lennard-Jones and
@@ -108,10 +108,14 @@ class AdhesionParameters(CaseParameters):
     reading: Literal["default", "paper", "printed"] = "default"
     """Preset of paper 000's readings for the Winkler springs (winkler = true)."""
 
+    @property
+    def first_approach(self) -> float:
+        """``start``, or :data:`START_RANGES` interaction ranges apart [m]."""
+        return self.start if self.start is not None else -START_RANGES * self.interaction_range
+
     @model_validator(mode="after")
     def _check(self) -> AdhesionParameters:
-        start = self.start if self.start is not None else -START_RANGES * self.interaction_range
-        if not start < self.max_approach:
+        if not self.first_approach < self.max_approach:
             raise PydanticCustomError(
                 "quantity",
                 "start must lie below max_approach (the flat approaches, then withdraws)",
@@ -151,8 +155,7 @@ class AdhesionParameters(CaseParameters):
 
     def programme(self) -> np.ndarray:
         """Return the requested approaches [m]: ``start`` to ``max_approach`` and back, ``steps`` each way."""
-        start = self.start if self.start is not None else -START_RANGES * self.interaction_range
-        loading = np.linspace(start, self.max_approach, self.steps + 1)
+        loading = np.linspace(self.first_approach, self.max_approach, self.steps + 1)
         return np.concatenate([loading, loading[-2::-1]])
 
 
@@ -432,13 +435,8 @@ def _near_contact(data, interaction_range: float):
     data = data.assign(relative_gap=data["gap"] / interaction_range)
     if "y" not in data.dims:
         return data
-    rows, columns = np.nonzero(np.asarray(data["relative_gap"]) < GAP_RANGES)
-    if rows.size == 0:
-        return data
-    nx, ny = data.sizes["x"], data.sizes["y"]
-    x = slice(max(int(rows.min()) - MAP_MARGIN, 0), min(int(rows.max()) + MAP_MARGIN + 1, nx))
-    y = slice(max(int(columns.min()) - MAP_MARGIN, 0), min(int(columns.max()) + MAP_MARGIN + 1, ny))
-    return data.isel(x=x, y=y)
+    box = box_around(np.asarray(data["relative_gap"].transpose("x", "y")) < GAP_RANGES, MAP_MARGIN)
+    return data if box is None else data.isel(x=box[0], y=box[1])
 
 
 @caption(

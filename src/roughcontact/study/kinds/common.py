@@ -55,3 +55,19 @@ def panel_per_case(
     for ax, record in zip(axes[0], chosen, strict=True):
         draw(record, record.dataset(), ax)
     return figure
+
+
+def box_around(mask: np.ndarray, margin: int) -> tuple[slice, slice] | None:
+    """Return the rows and columns of the smallest box around every True of ``mask``, ``margin`` wider.
+
+    Clipped to the grid; None when ``mask`` holds no True. Crops stored or drawn fields to where
+    something happens (a contact, the springs that carry friction).
+    """
+    rows, columns = np.nonzero(mask)
+    if rows.size == 0:
+        return None
+    nx, ny = mask.shape
+    return (
+        slice(max(int(rows.min()) - margin, 0), min(int(rows.max()) + margin + 1, nx)),
+        slice(max(int(columns.min()) - margin, 0), min(int(columns.max()) + margin + 1, ny)),
+    )

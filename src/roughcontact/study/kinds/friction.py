@@ -97,7 +97,7 @@ from ...errors import InputError
 from ...friction.winkler_lj import WinklerLJResult
 from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind, caption
 from ..schema import Force, Length, MaterialName, Pressure, Strict, SurfaceEnergy, Time, TopographyName
-from .common import grouped
+from .common import box_around, grouped
 
 log = logging.getLogger(__name__)
 
@@ -360,12 +360,10 @@ def _cropped(result) -> Any:
     None when that box holds more than :data:`FIELD_POINTS` points (a nominally flat contact,
     where most of the scan carries friction): the scalars are the result then.
     """
-    rows, columns = np.nonzero(result.mechanical | result.bonded)
-    if rows.size == 0:  # nothing carries friction (only under adhesion_sign="printed")
+    box = box_around(result.mechanical | result.bonded, FIELD_MARGIN)
+    if box is None:  # nothing carries friction (only under adhesion_sign="printed")
         return None
-    nx, ny = result.mechanical.shape
-    x = slice(max(int(rows.min()) - FIELD_MARGIN, 0), min(int(rows.max()) + FIELD_MARGIN + 1, nx))
-    y = slice(max(int(columns.min()) - FIELD_MARGIN, 0), min(int(columns.max()) + FIELD_MARGIN + 1, ny))
+    x, y = box
     if (x.stop - x.start) * (y.stop - y.start) > FIELD_POINTS:
         return None
     return result.to_xarray().isel(x=x, y=y)
