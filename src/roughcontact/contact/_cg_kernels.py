@@ -63,10 +63,10 @@ def gap_and_residual(p, u, h0, delta, cap, scale, t, g, g_stage, free, admit_ove
     -------
     (sum of p over the elastic contact, sum of p |g| over it, largest overlap -g below the cap,
     largest open gap g at the cap, number of points in the step set, and over the step set the
-    sums of g^2, of g and of t)
+    sums of g^2, of g, of t and of g t)
     """
     s_p, s_pg, overlap, opened, count = 0.0, 0.0, 0.0, 0.0, 0
-    s_gg, s_g, s_t = 0.0, 0.0, 0.0
+    s_gg, s_g, s_t, s_gt = 0.0, 0.0, 0.0, 0.0
     m0, m1 = p.shape
     for i in range(m0):
         for j in range(m1):
@@ -89,24 +89,37 @@ def gap_and_residual(p, u, h0, delta, cap, scale, t, g, g_stage, free, admit_ove
                 s_gg += gi * gi
                 s_g += gi
                 s_t += t[i, j]
+                s_gt += gi * t[i, j]
             else:
                 free[i, j] = 0
                 g_stage[i, j] = 0.0
-    return s_p, s_pg, overlap, opened, count, s_gg, s_g, s_t
+    return s_p, s_pg, overlap, opened, count, s_gg, s_g, s_t, s_gt
 
 
 @nb.njit(**_JIT)
-def restricted_sums(z, g, free):
-    """Return (sum z, sum g z) over the step set."""
-    s_z, s_gz = 0.0, 0.0
+def restricted_sums(z, g, free, g_previous):
+    """Return sums over the step set for a Polak-Ribiere coefficient; then store g in ``g_previous``.
+
+    Returns
+    -------
+    (sum z, sum g z, sum g_previous z, sum g_previous) over the step set, with ``g_previous``
+    the gap of the iteration before (float32: it only steers the coefficient). Afterwards
+    ``g_previous`` holds g at every point.
+    """
+    s_z, s_gz, s_pz, s_p = 0.0, 0.0, 0.0, 0.0
     m0, m1 = g.shape
     for i in range(m0):
         for j in range(m1):
+            gi = g[i, j]
             if free[i, j]:
                 zi = float(z[i, j])
+                previous = float(g_previous[i, j])
                 s_z += zi
-                s_gz += g[i, j] * zi
-    return s_z, s_gz
+                s_gz += gi * zi
+                s_pz += previous * zi
+                s_p += previous
+            g_previous[i, j] = gi
+    return s_z, s_gz, s_pz, s_p
 
 
 @nb.njit(**_JIT)
