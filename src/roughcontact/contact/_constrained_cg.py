@@ -35,12 +35,12 @@ projected on the feasible set, with the box constraint of Almqvist et al. (2007)
    (2x2 block-averaged heights, each level warm-started from the one below, as aspher's
    ``solve_nested``) was measured too: it took as many fine-level iterations as a cold start
    (87 vs 80 at 2048^2), since the fine level still has to find its own contact set. Points at
-   the cap with g > 0 (which want to unload) join the free set. Under load control a constant is subtracted from t on the free set so that it
-   sums to zero there (the step then keeps the force; Polonsky-Keer instead remove the free-set
-   mean of r = K t, which equals this when t sums to zero). Step tau = (g.t) / (t.K t), with
-   t.K t computed in Fourier space by Parseval's theorem from one forward FFT of t in single
-   precision (K t itself is never formed). Preconditioned, the points out of contact that
-   overlap (p = 0 with g < 0) join the set too.
+   the cap with g > 0 (which want to unload) join the free set. Under load control a constant is
+   subtracted from t on the free set so that it sums to zero there (the step then keeps the force;
+   Polonsky-Keer instead remove the free-set mean of r = K t, which equals this when t sums to
+   zero). Step tau = (g.t) / (t.K t), with t.K t computed in Fourier space by Parseval's theorem
+   from one forward FFT of t in single precision (K t itself is never formed). Preconditioned,
+   the points out of contact that overlap (p = 0 with g < 0) join the set too.
 4. p -= tau t on the set; clip to [0, p_max]. Plain: points out of contact that overlap enter by
    -tau g (Polonsky-Keer's I_ol step); clip again. Preconditioned they already took part in the
    step: -tau g would be no pressure there, since tau is dimensionless when t is built from M g

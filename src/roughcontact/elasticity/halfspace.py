@@ -193,7 +193,8 @@ class SurfaceCompliance:
         self.boundary = boundary
         self.layer = layer
         self.workers = resolve_workers(workers)
-        self.transform_shape = self.shape if boundary == "periodic" else (2 * self.shape[0], 2 * self.shape[1])
+        padded = (2 * self.shape[0], 2 * self.shape[1])
+        self.transform_shape = self.shape if boundary == "periodic" else padded
         self._counter_body = counter_body
         self.kernel = self._kernel(boundary)
         self._derived = {}  # made on first use: inverse kernel, single-precision transform and kernels
@@ -213,7 +214,8 @@ class SurfaceCompliance:
             shape, size = (2 * self.shape[0], 2 * self.shape[1]), (2 * self.size[0], 2 * self.size[1])
         layer = self.layer
         if layer is not None:
-            layer_compliance, counter_compliance = _compliance(layer.material), _compliance(self._counter_body)
+            layer_compliance = _compliance(layer.material)
+            counter_compliance = _compliance(self._counter_body)
             q = kernels.wavevector_magnitude(shape, size)
             ratio = (layer.factor(q) * layer_compliance + counter_compliance) * self.contact_modulus
             kernel = kernel * ratio
