@@ -115,7 +115,7 @@ class StagedCompliance:
         return self._window.apply_staged(self._inverse)
 
     def quadratic_form(self) -> float:
-        """Return f . K f of :attr:`approximate` (Parseval, one single-precision forward transform)."""
+        """Return f . K f of :attr:`direction` (Parseval, one single-precision forward transform)."""
         return self._single.power_staged(self._weights)
 
 
