@@ -114,6 +114,7 @@ import numpy as np
 from ..errors import ConvergenceError, InputError
 from . import _shear_kernels as kernels
 from ._shear_cg import RIM, ShearResult, check_below_sliding, optimality
+from ._shear_kernels import length
 
 _JIT = dict(cache=True, nogil=True)
 
@@ -153,7 +154,7 @@ def _project_shifted(zx, zy, c, mx, my, qx, qy, yx, yy):
         x = zx[i] + mx
         y = zy[i] + my
         ci = c[i]
-        norm = math.hypot(x, y)
+        norm = length(x, y)
         if norm > ci:
             scale = ci / norm if norm > 0.0 else 0.0
             x *= scale
@@ -173,7 +174,7 @@ def _force_map(zx, zy, c, mx, my):
             continue
         ax = zx[i] + mx
         ay = zy[i] + my
-        r = math.hypot(ax, ay)
+        r = length(ax, ay)
         if r <= ci:
             fx += ax
             fy += ay
@@ -204,7 +205,7 @@ def _force_multiplier(zx, zy, c, target_x, target_y, mx, my, scale, tolerance, m
     gx, gy = fx - target_x, fy - target_y
     psi = phi - mx * target_x - my * target_y
     for _ in range(max_steps):
-        g = math.hypot(gx, gy)
+        g = length(gx, gy)
         if g <= tolerance * scale:
             break
         ridge = 1e-12 * (jxx + jyy) + 1e-300
@@ -213,22 +214,22 @@ def _force_multiplier(zx, zy, c, target_x, target_y, mx, my, scale, tolerance, m
         dx = -(d * gx - b * gy) / det
         dy = -(a * gy - b * gx) / det
         slope = gx * dx + gy * dy
-        length = 1.0
+        fraction = 1.0
         accepted = False
         for _ in range(60):
-            nx, ny = mx + length * dx, my + length * dy
+            nx, ny = mx + fraction * dx, my + fraction * dy
             fx, fy, njxx, njxy, njyy, nphi = _force_map(zx, zy, c, nx, ny)
             ngx, ngy = fx - target_x, fy - target_y
             npsi = nphi - nx * target_x - ny * target_y
-            if npsi <= psi + 1e-4 * length * slope or math.hypot(ngx, ngy) <= (1.0 - 1e-4 * length) * g:
+            if npsi <= psi + 1e-4 * fraction * slope or length(ngx, ngy) <= (1.0 - 1e-4 * fraction) * g:
                 accepted = True
                 break
-            length *= 0.5
+            fraction *= 0.5
         if not accepted:
             break
         mx, my, gx, gy, psi = nx, ny, ngx, ngy, npsi
         jxx, jxy, jyy = njxx, njxy, njyy
-    return mx, my, math.hypot(gx, gy)
+    return mx, my, length(gx, gy)
 
 
 # ------------------------------------------------------------------------------------------------

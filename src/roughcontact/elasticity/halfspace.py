@@ -196,6 +196,8 @@ class SurfaceCompliance:
         padded = (2 * self.shape[0], 2 * self.shape[1])
         self.transform_shape = self.shape if boundary == "periodic" else padded
         self._counter_body = counter_body
+        self._fft_backend = fft_backend
+        self._windows: dict[tuple[int, int], SurfaceCompliance] = {}
         self.kernel = self._kernel(boundary)
         self._derived = {}  # made on first use: inverse kernel, single-precision transform and kernels
         self._fft = RealFFT2(self.transform_shape, self.workers, input_shape=self.shape, backend=fft_backend)
@@ -225,6 +227,36 @@ class SurfaceCompliance:
                     layer.thickness, m.youngs_modulus, m.poissons_ratio, base=layer.base
                 )
         return kernel
+
+    def window(self, shape) -> SurfaceCompliance:
+        """Return the half-space operator on a ``shape`` sub-grid of this free surface (same pixels).
+
+        Exact on the sub-grid (:func:`~roughcontact.elasticity.kernels.sub_grid`). Built once per
+        shape.
+
+        Raises
+        ------
+        InputError
+            On a periodic surface, or with a layer (a free layer's kernel is the padded grid's
+            periodic one times a factor, so it depends on the padded grid).
+        """
+        if self.layer is not None:
+            raise InputError(
+                "layer", "a layered body has no exact sub-grid operator.", "use the whole grid's."
+            )
+        shape, size = kernels.sub_grid(self.shape, self.size, self.boundary, shape)
+        if shape == self.shape:
+            return self
+        if shape not in self._windows:
+            self._windows[shape] = SurfaceCompliance(
+                shape,
+                size,
+                self.contact_modulus,
+                boundary="free",
+                workers=self.workers,
+                fft_backend=self._fft_backend,
+            )
+        return self._windows[shape]
 
     def __call__(self, pressure: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
         """Return the surface displacement [m] (into the body) of ``pressure`` [Pa].

@@ -52,6 +52,29 @@ from ..errors import InputError
 BOUNDARIES = ("periodic", "free")
 
 
+def sub_grid(shape, size, boundary: str, window) -> tuple[tuple[int, int], tuple[float, float]]:
+    """Return the shape and physical size [m] of a ``window`` sub-grid with the grid's own pixels.
+
+    For the operators' ``window`` methods: on a free surface the response of a point depends only
+    on its offset from each loaded pixel, so a zero-padded operator of the sub-grid gives at its
+    points the displacements the whole grid's gives to tractions that vanish outside it.
+
+    Raises
+    ------
+    InputError
+        On a periodic surface (every pixel of a period interacts with the others' images) or a
+        window that does not fit in the grid.
+    """
+    window = (int(window[0]), int(window[1]))
+    if boundary != "free":
+        raise InputError(
+            "boundary", "a periodic surface has no sub-grid operator.", "use the whole grid's operator."
+        )
+    if not (0 < window[0] <= shape[0] and 0 < window[1] <= shape[1]):
+        raise InputError("window", f"{window} does not fit in the grid {tuple(shape)}.", None)
+    return window, (window[0] * size[0] / shape[0], window[1] * size[1] / shape[1])
+
+
 def wavevectors(shape: tuple[int, int], size: tuple[float, float]) -> tuple[np.ndarray, np.ndarray]:
     """Return ``(qx, qy)`` [rad/m] of the rfft2 layout, broadcastable to ``(nx, ny // 2 + 1)``."""
     qx = 2.0 * np.pi * fft.fftfreq(shape[0], d=size[0] / shape[0])[:, None]

@@ -240,6 +240,8 @@ class TractionCompliance:
                 free_kernels(self.shape, self.size, self.pair),
             )
         self._k = built
+        self._bodies, self._workers = (body, counter_body), workers
+        self._windows: dict[tuple[int, int], TractionCompliance] = {}
         self._prepared = {}  # multipliers divided by the transform size, made on first use
         self._spectrum = None  # work spectrum of _symmetric_multiplier
         self.coupled = self.pair.D != 0.0
@@ -249,6 +251,22 @@ class TractionCompliance:
     def pixel_area(self) -> float:
         """Area of one pixel [m^2]."""
         return self.size[0] * self.size[1] / (self.shape[0] * self.shape[1])
+
+    def window(self, shape) -> TractionCompliance:
+        """Return this pair's operator on a ``shape`` sub-grid of this free surface (same pixels).
+
+        Exact on the sub-grid (:func:`~roughcontact.elasticity.kernels.sub_grid`): a contact that
+        covers a quarter of the grid is solved with transforms a quarter the size. Built once per
+        shape; raises :class:`~roughcontact.errors.InputError` on a periodic surface.
+        """
+        shape, size = kernels.sub_grid(self.shape, self.size, self.boundary, shape)
+        if shape == self.shape:
+            return self
+        if shape not in self._windows:
+            self._windows[shape] = TractionCompliance(
+                shape, size, *self._bodies, boundary="free", workers=self._workers
+            )
+        return self._windows[shape]
 
     def shear(self, qx: np.ndarray, qy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Relative tangential displacements (s_x, s_y) [m] of the shear tractions alone."""

@@ -1,0 +1,148 @@
+"""Free-surface steps solved on the box around the contact give the whole grid's answers (issue 18).
+
+The sub-grid operators (``window``) of a free surface are exact on their sub-grid: checked against
+the whole grid's operator to round-off. A loading programme whose increments and coupling passes
+run on the box (the default) is compared with the same programme forced onto the whole grid
+(``BOX_AREA = 0``): a coupled pair (Dundurs beta != 0, frictional normal loading, so the normal
+solves use the box too) and an uncoupled one (beta = 0, nu = 0.5 on a rigid flat).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from roughcontact.analytic import mindlin
+from roughcontact.contact import _programme, solve_normal, solve_tangential
+from roughcontact.contact.paths import stroke_path
+from roughcontact.elasticity.halfspace import ElasticLayer, SurfaceCompliance
+from roughcontact.elasticity.tangential import TractionCompliance
+from roughcontact.errors import InputError
+from roughcontact.materials import Material, contact_modulus
+from roughcontact.topography import generate
+
+BALL = Material(1e9, 0.3, "ball")
+FLAT = Material(3e9, 0.2, "flat")
+HDPE = Material(0.98e9, 0.5, "HDPE")
+
+
+def _box_fields(rng, shape, box):
+    full = np.zeros(shape)
+    full[box] = rng.normal(size=(box[0].stop - box[0].start, box[1].stop - box[1].start))
+    return full
+
+
+def test_sub_grid_operators_equal_the_whole_grids_on_their_box():
+    rng = np.random.default_rng(3)
+    shape, size = (40, 48), (40e-6, 52e-6)
+    box = (slice(5, 17), slice(7, 27))
+    sub = (12, 20)
+    traction = TractionCompliance(shape, size, BALL, FLAT, boundary="free")
+    qx, qy, p = (_box_fields(rng, shape, box) for _ in range(3))
+    window = traction.window(sub)
+    for whole, part in (
+        (traction.shear(qx, qy), window.shear(qx[box], qy[box])),
+        (traction.slip_from_pressure(p), window.slip_from_pressure(p[box])),
+        ((traction.normal_from_shear(qx, qy),), (window.normal_from_shear(qx[box], qy[box]),)),
+    ):
+        for a, b in zip(whole, part, strict=True):
+            assert np.max(np.abs(a[box] - b)) <= 1e-12 * np.max(np.abs(a))
+    normal = SurfaceCompliance(shape, size, contact_modulus(BALL, FLAT), boundary="free")
+    u = normal(p)
+    assert np.max(np.abs(u[box] - normal.window(sub)(p[box]))) <= 1e-12 * np.max(np.abs(u))
+    assert traction.window(sub) is window  # built once per shape
+    assert traction.window(shape) is traction
+
+
+@pytest.mark.parametrize(
+    "build, window, field",
+    [
+        (lambda: TractionCompliance((16, 16), (1e-6, 1e-6), BALL), (8, 8), "boundary"),
+        (lambda: TractionCompliance((16, 16), (1e-6, 1e-6), BALL, boundary="free"), (8, 17), "window"),
+        (lambda: SurfaceCompliance((16, 16), (1e-6, 1e-6), 1e9), (8, 8), "boundary"),
+        (
+            lambda: SurfaceCompliance(
+                (16, 16), (1e-6, 1e-6), layer=ElasticLayer(1e-7, BALL, "bonded"), boundary="free"
+            ),
+            (8, 8),
+            "layer",
+        ),
+    ],
+)
+def test_a_sub_grid_that_is_not_exact_is_refused(build, window, field):
+    with pytest.raises(InputError) as error:
+        build().window(window)
+    assert error.value.field == field
+
+
+def test_the_contact_box_holds_the_contact_and_is_kept_while_it_does():
+    contact = np.zeros((200, 160), dtype=bool)
+    contact[60:130, 20:41] = True
+    box = _programme.contact_box(contact, None)
+    rows, columns = box
+    assert rows.start <= 60 and rows.stop >= 130 and columns.start <= 20 and columns.stop >= 41
+    assert 0 <= rows.start and rows.stop <= 200 and 0 <= columns.start and columns.stop <= 160
+    for side in (rows.stop - rows.start, columns.stop - columns.start):
+        assert side == _programme.transform_friendly(side)
+    contact[70:80, 25:30] = False  # a smaller contact keeps the box
+    assert _programme.contact_box(contact, box) == box
+    contact[10, 100] = True  # a point outside gives a new box around everything
+    grown = _programme.contact_box(contact, box)
+    assert grown is None or (grown[0].start <= 10 and grown[1].stop > 100)
+    assert _programme.contact_box(np.zeros((50, 50), dtype=bool), None) is None
+    assert _programme.contact_box(np.ones((50, 50), dtype=bool), None) is None  # no cheaper than the grid
+
+
+@pytest.mark.parametrize("length", [1, 2, 3, 17, 100, 257, 1000, 4097])
+def test_transform_friendly_sides_are_small_multiples_of_powers_of_two(length):
+    side = _programme.transform_friendly(length)
+    assert length <= side <= 1.2 * length + 1
+    odd = side
+    while odd % 2 == 0:
+        odd //= 2
+    assert odd in (1, 3, 5, 7, 9, 15)
+
+
+def _rough_ball(n, material, counter):
+    force, radius = 0.5, 10e-3
+    a = mindlin.hertz_contact_radius(force, radius, contact_modulus(material, counter))
+    topography = generate.sphere_with_roughness(
+        (n, n), (4 * a, 4 * a), radius=radius, rms_height=0.05 * a**2 / radius, seed=4
+    )
+    return topography, force
+
+
+@pytest.mark.parametrize("material, counter", [(BALL, FLAT), (HDPE, None)], ids=["coupled", "beta 0"])
+def test_a_loop_on_the_contact_box_equals_the_loop_on_the_whole_grid(monkeypatch, material, counter):
+    topography, force = _rough_ball(64, material, counter)
+    normal = solve_normal(topography, material, counter_body=counter, force=force, tolerance=1e-11)
+    path = stroke_path(2e-6, cycles=1, steps_per_stroke=5)
+
+    def loop():
+        return solve_tangential(
+            normal,
+            material,
+            counter_body=counter,
+            friction_coefficient=0.3,
+            displacement=path,
+            tolerance=1e-11,
+            fields_at="last",
+        )
+
+    boxes = []
+    contact_box = _programme.contact_box
+    monkeypatch.setattr(_programme, "contact_box", lambda *a: boxes.append(contact_box(*a)) or boxes[-1])
+    boxed = loop()
+    assert boxes and all(box is not None for box in boxes[1:])  # the box was used
+    monkeypatch.setattr(_programme, "BOX_AREA", 0.0)
+    whole = loop()
+    scale = 0.3 * force
+    assert np.max(np.abs(boxed.force - whole.force)) <= 1e-10 * scale  # measured 7e-13
+    last, reference = boxed.states[len(path) - 1], whole.states[len(path) - 1]
+    peak = 0.3 * np.max(reference.pressure)
+    for name in ("shear_x", "shear_y", "slip_x", "slip_y"):
+        difference = np.max(np.abs(getattr(last, name) - getattr(reference, name)))
+        size = peak if name.startswith("shear") else np.max(np.abs(getattr(reference, name)))
+        assert difference <= 1e-9 * size, name  # measured 9e-11 (coupled), 2e-16
+    if counter is not None:  # coupled: the normal solves ran on the box too
+        assert np.max(np.abs(last.pressure - reference.pressure)) <= 1e-9 * np.max(reference.pressure)
