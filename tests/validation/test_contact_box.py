@@ -1,10 +1,14 @@
-"""Free-surface steps solved on the box around the contact give the whole grid's answers (issue 18).
+"""Free-surface solves on the box around the contact give the whole grid's answers (issue 18).
 
 The sub-grid operators (``window``) of a free surface are exact on their sub-grid: checked against
-the whole grid's operator to round-off. A loading programme whose increments and coupling passes
-run on the box (the default) is compared with the same programme forced onto the whole grid
-(``BOX_AREA = 0``): a coupled pair (Dundurs beta != 0, frictional normal loading, so the normal
-solves use the box too) and an uncoupled one (beta = 0, nu = 0.5 on a rigid flat).
+the whole grid's operator to round-off. The normal solve's cascade (coarse levels, each on its
+box, then the whole grid's check) gives the whole grid's answer to 1e-8 of the peak pressure,
+also when the coarse levels lose a contact patch (a one-pixel peak that 2 x 2 averaging lowers
+below the flat): the check then iterates on the whole grid and finds it. A loading programme
+whose increments and coupling passes run on the box (the default) is compared with the same
+programme forced onto the whole grid (``BOX_AREA = 0``): a coupled pair (Dundurs beta != 0,
+frictional normal loading, so the normal solves use the box too) and an uncoupled one (beta = 0,
+nu = 0.5 on a rigid flat).
 """
 
 from __future__ import annotations
@@ -13,13 +17,14 @@ import numpy as np
 import pytest
 
 from roughcontact.analytic import mindlin
-from roughcontact.contact import _programme, solve_normal, solve_tangential
+from roughcontact.contact import _box, _constrained_cg, solve_normal, solve_tangential
+from roughcontact.contact.normal import compliance_for
 from roughcontact.contact.paths import stroke_path
 from roughcontact.elasticity.halfspace import ElasticLayer, SurfaceCompliance
 from roughcontact.elasticity.tangential import TractionCompliance
 from roughcontact.errors import InputError
 from roughcontact.materials import Material, contact_modulus
-from roughcontact.topography import generate
+from roughcontact.topography import Topography, generate
 
 BALL = Material(1e9, 0.3, "ball")
 FLAT = Material(3e9, 0.2, "flat")
@@ -78,24 +83,24 @@ def test_a_sub_grid_that_is_not_exact_is_refused(build, window, field):
 def test_the_contact_box_holds_the_contact_and_is_kept_while_it_does():
     contact = np.zeros((200, 160), dtype=bool)
     contact[60:130, 20:41] = True
-    box = _programme.contact_box(contact, None)
+    box = _box.contact_box(contact, None)
     rows, columns = box
     assert rows.start <= 60 and rows.stop >= 130 and columns.start <= 20 and columns.stop >= 41
     assert 0 <= rows.start and rows.stop <= 200 and 0 <= columns.start and columns.stop <= 160
     for side in (rows.stop - rows.start, columns.stop - columns.start):
-        assert side == _programme.transform_friendly(side)
+        assert side == _box.transform_friendly(side)
     contact[70:80, 25:30] = False  # a smaller contact keeps the box
-    assert _programme.contact_box(contact, box) == box
+    assert _box.contact_box(contact, box) == box
     contact[10, 100] = True  # a point outside gives a new box around everything
-    grown = _programme.contact_box(contact, box)
+    grown = _box.contact_box(contact, box)
     assert grown is None or (grown[0].start <= 10 and grown[1].stop > 100)
-    assert _programme.contact_box(np.zeros((50, 50), dtype=bool), None) is None
-    assert _programme.contact_box(np.ones((50, 50), dtype=bool), None) is None  # no cheaper than the grid
+    assert _box.contact_box(np.zeros((50, 50), dtype=bool), None) is None
+    assert _box.contact_box(np.ones((50, 50), dtype=bool), None) is None  # no cheaper than the grid
 
 
 @pytest.mark.parametrize("length", [1, 2, 3, 17, 100, 257, 1000, 4097])
 def test_transform_friendly_sides_are_small_multiples_of_powers_of_two(length):
-    side = _programme.transform_friendly(length)
+    side = _box.transform_friendly(length)
     assert length <= side <= 1.2 * length + 1
     odd = side
     while odd % 2 == 0:
@@ -130,11 +135,11 @@ def test_a_loop_on_the_contact_box_equals_the_loop_on_the_whole_grid(monkeypatch
         )
 
     boxes = []
-    contact_box = _programme.contact_box
-    monkeypatch.setattr(_programme, "contact_box", lambda *a: boxes.append(contact_box(*a)) or boxes[-1])
+    contact_box = _box.contact_box
+    monkeypatch.setattr(_box, "contact_box", lambda *a: boxes.append(contact_box(*a)) or boxes[-1])
     boxed = loop()
     assert boxes and all(box is not None for box in boxes[1:])  # the box was used
-    monkeypatch.setattr(_programme, "BOX_AREA", 0.0)
+    monkeypatch.setattr(_box, "BOX_AREA", 0.0)
     whole = loop()
     scale = 0.3 * force
     assert np.max(np.abs(boxed.force - whole.force)) <= 1e-10 * scale  # measured 7e-13
@@ -146,3 +151,58 @@ def test_a_loop_on_the_contact_box_equals_the_loop_on_the_whole_grid(monkeypatch
         assert difference <= 1e-9 * size, name  # measured 9e-11 (coupled), 2e-16
     if counter is not None:  # coupled: the normal solves ran on the box too
         assert np.max(np.abs(last.pressure - reference.pressure)) <= 1e-9 * np.max(reference.pressure)
+
+
+def _recorded(monkeypatch):
+    """Record (grid shape, iterations) of every engine solve."""
+    calls = []
+    engine = _box._constrained_cg.solve
+
+    def solve(operator, separation, **options):
+        result = engine(operator, separation, **options)
+        calls.append((separation.shape, result.iterations))
+        return result
+
+    monkeypatch.setattr(_box._constrained_cg, "solve", solve)
+    return calls
+
+
+def _whole_grid(topography, force, tolerance):
+    compliance = compliance_for(topography, BALL, counter_body=FLAT)
+    separation = topography.heights.max() - topography.heights
+    return compliance, separation, dict(pixel_area=topography.pixel_area, force=force, tolerance=tolerance)
+
+
+def test_the_cascade_of_boxes_gives_the_whole_grids_answer(monkeypatch):
+    topography, force = _rough_ball(256, BALL, FLAT)
+    compliance, separation, problem = _whole_grid(topography, force, 1e-10)
+    reference = _constrained_cg.solve(compliance, separation, **problem)
+    calls = _recorded(monkeypatch)
+    boxed = _box.solve(compliance, separation, **problem)
+    shapes = [shape for shape, _ in calls]
+    assert shapes[0] == (64, 64) and shapes[-1] == (256, 256)  # coarsest level first, the check last
+    assert all(shape[0] < 256 for shape in shapes[:-1])  # every other solve on a coarse grid or a box
+    assert calls[-1][1] == 0  # the check did not iterate: nothing outside the box overlaps
+    assert np.max(np.abs(boxed.pressure - reference.pressure)) <= 1e-8 * np.max(reference.pressure)
+    assert abs(boxed.approach - reference.approach) <= 1e-8 * reference.approach
+
+
+def test_a_patch_the_coarse_levels_lose_is_found_on_the_whole_grid(monkeypatch):
+    """A one-pixel peak away from the ball touches; averaged over 2 x 2 pixels it does not."""
+    topography, force = _rough_ball(256, BALL, FLAT)
+    heights = topography.heights.copy()
+    compliance, separation, problem = _whole_grid(topography, force, 1e-10)
+    plain = _constrained_cg.solve(compliance, separation, **problem)
+    peak = (30, 220)  # far outside the ball's contact
+    assert plain.gap[peak] > 0 and _box.contact_box(plain.pressure > 0)[1].stop <= peak[1]
+    heights[peak] += plain.gap[peak] + 0.5 * plain.approach  # it now overlaps by half the approach
+    peaked = Topography(heights, topography.size, periodic=False)
+    compliance, separation, problem = _whole_grid(peaked, force, 1e-10)
+    reference = _constrained_cg.solve(compliance, separation, **problem)
+    assert reference.pressure[peak] > 0
+    calls = _recorded(monkeypatch)
+    boxed = _box.solve(compliance, separation, **problem)
+    assert calls[-1][0] == (256, 256) and calls[-1][1] > 0  # the check had to iterate
+    assert calls[-2][0] != (256, 256)  # after a box solve that could not see the peak
+    assert boxed.pressure[peak] > 0
+    assert np.max(np.abs(boxed.pressure - reference.pressure)) <= 1e-8 * np.max(reference.pressure)

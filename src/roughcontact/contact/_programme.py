@@ -47,16 +47,13 @@ from .._version import __version__
 from ..elasticity.tangential import TractionCompliance
 from ..errors import ConvergenceError, InputError
 from ..progress import tracked
-from . import _constrained_cg, _shear_apg, _shear_cg
+from . import _box, _shear_apg, _shear_cg
 from .normal import compliance_for
 from .paths import as_path
 from .tangential_result import TangentialPathResult, TangentialState
 
 # Iterations the plain method gets under precondition="auto" before the preconditioned retry.
 PLAIN_ITERATIONS = 500
-# A free surface's increments are solved on a box around the contact when the box's area is at most
-# this fraction of the grid's (contact_box).
-BOX_AREA = 0.5
 # Shortest inserted step, as a fraction of the user's segment (step control stops refining there).
 SHORTEST_STEP = 1.0 / 256
 
@@ -195,9 +192,8 @@ class Stepper:
 
         The approach is the rigid approach of the flat from first touch of the undeformed surface.
         ``boxed`` (a coupling pass at an unchanged normal target, where the contact barely moves):
-        on a free surface the problem is first solved on the box around the contact
-        (:func:`contact_box`), and the whole grid's solve, warm-started from that answer, checks
-        it (no iteration when no point outside the box overlaps, else it goes on to the answer).
+        on a free surface the problem is first solved on the box around the current contact and
+        checked on the whole grid (:func:`roughcontact.contact._box.solve`).
         """
         separation, offset = self.separation, 0.0
         if shear is not None:
@@ -205,38 +201,34 @@ class Stepper:
             offset = float(separation.min())
             separation -= offset
         control, value = normal
-        solve = partial(
-            _constrained_cg.solve,
+        raw = _box.solve(
+            self.normal_operator,
+            separation,
             pixel_area=self.operator.pixel_area,
+            initial_pressure=pressure if np.any(pressure > 0) else None,
+            box=boxed,
             tolerance=self.tolerance,
             max_iterations=self.max_iterations,
             solver=f"{self.name} (normal contact)",
             **({"force": value} if control == "force" else {"approach": value - offset}),
         )
-        initial = pressure if np.any(pressure > 0) else None
-        if boxed and initial is not None and self.operator.boundary == "free":
-            box = self.box = contact_box(pressure > 0, self.box)
-            if box is not None:
-                window = self.normal_operator.window((box[0].stop - box[0].start, box[1].stop - box[1].start))
-                initial = np.zeros(pressure.shape)
-                initial[box] = solve(window, separation[box], initial_pressure=pressure[box]).pressure
-        raw = solve(self.normal_operator, separation, initial_pressure=initial)
         return raw.pressure, raw.approach + offset
 
     def increment(self, pressure, offset, initial, control):
         """Return the tangential increment at fixed pressure and its iterations (a failed plain try's too).
 
         On a free surface the increment is solved on a box around the contact
-        (:func:`contact_box`, :meth:`TractionCompliance.window`: the same problem, since q vanishes
-        outside the contact) and the slip increment w of the whole grid is formed from its tractions
-        once at the end (one application of the whole grid's operator).
+        (:func:`~roughcontact.contact._box.contact_box`, :meth:`TractionCompliance.window`: the
+        same problem, since q vanishes outside the contact) and the slip increment w of the whole
+        grid is formed from its tractions once at the end (one application of the whole grid's
+        operator).
         """
         box = None
         if self.operator.boundary == "free":
-            box = self.box = contact_box(pressure > 0, self.box)
+            box = self.box = _box.contact_box(pressure > 0, self.box)
         if box is None:
             return self._increment(self.operator, pressure, offset, initial, control)
-        operator = self.operator.window((box[0].stop - box[0].start, box[1].stop - box[1].start))
+        operator = self.operator.window(_box.shape_of(box))
         increment, used = self._increment(
             operator,
             pressure[box],
@@ -293,49 +285,6 @@ class Stepper:
         except ConvergenceError:
             increment = conjugate_gradients(fallback, self.max_iterations)
             return increment, budget + increment.iterations
-
-
-def transform_friendly(length: int) -> int:
-    """Return the smallest m 2^k >= ``length`` with m in (1, 3, 5, 7, 9, 15).
-
-    Twice such a side is transformed fast by FFTW; measured here (2 cores, the shear operator of a
-    free b x b box): 2.2-3.0 ms for b = 256, 264, 288 and 320, against 3.5-5.2 ms for 270, 272 and
-    294, so a slightly larger box of such a side is the cheaper one. Steps between candidates are
-    at most 20 %.
-    """
-    best = 1 << max(int(length) - 1, 0).bit_length()
-    for m in (3, 5, 7, 9, 15):
-        side = m
-        while side < length:
-            side *= 2
-        best = min(best, side)
-    return best
-
-
-def contact_box(contact: np.ndarray, previous: tuple[slice, slice] | None) -> tuple[slice, slice] | None:
-    """Return a box of the grid around the ``True`` points of ``contact``, or None for the whole grid.
-
-    ``previous`` is kept while it holds the contact (one operator for the steps of a loop). A new
-    box has the contact's extent plus a sixteenth and two pixels (room for a growing contact), each
-    side rounded up by :func:`transform_friendly`, and sits centred on the contact, shifted inside
-    the grid. None when the box's area would exceed :data:`BOX_AREA` of
-    the grid's (the whole grid is as cheap) or there is no contact.
-    """
-    rows, columns = np.flatnonzero(contact.any(axis=1)), np.flatnonzero(contact.any(axis=0))
-    if rows.size == 0:
-        return None
-    extent = ((rows[0], rows[-1] + 1), (columns[0], columns[-1] + 1))
-    if previous is not None and all(
-        s.start <= lo and hi <= s.stop for s, (lo, hi) in zip(previous, extent, strict=True)
-    ):
-        return previous
-    box = []
-    for (lo, hi), n in zip(extent, contact.shape, strict=True):
-        side = min(transform_friendly(hi - lo + (hi - lo) // 16 + 2), n)
-        start = min(max((lo + hi - side) // 2, 0), n - side)
-        box.append(slice(start, start + side))
-    sides = (box[0].stop - box[0].start) * (box[1].stop - box[1].start)
-    return None if sides > BOX_AREA * contact.size else (box[0], box[1])
 
 
 def preconditioning(precondition, operator):

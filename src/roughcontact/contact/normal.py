@@ -26,7 +26,7 @@ from ..elasticity.halfspace import ElasticLayer, SurfaceCompliance
 from ..errors import InputError
 from ..materials import Material, contact_modulus
 from ..topography import Topography
-from . import _constrained_cg
+from . import _box, _constrained_cg
 from .result import NormalContactResult
 
 # Width given to the y axis of a line scan solved as a (n, 1) grid; any value gives the same answer.
@@ -225,13 +225,9 @@ def solve_normal(
         solver="solve_normal",
     )
     if name == "approach":
-        raw = _constrained_cg.solve(
-            compliance, separation, approach=value, initial_pressure=initial, **common
-        )
+        raw = _box.solve(compliance, separation, approach=value, initial_pressure=initial, **common)
     elif hardness is None:
-        raw = _constrained_cg.solve(
-            compliance, separation, force=target_force, initial_pressure=initial, **common
-        )
+        raw = _box.solve(compliance, separation, force=target_force, initial_pressure=initial, **common)
     else:
         raw = _capped_at_force(
             compliance, separation, target_force, initial, guess, measure, hardness, common
@@ -275,7 +271,7 @@ def _capped_at_force(compliance, separation, target_force, initial, guess, measu
 
     def excess(delta: float) -> float:
         if delta not in solved:
-            raw = _constrained_cg.solve(
+            raw = _box.solve(
                 compliance, separation, approach=delta, initial_pressure=state["pressure"], **common
             )
             state["pressure"], solved[delta] = raw.pressure, raw

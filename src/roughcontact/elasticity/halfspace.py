@@ -258,6 +258,26 @@ class SurfaceCompliance:
             )
         return self._windows[shape]
 
+    def coarse(self) -> SurfaceCompliance:
+        """Return the half-space operator of this free grid coarsened 2 x 2 (pixels twice as wide).
+
+        For odd sides the last row or column is left out. Built once. Raises
+        :class:`~roughcontact.errors.InputError` as :meth:`window`.
+        """
+        if "coarse" not in self._derived:
+            self.window(self.shape)  # the same refusals
+            shape = (self.shape[0] // 2, self.shape[1] // 2)
+            spacing = (self.size[0] / self.shape[0], self.size[1] / self.shape[1])
+            self._derived["coarse"] = SurfaceCompliance(
+                shape,
+                (2 * shape[0] * spacing[0], 2 * shape[1] * spacing[1]),
+                self.contact_modulus,
+                boundary="free",
+                workers=self.workers,
+                fft_backend=self._fft_backend,
+            )
+        return self._derived["coarse"]
+
     def __call__(self, pressure: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
         """Return the surface displacement [m] (into the body) of ``pressure`` [Pa].
 
