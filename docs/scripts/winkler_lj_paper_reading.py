@@ -15,9 +15,8 @@ from __future__ import annotations
 from dataclasses import replace
 
 from roughcontact.errors import InputError
-from roughcontact.friction import PAPER, Readings, winkler_lj_model
-from roughcontact.materials import get_material
-from roughcontact.models.paper000 import paper000_model_options, paper000_scans, paper000_tip
+from roughcontact.friction import PAPER, Readings
+from roughcontact.models.paper000 import paper000_model, paper000_scans, paper000_tip
 from roughcontact.topography import Topography
 from roughcontact.units import format_si
 
@@ -33,13 +32,7 @@ def central(topography: Topography, points: int) -> Topography:
 
 def figures(readings: Readings, scan, tip) -> tuple[str, str, str]:
     """Return mu and adhesive / mechanical friction at 10 uN and the crossover load, as text."""
-    model = winkler_lj_model(
-        scan,
-        get_material("polysilicon"),
-        get_material("SiO2"),
-        counter_topography=tip,
-        **paper000_model_options(readings=readings),
-    )
+    model = paper000_model(scan, tip, readings=readings)
     try:
         result = model.solve(10e-6)
         crossover = model.crossover_load()

@@ -14,22 +14,15 @@ from __future__ import annotations
 from dataclasses import replace
 
 from roughcontact.errors import InputError
-from roughcontact.models.paper000 import paper000_model_options, paper000_scans, paper000_simulation, paper000_tip
-from roughcontact.friction import PRINTED, Readings, winkler_lj_model
+from roughcontact.friction import PRINTED, Readings
 from roughcontact.friction.readings import CHOICES
-from roughcontact.materials import get_material
+from roughcontact.models.paper000 import paper000_model, paper000_scans, paper000_simulation, paper000_tip
 from roughcontact.units import format_si
 
 
 def row(label: str, readings: Readings, scan, tip) -> str:
     """Return one Markdown row: mu, adhesive/mechanical ratio, mechanical springs, crossover."""
-    model = winkler_lj_model(
-        scan,
-        get_material("polysilicon"),
-        get_material("SiO2"),
-        counter_topography=tip,
-        **paper000_model_options(readings=readings),
-    )
+    model = paper000_model(scan, tip, readings=readings)
     try:
         result = model.solve(10e-6)
     except InputError as error:

@@ -182,3 +182,17 @@ def test_bad_values_are_refused_naming_the_field(cli, shrunk, tmp_path, replacem
     assert any(message in problem for problem in named), named
     status, _, stderr = cli("validate", path)
     assert status != 0 and field.rsplit(".", 1)[-1] in stderr
+
+
+def test_the_full_resolution_example_is_paper001_at_the_papers_pixels(examples):
+    """examples/paper001_full.toml differs from paper001.toml only in the grid and the window."""
+    coarse, full = load_study(examples / "paper001.toml"), load_study(examples / "paper001_full.toml")
+    assert len(full.cases) == len(coarse.cases) == 6
+    for a, b in zip(coarse.cases, full.cases, strict=True):
+        assert a.axes == b.axes and a.materials == b.materials
+        assert b.parameters.window == 448 and a.parameters.window == 64
+        assert b.parameters.model_copy(update={"window": 64}) == a.parameters
+        for name, ball in b.topographies.items():
+            assert ball.shape == (1024, 1024) and a.topographies[name].shape == (256, 256)
+            assert ball.size == a.topographies[name].size == 1.1e-3  # the paper's 1.1 mm field
+            assert ball.model_copy(update={"shape": (256, 256)}) == a.topographies[name]

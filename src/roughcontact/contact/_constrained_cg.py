@@ -171,9 +171,7 @@ def solve(
     h0 = separation
     upper = cap if cap is not None else np.inf
     # Pixel self-stiffness 1/K_ii [Pa/m]: turns an overlap into the pressure that closes it alone.
-    impulse = np.zeros_like(h0)
-    impulse.flat[0] = 1.0
-    stiffness = 1.0 / float(compliance(impulse).flat[0])
+    stiffness = 1.0 / compliance.self_compliance
     if not load_control and approach <= h0.min():
         p = np.zeros_like(h0)  # nothing overlaps: p = 0 is the exact solution, whatever the warm start
     elif initial_pressure is not None:

@@ -174,6 +174,7 @@ class Stepper:
                     / (self.mu * scale_p),
                 )
             if change <= self.coupling_tolerance:
+                increment = self.with_slip(increment, offset)
                 new = State(
                     pressure,
                     (qx, qy),
@@ -219,9 +220,9 @@ class Stepper:
 
         On a free surface the increment is solved on a box around the contact
         (:func:`~roughcontact.contact._box.contact_box`, :meth:`TractionCompliance.window`: the
-        same problem, since q vanishes outside the contact) and the slip increment w of the whole
-        grid is formed from its tractions once at the end (one application of the whole grid's
-        operator).
+        same problem, since q vanishes outside the contact); its slip increment w is then left
+        None until :meth:`with_slip` forms it on the whole grid, once for the converged coupling
+        pass.
         """
         box = None
         if self.operator.boundary == "free":
@@ -242,10 +243,21 @@ class Stepper:
             np.zeros(pressure.shape, dtype=bool),
         )
         qx[box], qy[box], stick[box] = increment.qx, increment.qy, increment.stick
-        wx, wy = self.operator.shear(qx, qy)
+        return replace(increment, qx=qx, qy=qy, wx=None, wy=None, stick=stick), used
+
+    def with_slip(self, increment, offset):
+        """Return ``increment`` with its slip increment w = C q + e - delta on the whole grid.
+
+        An increment solved on a box has none yet (:meth:`increment`): w is formed from its
+        tractions by one application of the whole grid's operator (the next steps need it where
+        points may touch later).
+        """
+        if increment.wx is not None:
+            return increment
+        wx, wy = self.operator.shear(increment.qx, increment.qy)
         wx += offset[0] - increment.delta[0]
         wy += offset[1] - increment.delta[1]
-        return replace(increment, qx=qx, qy=qy, wx=wx, wy=wy, stick=stick), used
+        return replace(increment, wx=wx, wy=wy)
 
     def _increment(self, operator, pressure, offset, initial, control):
         """:meth:`increment` with ``operator`` on the grid of its arguments."""

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import contextlib
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -227,6 +228,16 @@ class SurfaceCompliance:
                     layer.thickness, m.youngs_modulus, m.poissons_ratio, base=layer.base
                 )
         return kernel
+
+    @cached_property
+    def self_compliance(self) -> float:
+        """K_ii [m/Pa]: a pixel's displacement under its own unit pressure (the operator's diagonal).
+
+        The same at every pixel (the operator is translation-invariant); computed once.
+        """
+        impulse = np.zeros(self.shape)
+        impulse[0, 0] = 1.0
+        return float(self(impulse)[0, 0])
 
     def window(self, shape) -> SurfaceCompliance:
         """Return the half-space operator on a ``shape`` sub-grid of this free surface (same pixels).

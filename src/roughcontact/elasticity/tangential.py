@@ -349,7 +349,8 @@ class TractionCompliance:
         if not self.coupled:
             return np.zeros(self.shape)
         fx, fy = self._fft.forward(qx), self._fft.forward(qy)
-        return self._fft.inverse(-1j * (self._k["xz"] * fx + self._k["yz"] * fy))
+        _odd_sum(self._k["xz"], self._k["yz"], fx, fy)
+        return self._fft.inverse(fx)
 
 
 @nb.njit(cache=True, nogil=True)
@@ -361,6 +362,16 @@ def _mix_symmetric(xx, xy, yy, fx, fy):
         x, y = a[i], b[i]
         b[i] = mxx[i] * x + mxy[i] * y
         a[i] = mxy[i] * x + myy[i] * y
+
+
+@nb.njit(cache=True, nogil=True)
+def _odd_sum(kx, ky, fx, fy):
+    """In place, mode by mode: fx <- -i (kx fx + ky fy) (real kx, ky: the odd coupling kernels)."""
+    a, b = fx.ravel(), fy.ravel()
+    mx, my = kx.ravel(), ky.ravel()
+    for i in range(a.size):
+        s = mx[i] * a[i] + my[i] * b[i]
+        a[i] = complex(s.imag, -s.real)
 
 
 @nb.njit(cache=True, nogil=True)

@@ -171,10 +171,10 @@ class WinklerLJResult:
     mechanical_force, adhesive_force : float
         Sum of the spring forces P_i S [N] and of the attractions f(l_i) S [N] (stresses summed
         without S under ``balance_terms="pressures_printed"``).
-    adhesive_friction, mechanical_friction, friction : float
-        Sums of Q_i over bonded adhesive springs, over mechanical springs, and both [N].
-    mu : float
-        friction / normal_force: the coefficient of friction the model gives.
+    adhesive_friction, mechanical_friction : float
+        Sums of Q_i over bonded adhesive springs and over mechanical springs [N]; ``friction``
+        (their sum) and ``mu`` (friction / normal_force, the coefficient of friction the model
+        gives) are properties.
     residual : float
         Force-balance residual of eq. 2 at ``separation``, relative to the largest term.
     max_strain : float
@@ -213,8 +213,6 @@ class WinklerLJResult:
     adhesive_force: float
     adhesive_friction: float
     mechanical_friction: float
-    friction: float
-    mu: float
     residual: float
     max_strain: float
     negative_energy_springs: int
@@ -236,6 +234,16 @@ class WinklerLJResult:
         "bem_force": "N",
     }
     """SI units of the dimensional entries of :meth:`scalars`."""
+
+    @property
+    def friction(self) -> float:
+        """Adhesive plus mechanical friction [N]."""
+        return self.adhesive_friction + self.mechanical_friction
+
+    @property
+    def mu(self) -> float:
+        """The coefficient of friction, friction / normal_force."""
+        return self.friction / self.normal_force
 
     def scalars(self) -> dict[str, float]:
         """Return the scalar results as a flat dictionary (SI; units in :attr:`UNITS`).
@@ -824,8 +832,6 @@ class WinklerLJModel:
             adhesive_force=adhesive_force,
             adhesive_friction=adhesive_friction,
             mechanical_friction=mechanical_friction,
-            friction=adhesive_friction + mechanical_friction,
-            mu=(adhesive_friction + mechanical_friction) / load,
             residual=abs(balance) / scale,
             max_strain=float(compression.max(initial=0.0) / self.layer_thickness),
             negative_energy_springs=negative,
@@ -1057,8 +1063,6 @@ class WinklerLJModel:
             adhesive_force=adhesive_force,
             adhesive_friction=adhesive_friction,
             mechanical_friction=mechanical_friction,
-            friction=adhesive_friction + mechanical_friction,
-            mu=(adhesive_friction + mechanical_friction) / load,
             residual=abs(float(bem.force[-1]) - load) / load,
             max_strain=float(compression.max(initial=0.0) / stiffness / self.layer_thickness),
             negative_energy_springs=negative,

@@ -61,6 +61,23 @@ def paper000_model_options(*, surface_energy: float = 0.05, readings: Readings |
     }
 
 
+def paper000_model(
+    scan: Topography, tip: Topography, *, surface_energy: float = 0.05, readings: Readings | None = None
+):
+    """Return paper 000's Winkler-Lennard-Jones model of ``scan`` (polysilicon) against ``tip`` (SiO2).
+
+    :func:`~roughcontact.friction.winkler_lj_model` with the materials of sec. 3 and
+    :func:`paper000_model_options`; ``model.solve(10e-6)`` is the paper's load.
+    """
+    return winkler_lj_model(
+        scan,
+        get_material("polysilicon"),
+        get_material("SiO2"),
+        counter_topography=tip,
+        **paper000_model_options(surface_energy=surface_energy, readings=readings),
+    )
+
+
 def paper000_tip(*, shape: int = 256, rms_height: float = 0.3e-9, seed: int = 0) -> Topography:
     """Return a synthetic AFM tip of paper 000: a paraboloid of radius 1 um with roughness, 20 nm pixels.
 
