@@ -7,8 +7,8 @@ also when the coarse levels lose a contact patch (a one-pixel peak that 2 x 2 av
 below the flat): the check then iterates on the whole grid and finds it. A loading programme
 whose increments and coupling passes run on the box (the default) is compared with the same
 programme forced onto the whole grid (``BOX_AREA = 0``): a coupled pair (Dundurs beta != 0,
-frictional normal loading, so the normal solves use the box too) and an uncoupled one (beta = 0,
-nu = 0.5 on a rigid flat).
+frictional normal loading, so the coupling passes run on the box too and are checked on the whole
+grid) and an uncoupled one (beta = 0, nu = 0.5 on a rigid flat).
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 from roughcontact.analytic import mindlin
-from roughcontact.contact import _box, _constrained_cg, solve_normal, solve_tangential
+from roughcontact.contact import _box, _constrained_cg, _programme, solve_normal, solve_tangential
 from roughcontact.contact.normal import compliance_for
 from roughcontact.contact.paths import stroke_path
 from roughcontact.elasticity.halfspace import ElasticLayer, SurfaceCompliance
@@ -134,11 +134,13 @@ def test_a_loop_on_the_contact_box_equals_the_loop_on_the_whole_grid(monkeypatch
             fields_at="last",
         )
 
-    boxes = []
-    contact_box = _box.contact_box
+    boxes, passes = [], []
+    contact_box, box_pass = _box.contact_box, _programme.Stepper.box_pass
     monkeypatch.setattr(_box, "contact_box", lambda *a: boxes.append(contact_box(*a)) or boxes[-1])
+    monkeypatch.setattr(_programme.Stepper, "box_pass", lambda *a: passes.append(1) or box_pass(*a))
     boxed = loop()
     assert boxes and all(box is not None for box in boxes[1:])  # the box was used
+    assert bool(passes) == (counter is not None)  # coupled: the coupling passes ran on the box too
     monkeypatch.setattr(_box, "BOX_AREA", 0.0)
     whole = loop()
     scale = 0.3 * force

@@ -47,7 +47,7 @@ from .._version import __version__
 from ..elasticity.tangential import TractionCompliance
 from ..errors import ConvergenceError, InputError
 from ..progress import tracked
-from . import _box, _shear_apg, _shear_cg
+from . import _box, _constrained_cg, _shear_apg, _shear_cg
 from .normal import compliance_for
 from .paths import as_path
 from .tangential_result import TangentialPathResult, TangentialState
@@ -144,17 +144,27 @@ class Stepper:
     def step(self, state: State, normal: tuple[str, float], tangential: dict) -> Step:
         """Take ``state`` to the normal target ``normal`` and the tangential control ``tangential``.
 
+        At a held normal target on a free surface the coupling passes run on the box around the
+        contact (:meth:`box_pass`); once they converge, the whole grid's normal solve checks the
+        pressure (no iteration unless a point outside the box overlaps, and then the passes go on
+        over the whole grid) and s_p(p) is formed on the whole grid for the state.
+
         Raises :class:`ContactLost` when the normal target leaves no contact.
         """
         pressure, slip_from_p, (qx, qy) = state.pressure, state.slip_from_pressure, state.shear
         approach = state.approach
         moved = normal != state.normal
+        on_box = not moved and self.operator.boundary == "free"
         iterations = 0
         for coupling_pass in range(1, self.max_passes + 1):
             previous_p, previous_q = pressure, (qx, qy)
             sheared = self.coupled and (np.any(qx) or np.any(qy))
-            if (coupling_pass == 1 and moved) or sheared:
-                pressure, approach = self.normal_solve(
+            box = _box.contact_box(pressure > 0, self.box) if on_box and sheared else None
+            if box is not None:
+                self.box = box
+                pressure, approach, slip_from_p = self.box_pass((qx, qy), pressure, normal, box)
+            elif (coupling_pass == 1 and moved) or sheared:
+                pressure, approach, _ = self.normal_solve(
                     (qx, qy) if sheared else None, pressure, normal, boxed=not moved
                 )
                 if self.coupled:
@@ -173,23 +183,33 @@ class Stepper:
                     float(np.max(np.abs(qx - previous_q[0]) + np.abs(qy - previous_q[1])))
                     / (self.mu * scale_p),
                 )
-            if change <= self.coupling_tolerance:
-                increment = self.with_slip(increment, offset)
-                new = State(
-                    pressure,
-                    (qx, qy),
-                    (state.slip[0] + increment.wx, state.slip[1] + increment.wy),
-                    slip_from_p,
-                    approach,
-                    normal,
-                )
-                return Step(new, increment, iterations, coupling_pass)
+            if change > self.coupling_tolerance:
+                continue
+            if box is not None:  # the passes converged on the box: the whole grid's check
+                checked, approach, moved_points = self.normal_solve(previous_q, pressure, normal)
+                if (
+                    moved_points
+                ):  # the answer moved (a point outside the box overlaps): go on over the whole grid
+                    pressure, on_box = checked, False
+                    continue
+                slip_from_p = self.operator.slip_from_pressure(pressure)
+                offset = (slip_from_p[0] - state.slip[0], slip_from_p[1] - state.slip[1])
+            increment = self.with_slip(increment, offset)
+            new = State(
+                pressure,
+                (qx, qy),
+                (state.slip[0] + increment.wx, state.slip[1] + increment.wy),
+                slip_from_p,
+                approach,
+                normal,
+            )
+            return Step(new, increment, iterations, coupling_pass)
         raise ConvergenceError(
             f"{self.name} (normal-tangential coupling)", change, self.max_passes, self.coupling_tolerance
         )
 
     def normal_solve(self, shear, pressure, normal, boxed=False):
-        """Return the pressure and the approach at the normal target, with u_z(q) of ``shear`` added.
+        """Return the pressure, approach and iterations at the normal target, with u_z(q) of ``shear``.
 
         The approach is the rigid approach of the flat from first touch of the undeformed surface.
         ``boxed`` (a coupling pass at an unchanged normal target, where the contact barely moves):
@@ -213,7 +233,37 @@ class Stepper:
             solver=f"{self.name} (normal contact)",
             **({"force": value} if control == "force" else {"approach": value - offset}),
         )
-        return raw.pressure, raw.approach + offset
+        return raw.pressure, raw.approach + offset, raw.iterations
+
+    def box_pass(self, shear, pressure, normal, box):
+        """Return the pressure, the approach and s_p(p) of a coupling pass solved on ``box`` alone.
+
+        The normal problem with u_z(q) of ``shear`` (which vanishes outside the box) and s_p(p) are
+        formed with the box's own operators, exact on the box (:func:`~roughcontact.elasticity.
+        kernels.sub_grid`); outside it the pressure and s_p are 0 until :meth:`step` checks the
+        answer on the whole grid.
+        """
+        shape = _box.shape_of(box)
+        traction = self.operator.window(shape)
+        separation = self.separation[box] + traction.normal_from_shear(shear[0][box], shear[1][box])
+        offset = float(separation.min())
+        separation -= offset
+        control, value = normal
+        raw = _constrained_cg.solve(
+            self.normal_operator.window(shape),
+            separation,
+            pixel_area=self.operator.pixel_area,
+            initial_pressure=pressure[box],
+            tolerance=self.tolerance,
+            max_iterations=self.max_iterations,
+            solver=f"{self.name} (normal contact)",
+            **({"force": value} if control == "force" else {"approach": value - offset}),
+        )
+        fields = [np.zeros(pressure.shape) for _ in range(3)]
+        fields[0][box] = raw.pressure
+        if self.coupled:
+            fields[1][box], fields[2][box] = traction.slip_from_pressure(raw.pressure)
+        return fields[0], raw.approach + offset, (fields[1], fields[2])
 
     def increment(self, pressure, offset, initial, control):
         """Return the tangential increment at fixed pressure and its iterations (a failed plain try's too).
