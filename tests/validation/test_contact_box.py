@@ -20,6 +20,7 @@ from roughcontact.analytic import mindlin
 from roughcontact.contact import _box, _constrained_cg, _programme, solve_normal, solve_tangential
 from roughcontact.contact.normal import compliance_for
 from roughcontact.contact.paths import stroke_path
+from roughcontact.elasticity import kernels
 from roughcontact.elasticity.halfspace import ElasticLayer, SurfaceCompliance
 from roughcontact.elasticity.tangential import TractionCompliance
 from roughcontact.errors import InputError
@@ -250,3 +251,13 @@ def test_coupling_passes_whose_box_misses_contact_go_on_over_the_whole_grid(monk
     assert np.max(np.abs(caught.force - reference.force)) <= 1e-9 * 0.3 * force
     last, whole = caught.states[len(path) - 1], reference.states[len(path) - 1]
     assert np.max(np.abs(last.pressure - whole.pressure)) <= 1e-7 * np.max(whole.pressure)  # measured 2.6e-8
+
+
+def test_an_operator_keeps_its_last_sub_grid_operators():
+    traction = TractionCompliance((64, 64), (64e-6, 64e-6), BALL, FLAT, boundary="free")
+    first = traction.window((8, 8))
+    for side in range(9, 9 + kernels.SUB_GRIDS_KEPT - 1):
+        traction.window((side, side))
+    assert traction.window((8, 8)) is first  # still kept
+    traction.window((40, 40))  # one more: the oldest goes
+    assert traction.window((8, 8)) is not first

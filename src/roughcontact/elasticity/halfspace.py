@@ -243,7 +243,7 @@ class SurfaceCompliance:
         """Return the half-space operator on a ``shape`` sub-grid of this free surface (same pixels).
 
         Exact on the sub-grid (:func:`~roughcontact.elasticity.kernels.sub_grid`). Built once per
-        shape.
+        shape (the last :data:`~roughcontact.elasticity.kernels.SUB_GRIDS_KEPT` are kept).
 
         Raises
         ------
@@ -258,16 +258,18 @@ class SurfaceCompliance:
         shape, size = kernels.sub_grid(self.shape, self.size, self.boundary, shape)
         if shape == self.shape:
             return self
-        if shape not in self._windows:
-            self._windows[shape] = SurfaceCompliance(
+        return kernels.kept(
+            self._windows,
+            shape,
+            lambda: SurfaceCompliance(
                 shape,
                 size,
                 self.contact_modulus,
                 boundary="free",
                 workers=self.workers,
                 fft_backend=self._fft_backend,
-            )
-        return self._windows[shape]
+            ),
+        )
 
     def coarse(self) -> SurfaceCompliance:
         """Return the half-space operator of this free grid coarsened 2 x 2 (pixels twice as wide).

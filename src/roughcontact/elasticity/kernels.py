@@ -75,6 +75,23 @@ def sub_grid(shape, size, boundary: str, window) -> tuple[tuple[int, int], tuple
     return window, (window[0] * size[0] / shape[0], window[1] * size[1] / shape[1])
 
 
+SUB_GRIDS_KEPT = 8
+"""Sub-grid operators an operator keeps (the least recently built is dropped first)."""
+
+
+def kept(cache: dict, key, build):
+    """Return ``cache[key]``, building it with ``build()`` when missing; keep at most :data:`SUB_GRIDS_KEPT`.
+
+    For the operators' sub-grid caches: a growing contact asks for a new box now and then, and each
+    operator holds FFT buffers of twice its box.
+    """
+    if key not in cache:
+        while len(cache) >= SUB_GRIDS_KEPT:
+            cache.pop(next(iter(cache)))
+        cache[key] = build()
+    return cache[key]
+
+
 def wavevectors(shape: tuple[int, int], size: tuple[float, float]) -> tuple[np.ndarray, np.ndarray]:
     """Return ``(qx, qy)`` [rad/m] of the rfft2 layout, broadcastable to ``(nx, ny // 2 + 1)``."""
     qx = 2.0 * np.pi * fft.fftfreq(shape[0], d=size[0] / shape[0])[:, None]

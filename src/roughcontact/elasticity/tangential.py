@@ -257,16 +257,17 @@ class TractionCompliance:
 
         Exact on the sub-grid (:func:`~roughcontact.elasticity.kernels.sub_grid`): a contact that
         covers a quarter of the grid is solved with transforms a quarter the size. Built once per
-        shape; raises :class:`~roughcontact.errors.InputError` on a periodic surface.
+        shape (the last :data:`~roughcontact.elasticity.kernels.SUB_GRIDS_KEPT` are kept); raises
+        :class:`~roughcontact.errors.InputError` on a periodic surface.
         """
         shape, size = kernels.sub_grid(self.shape, self.size, self.boundary, shape)
         if shape == self.shape:
             return self
-        if shape not in self._windows:
-            self._windows[shape] = TractionCompliance(
-                shape, size, *self._bodies, boundary="free", workers=self._workers
-            )
-        return self._windows[shape]
+        return kernels.kept(
+            self._windows,
+            shape,
+            lambda: TractionCompliance(shape, size, *self._bodies, boundary="free", workers=self._workers),
+        )
 
     def shear(self, qx: np.ndarray, qy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Relative tangential displacements (s_x, s_y) [m] of the shear tractions alone."""
