@@ -77,10 +77,26 @@ PRECISIONS = {"double": (np.float64, np.complex128), "single": (np.float32, np.c
 """Real and complex dtypes of each transform precision."""
 
 
+THREADS_VARIABLE = "ROUGHCONTACT_FFT_THREADS"
+"""Environment variable with the default FFT thread count (the study runner sets it for its Dask
+workers, so that the workers of one machine share its cores instead of each taking all of them)."""
+
+
 def resolve_workers(workers: int | None) -> int:
-    """Return the thread count: ``None`` means all cores, -k all but k - 1 (as in scipy.fft)."""
+    """Return the thread count: -k means all cores but k - 1 (as in scipy.fft).
+
+    ``None``: the environment variable :data:`THREADS_VARIABLE` when set, else all cores.
+    """
     cores = os.cpu_count() or 1
-    workers = -1 if workers is None else int(workers)
+    if workers is None:
+        text = os.environ.get(THREADS_VARIABLE, "").strip()
+        try:
+            workers = int(text) if text else -1
+        except ValueError:
+            raise InputError(
+                THREADS_VARIABLE, f"got {text!r}.", "set a whole number of threads, e.g. 1, or unset it."
+            ) from None
+    workers = int(workers)
     return max(cores + 1 + workers if workers < 0 else workers, 1)
 
 

@@ -1,5 +1,7 @@
 """FFT backend: FFTW (pyFFTW) and scipy.fft give the same operator and contact solution; fallback."""
 
+import os
+
 import numpy as np
 import pytest
 from scipy import fft
@@ -189,3 +191,27 @@ def test_parseval_quadratic_form_in_double_precision(shape, input_shape, backend
         staged[...] = field
         power = pair.power_staged(weights)
     assert power == pytest.approx(np.vdot(field, pair.convolve(field, kernel)), rel=1e-12, abs=0)
+
+
+def test_the_thread_variable_sets_the_default_fft_threads(monkeypatch):
+    """ROUGHCONTACT_FFT_THREADS (set by the study runner for its Dask workers) is the default thread count."""
+    THREADS_VARIABLE, resolve_workers = _backend.THREADS_VARIABLE, _backend.resolve_workers
+    cores = os.cpu_count() or 1
+    monkeypatch.delenv(THREADS_VARIABLE, raising=False)
+    assert resolve_workers(None) == cores
+    monkeypatch.setenv(THREADS_VARIABLE, "1")
+    assert resolve_workers(None) == 1
+    assert resolve_workers(3) == 3  # an explicit count wins
+    monkeypatch.setenv(THREADS_VARIABLE, "all")
+    with pytest.raises(InputError) as error:
+        resolve_workers(None)
+    assert error.value.field == THREADS_VARIABLE
+
+
+def test_local_cluster_workers_share_the_cores():
+    from roughcontact.study.run import _worker_threads
+
+    cores = os.cpu_count() or 1
+    for workers in (1, 2, cores, 4 * cores):
+        env = _worker_threads(workers)
+        assert int(env[_backend.THREADS_VARIABLE]) == max(cores // workers, 1) == int(env["OMP_NUM_THREADS"])

@@ -256,10 +256,24 @@ def dask_client(workers: int | None = None, scheduler: str | None = None):
             host="127.0.0.1",
             dashboard_address=":0",  # any free port: never clash with a running cluster
             silence_logs=40,
+            env=_worker_threads(workers),
         ) as cluster,
         Client(cluster) as client,
     ):
         yield client
+
+
+def _worker_threads(workers: int) -> dict[str, str]:
+    """Environment of the local cluster's worker processes: the machine's cores shared among them.
+
+    Each worker's FFTs would otherwise take every core (measured: paper 001's 1024-pixel study took
+    10 min 19 s on two workers against 9 min 49 s in-process, 4.9 min of it system time), and BLAS and
+    OpenMP pools likewise.
+    """
+    from .._backend import THREADS_VARIABLE
+
+    share = str(max((os.cpu_count() or 1) // max(workers, 1), 1))
+    return {THREADS_VARIABLE: share, "OMP_NUM_THREADS": share, "OPENBLAS_NUM_THREADS": share}
 
 
 def _on_dask(client, tasks: list[Task]) -> Iterator[tuple[dict, Any]]:
