@@ -118,11 +118,11 @@ def _rough_ball(n, material, counter):
     return topography, force
 
 
-@pytest.mark.parametrize("material, counter", [(BALL, FLAT), (HDPE, None)], ids=["coupled", "beta 0"])
-def test_a_loop_on_the_contact_box_equals_the_loop_on_the_whole_grid(monkeypatch, material, counter):
+def _loop(material, counter, steps_per_stroke):
+    """The normal contact of :func:`_rough_ball` at 64^2 and a one-cycle loop from it (last fields kept)."""
     topography, force = _rough_ball(64, material, counter)
     normal = solve_normal(topography, material, counter_body=counter, force=force, tolerance=1e-11)
-    path = stroke_path(2e-6, cycles=1, steps_per_stroke=5)
+    path = stroke_path(2e-6, cycles=1, steps_per_stroke=steps_per_stroke)
 
     def loop():
         return solve_tangential(
@@ -135,13 +135,36 @@ def test_a_loop_on_the_contact_box_equals_the_loop_on_the_whole_grid(monkeypatch
             fields_at="last",
         )
 
-    boxes, passes = [], []
-    contact_box, box_pass = _box.contact_box, _programme.Stepper.box_pass
+    return normal, force, path, loop
+
+
+def _normal_solves(monkeypatch, narrow=None):
+    """Record (on a box, iterations) of every normal solve of a stepper; ``narrow(box)`` alters its boxes."""
+    calls = []
+    normal_solve = _programme.Stepper.normal_solve
+
+    def recorded(self, shear, pressure, normal, box=None):
+        if box is not None and narrow is not None:
+            box = narrow(box)
+        result = normal_solve(self, shear, pressure, normal, box)
+        calls.append((box is not None, result[2]))
+        return result
+
+    monkeypatch.setattr(_programme.Stepper, "normal_solve", recorded)
+    return calls
+
+
+@pytest.mark.parametrize("material, counter", [(BALL, FLAT), (HDPE, None)], ids=["coupled", "beta 0"])
+def test_a_loop_on_the_contact_box_equals_the_loop_on_the_whole_grid(monkeypatch, material, counter):
+    normal, force, path, loop = _loop(material, counter, 5)
+    boxes = []
+    contact_box = _box.contact_box
     monkeypatch.setattr(_box, "contact_box", lambda *a: boxes.append(contact_box(*a)) or boxes[-1])
-    monkeypatch.setattr(_programme.Stepper, "box_pass", lambda *a: passes.append(1) or box_pass(*a))
+    solves = _normal_solves(monkeypatch)
     boxed = loop()
     assert boxes and all(box is not None for box in boxes[1:])  # the box was used
-    assert bool(passes) == (counter is not None)  # coupled: the coupling passes ran on the box too
+    on_box = any(on for on, _ in solves)
+    assert on_box == (counter is not None)  # coupled: the coupling passes ran on the box too
     monkeypatch.setattr(_box, "BOX_AREA", 0.0)
     whole = loop()
     scale = 0.3 * force
@@ -213,41 +236,17 @@ def test_a_patch_the_coarse_levels_lose_is_found_on_the_whole_grid(monkeypatch):
 
 def test_coupling_passes_whose_box_misses_contact_go_on_over_the_whole_grid(monkeypatch):
     """The whole grid's check catches a box pass that left contact out; the answer is unchanged."""
-    topography, force = _rough_ball(64, BALL, FLAT)
-    normal = solve_normal(topography, BALL, counter_body=FLAT, force=force, tolerance=1e-11)
-    path = stroke_path(2e-6, cycles=1, steps_per_stroke=3)
-
-    def loop():
-        return solve_tangential(
-            normal,
-            BALL,
-            counter_body=FLAT,
-            friction_coefficient=0.3,
-            displacement=path,
-            tolerance=1e-11,
-            fields_at="last",
-        )
-
+    normal, force, path, loop = _loop(BALL, FLAT, 3)
     reference = loop()
-    checks = []
-    box_pass, normal_solve = _programme.Stepper.box_pass, _programme.Stepper.normal_solve
-
     first = int(np.flatnonzero((normal.pressure > 0).any(axis=1))[0])
-
-    def narrow(self, shear, pressure, normal, box):  # the box less the first row of the initial contact
-        return box_pass(
-            self, shear, pressure, normal, (slice(max(box[0].start, first + 1), box[0].stop), box[1])
-        )
-
-    def counted(self, shear, pressure, normal, boxed=False):
-        result = normal_solve(self, shear, pressure, normal, boxed)
-        checks.append(result[2])
-        return result
-
-    monkeypatch.setattr(_programme.Stepper, "box_pass", narrow)
-    monkeypatch.setattr(_programme.Stepper, "normal_solve", counted)
+    # the coupling passes' boxes less the first row of the initial contact
+    solves = _normal_solves(
+        monkeypatch, lambda box: (slice(max(box[0].start, first + 1), box[0].stop), box[1])
+    )
     caught = loop()
-    assert any(iterations > 0 for iterations in checks)  # the check iterated: the passes went on
+    # a whole-grid check right after a box pass had to iterate: the passes went on over the whole grid
+    pairs = zip(solves[:-1], solves[1:], strict=True)
+    assert any(before[0] and not after[0] and after[1] > 0 for before, after in pairs)
     assert np.max(np.abs(caught.force - reference.force)) <= 1e-9 * 0.3 * force
     last, whole = caught.states[len(path) - 1], reference.states[len(path) - 1]
     assert np.max(np.abs(last.pressure - whole.pressure)) <= 1e-7 * np.max(whole.pressure)  # measured 2.6e-8

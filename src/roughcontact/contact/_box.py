@@ -3,7 +3,7 @@ r"""The box around the contact: free-surface solves on the part of the grid that
 On a free (non-periodic) surface the displacement of a point depends only on its offset from each
 loaded pixel, so tractions that vanish outside a box of the grid give at the box's points exactly
 the displacements of the whole grid's operator when the box's own zero-padded operator is used
-(:func:`roughcontact.elasticity.kernels.sub_grid`; the operators' ``window`` methods). Where the
+(:func:`roughcontact.elasticity.kernels.sub_grid_operator`; the operators' ``window`` methods). Where the
 contact covers a small part of the window, a ball on a flat (paper 001) or an island (paper 002),
 the solvers iterate on the box with transforms a quarter of the size or less, and answer the same
 problem: the tractions vanish outside the contact.
@@ -95,7 +95,7 @@ def shape_of(box: tuple[slice, slice]) -> tuple[int, int]:
 
 def has_boxes(operator) -> bool:
     """Whether ``operator`` has exact sub-grid operators: a free half-space (no layer)."""
-    return operator.boundary == "free" and getattr(operator, "layer", None) is None
+    return operator.boundary == "free" and operator.layer is None
 
 
 def solve(

@@ -145,9 +145,10 @@ class Stepper:
         """Take ``state`` to the normal target ``normal`` and the tangential control ``tangential``.
 
         At a held normal target on a free surface the coupling passes run on the box around the
-        contact (:meth:`box_pass`); once they converge, the whole grid's normal solve checks the
-        pressure (no iteration unless a point outside the box overlaps, and then the passes go on
-        over the whole grid) and s_p(p) is formed on the whole grid for the state.
+        contact (``box`` of :meth:`normal_solve` and :meth:`slip_from_pressure`); once they
+        converge, the whole grid's normal solve checks the pressure (no iteration unless a point
+        outside the box overlaps, and then the passes go on over the whole grid) and s_p(p) is
+        formed on the whole grid for the state.
 
         Raises :class:`ContactLost` when the normal target leaves no contact.
         """
@@ -162,13 +163,12 @@ class Stepper:
             box = _box.contact_box(pressure > 0, self.box) if on_box and sheared else None
             if box is not None:
                 self.box = box
-                pressure, approach, slip_from_p = self.box_pass((qx, qy), pressure, normal, box)
-            elif (coupling_pass == 1 and moved) or sheared:
+            if (coupling_pass == 1 and moved) or sheared:
                 pressure, approach, _ = self.normal_solve(
-                    (qx, qy) if sheared else None, pressure, normal, boxed=not moved
+                    (qx, qy) if sheared else None, pressure, normal, box
                 )
                 if self.coupled:
-                    slip_from_p = self.operator.slip_from_pressure(pressure)
+                    slip_from_p = self.slip_from_pressure(pressure, box)
             if not np.any(pressure > 0):
                 raise ContactLost
             offset = (slip_from_p[0] - state.slip[0], slip_from_p[1] - state.slip[1])
@@ -186,13 +186,11 @@ class Stepper:
             if change > self.coupling_tolerance:
                 continue
             if box is not None:  # the passes converged on the box: the whole grid's check
-                checked, approach, moved_points = self.normal_solve(previous_q, pressure, normal)
-                if (
-                    moved_points
-                ):  # the answer moved (a point outside the box overlaps): go on over the whole grid
+                checked, approach, iterated = self.normal_solve(previous_q, pressure, normal)
+                if iterated:  # a point outside the box overlaps: go on over the whole grid
                     pressure, on_box = checked, False
                     continue
-                slip_from_p = self.operator.slip_from_pressure(pressure)
+                slip_from_p = self.slip_from_pressure(pressure)
                 offset = (slip_from_p[0] - state.slip[0], slip_from_p[1] - state.slip[1])
             increment = self.with_slip(increment, offset)
             new = State(
@@ -208,62 +206,49 @@ class Stepper:
             f"{self.name} (normal-tangential coupling)", change, self.max_passes, self.coupling_tolerance
         )
 
-    def normal_solve(self, shear, pressure, normal, boxed=False):
+    def normal_solve(self, shear, pressure, normal, box=None):
         """Return the pressure, approach and iterations at the normal target, with u_z(q) of ``shear``.
 
         The approach is the rigid approach of the flat from first touch of the undeformed surface.
-        ``boxed`` (a coupling pass at an unchanged normal target, where the contact barely moves):
-        on a free surface the problem is first solved on the box around the current contact and
-        checked on the whole grid (:func:`roughcontact.contact._box.solve`).
+        With ``box`` the problem is solved on the box alone, with its own operators (exact there:
+        q vanishes outside it, :func:`~roughcontact.elasticity.kernels.sub_grid_operator`); the
+        pressure is 0 outside the box until :meth:`step` checks the answer on the whole grid.
         """
-        separation, offset = self.separation, 0.0
+        region = (slice(None), slice(None)) if box is None else box
+        compliance, traction = self.normal_operator, self.operator
+        if box is not None:
+            shape = _box.shape_of(box)
+            compliance, traction = compliance.window(shape), traction.window(shape)
+        separation, offset = self.separation[region], 0.0
         if shear is not None:
-            separation = separation + self.operator.normal_from_shear(*shear)
+            separation = separation + traction.normal_from_shear(shear[0][region], shear[1][region])
             offset = float(separation.min())
             separation -= offset
         control, value = normal
-        raw = _box.solve(
-            self.normal_operator,
-            separation,
-            pixel_area=self.operator.pixel_area,
-            initial_pressure=pressure if np.any(pressure > 0) else None,
-            box=boxed,
-            tolerance=self.tolerance,
-            max_iterations=self.max_iterations,
-            solver=f"{self.name} (normal contact)",
-            **({"force": value} if control == "force" else {"approach": value - offset}),
-        )
-        return raw.pressure, raw.approach + offset, raw.iterations
-
-    def box_pass(self, shear, pressure, normal, box):
-        """Return the pressure, the approach and s_p(p) of a coupling pass solved on ``box`` alone.
-
-        The normal problem with u_z(q) of ``shear`` (which vanishes outside the box) and s_p(p) are
-        formed with the box's own operators, exact on the box (:func:`~roughcontact.elasticity.
-        kernels.sub_grid`); outside it the pressure and s_p are 0 until :meth:`step` checks the
-        answer on the whole grid.
-        """
-        shape = _box.shape_of(box)
-        traction = self.operator.window(shape)
-        separation = self.separation[box] + traction.normal_from_shear(shear[0][box], shear[1][box])
-        offset = float(separation.min())
-        separation -= offset
-        control, value = normal
+        initial = pressure[region]
         raw = _constrained_cg.solve(
-            self.normal_operator.window(shape),
+            compliance,
             separation,
             pixel_area=self.operator.pixel_area,
-            initial_pressure=pressure[box],
+            initial_pressure=initial if np.any(initial > 0) else None,
             tolerance=self.tolerance,
             max_iterations=self.max_iterations,
             solver=f"{self.name} (normal contact)",
             **({"force": value} if control == "force" else {"approach": value - offset}),
         )
-        fields = [np.zeros(pressure.shape) for _ in range(3)]
-        fields[0][box] = raw.pressure
-        if self.coupled:
-            fields[1][box], fields[2][box] = traction.slip_from_pressure(raw.pressure)
-        return fields[0], raw.approach + offset, (fields[1], fields[2])
+        solved = raw.pressure
+        if box is not None:
+            solved = np.zeros(pressure.shape)
+            solved[box] = raw.pressure
+        return solved, raw.approach + offset, raw.iterations
+
+    def slip_from_pressure(self, pressure, box=None):
+        """Return s_p(p) on the whole grid, or with ``box``'s own operator (0 outside the box)."""
+        if box is None:
+            return self.operator.slip_from_pressure(pressure)
+        sx, sy = np.zeros(pressure.shape), np.zeros(pressure.shape)
+        sx[box], sy[box] = self.operator.window(_box.shape_of(box)).slip_from_pressure(pressure[box])
+        return sx, sy
 
     def increment(self, pressure, offset, initial, control):
         """Return the tangential increment at fixed pressure and its iterations (a failed plain try's too).

@@ -242,7 +242,7 @@ class SurfaceCompliance:
     def window(self, shape) -> SurfaceCompliance:
         """Return the half-space operator on a ``shape`` sub-grid of this free surface (same pixels).
 
-        Exact on the sub-grid (:func:`~roughcontact.elasticity.kernels.sub_grid`). Built once per
+        Exact on the sub-grid (:func:`~roughcontact.elasticity.kernels.sub_grid_operator`). Built once per
         shape (the last :data:`~roughcontact.elasticity.kernels.SUB_GRIDS_KEPT` are kept).
 
         Raises
@@ -255,21 +255,7 @@ class SurfaceCompliance:
             raise InputError(
                 "layer", "a layered body has no exact sub-grid operator.", "use the whole grid's."
             )
-        shape, size = kernels.sub_grid(self.shape, self.size, self.boundary, shape)
-        if shape == self.shape:
-            return self
-        return kernels.kept(
-            self._windows,
-            shape,
-            lambda: SurfaceCompliance(
-                shape,
-                size,
-                self.contact_modulus,
-                boundary="free",
-                workers=self.workers,
-                fft_backend=self._fft_backend,
-            ),
-        )
+        return kernels.sub_grid_operator(self, self._windows, shape, self._free_half_space)
 
     def coarse(self) -> SurfaceCompliance:
         """Return the half-space operator of this free grid coarsened 2 x 2 (pixels twice as wide).
@@ -281,15 +267,20 @@ class SurfaceCompliance:
             self.window(self.shape)  # the same refusals
             shape = (self.shape[0] // 2, self.shape[1] // 2)
             spacing = (self.size[0] / self.shape[0], self.size[1] / self.shape[1])
-            self._derived["coarse"] = SurfaceCompliance(
-                shape,
-                (2 * shape[0] * spacing[0], 2 * shape[1] * spacing[1]),
-                self.contact_modulus,
-                boundary="free",
-                workers=self.workers,
-                fft_backend=self._fft_backend,
-            )
+            size = (2 * shape[0] * spacing[0], 2 * shape[1] * spacing[1])
+            self._derived["coarse"] = self._free_half_space(shape, size)
         return self._derived["coarse"]
+
+    def _free_half_space(self, shape, size) -> SurfaceCompliance:
+        """Return a free half-space operator of this one's modulus, threads and backend on another grid."""
+        return SurfaceCompliance(
+            shape,
+            size,
+            self.contact_modulus,
+            boundary="free",
+            workers=self.workers,
+            fft_backend=self._fft_backend,
+        )
 
     def __call__(self, pressure: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
         """Return the surface displacement [m] (into the body) of ``pressure`` [Pa].

@@ -52,12 +52,19 @@ from ..errors import InputError
 BOUNDARIES = ("periodic", "free")
 
 
-def sub_grid(shape, size, boundary: str, window) -> tuple[tuple[int, int], tuple[float, float]]:
-    """Return the shape and physical size [m] of a ``window`` sub-grid with the grid's own pixels.
+SUB_GRIDS_KEPT = 8
+"""Sub-grid operators an operator keeps (the least recently built is dropped first)."""
+
+
+def sub_grid_operator(operator, cache: dict, window, build):
+    """Return ``operator``'s counterpart on a ``window`` sub-grid with the same pixels.
 
     For the operators' ``window`` methods: on a free surface the response of a point depends only
     on its offset from each loaded pixel, so a zero-padded operator of the sub-grid gives at its
-    points the displacements the whole grid's gives to tractions that vanish outside it.
+    points the displacements the whole grid's gives to tractions that vanish outside it. The
+    whole grid's window is ``operator`` itself; others are ``build(shape, size)`` [m], kept in
+    ``cache`` (at most :data:`SUB_GRIDS_KEPT`: a growing contact asks for a new box now and then,
+    and each operator holds FFT buffers of twice its box).
 
     Raises
     ------
@@ -65,31 +72,21 @@ def sub_grid(shape, size, boundary: str, window) -> tuple[tuple[int, int], tuple
         On a periodic surface (every pixel of a period interacts with the others' images) or a
         window that does not fit in the grid.
     """
+    shape, size = operator.shape, operator.size
     window = (int(window[0]), int(window[1]))
-    if boundary != "free":
+    if operator.boundary != "free":
         raise InputError(
             "boundary", "a periodic surface has no sub-grid operator.", "use the whole grid's operator."
         )
     if not (0 < window[0] <= shape[0] and 0 < window[1] <= shape[1]):
         raise InputError("window", f"{window} does not fit in the grid {tuple(shape)}.", None)
-    return window, (window[0] * size[0] / shape[0], window[1] * size[1] / shape[1])
-
-
-SUB_GRIDS_KEPT = 8
-"""Sub-grid operators an operator keeps (the least recently built is dropped first)."""
-
-
-def kept(cache: dict, key, build):
-    """Return ``cache[key]``, building it with ``build()`` when missing; keep at most :data:`SUB_GRIDS_KEPT`.
-
-    For the operators' sub-grid caches: a growing contact asks for a new box now and then, and each
-    operator holds FFT buffers of twice its box.
-    """
-    if key not in cache:
+    if window == tuple(shape):
+        return operator
+    if window not in cache:
         while len(cache) >= SUB_GRIDS_KEPT:
             cache.pop(next(iter(cache)))
-        cache[key] = build()
-    return cache[key]
+        cache[window] = build(window, (window[0] * size[0] / shape[0], window[1] * size[1] / shape[1]))
+    return cache[window]
 
 
 def wavevectors(shape: tuple[int, int], size: tuple[float, float]) -> tuple[np.ndarray, np.ndarray]:

@@ -255,18 +255,18 @@ class TractionCompliance:
     def window(self, shape) -> TractionCompliance:
         """Return this pair's operator on a ``shape`` sub-grid of this free surface (same pixels).
 
-        Exact on the sub-grid (:func:`~roughcontact.elasticity.kernels.sub_grid`): a contact that
+        Exact on the sub-grid (:func:`~roughcontact.elasticity.kernels.sub_grid_operator`): a contact that
         covers a quarter of the grid is solved with transforms a quarter the size. Built once per
         shape (the last :data:`~roughcontact.elasticity.kernels.SUB_GRIDS_KEPT` are kept); raises
         :class:`~roughcontact.errors.InputError` on a periodic surface.
         """
-        shape, size = kernels.sub_grid(self.shape, self.size, self.boundary, shape)
-        if shape == self.shape:
-            return self
-        return kernels.kept(
+        return kernels.sub_grid_operator(
+            self,
             self._windows,
             shape,
-            lambda: TractionCompliance(shape, size, *self._bodies, boundary="free", workers=self._workers),
+            lambda shape, size: TractionCompliance(
+                shape, size, *self._bodies, boundary="free", workers=self._workers
+            ),
         )
 
     def shear(self, qx: np.ndarray, qy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
