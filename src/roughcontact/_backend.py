@@ -149,6 +149,10 @@ class RealFFT2:
         approximate operators such as a preconditioner, never for a result. Inputs and outputs
         are float64 either way; kernels should be given in the transform's precision
         (:attr:`real_dtype`) to avoid a conversion per call.
+    measure : bool, optional
+        FFTW plans by timed trial transforms (``FFTW_MEASURE``) or by estimate (``FFTW_ESTIMATE``,
+        no planning time). Default: measured from :data:`MEASURE_FROM` points. Estimate for a
+        transform that runs a few times only (the coarse levels of a cascade).
 
     Notes
     -----
@@ -165,6 +169,7 @@ class RealFFT2:
         input_shape: tuple[int, int] | None = None,
         backend: str | None = None,
         precision: str = "double",
+        measure: bool | None = None,
     ):
         if precision not in PRECISIONS:
             raise InputError(
@@ -179,7 +184,9 @@ class RealFFT2:
         self.spectrum_shape = (self.shape[0], self.shape[1] // 2 + 1)
         self.workers = resolve_workers(workers)
         self.backend = fft_backend(backend)
-        self.planner = "FFTW_MEASURE" if self.shape[0] * self.shape[1] >= MEASURE_FROM else "FFTW_ESTIMATE"
+        if measure is None:
+            measure = self.shape[0] * self.shape[1] >= MEASURE_FROM
+        self.planner = "FFTW_MEASURE" if measure else "FFTW_ESTIMATE"
         self._plans = None
         self._scipy_input = None
         self._lock = threading.RLock()  # re-entrant: a staged() holder may call convolve()

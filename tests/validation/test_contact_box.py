@@ -8,7 +8,9 @@ below the flat): the check then iterates on the whole grid and finds it. A loadi
 whose increments and coupling passes run on the box (the default) is compared with the same
 programme forced onto the whole grid (``BOX_AREA = 0``): a coupled pair (Dundurs beta != 0,
 frictional normal loading, so the coupling passes run on the box too and are checked on the whole
-grid) and an uncoupled one (beta = 0, nu = 0.5 on a rigid flat).
+grid) and an uncoupled one (beta = 0, nu = 0.5 on a rigid flat). On a periodic surface the cascade's
+coarse levels only warm-start the whole grid: the single-level answer to 1e-8 of the peak, also when
+the coarse levels lose a one-pixel peak in a valley.
 """
 
 from __future__ import annotations
@@ -23,7 +25,7 @@ from roughcontact.contact.paths import stroke_path
 from roughcontact.elasticity import kernels
 from roughcontact.elasticity.halfspace import ElasticLayer, SurfaceCompliance
 from roughcontact.elasticity.tangential import TractionCompliance
-from roughcontact.errors import InputError
+from roughcontact.errors import ConvergenceError, InputError
 from roughcontact.materials import Material, contact_modulus
 from roughcontact.topography import Topography, generate
 
@@ -260,3 +262,80 @@ def test_an_operator_keeps_its_last_sub_grid_operators():
     assert traction.window((8, 8)) is first  # still kept
     traction.window((40, 40))  # one more: the oldest goes
     assert traction.window((8, 8)) is not first
+
+
+def _periodic_rough(n):
+    """A periodic self-affine surface (the benchmark's statistics) at a load giving ~10 % contact."""
+    surface = generate.self_affine((n, n), (1e-4, 1e-4), hurst=0.8, rms_slope=0.1, seed=n)
+    compliance = compliance_for(surface, 1e9)
+    separation = surface.heights.max() - surface.heights
+    return surface, compliance, separation
+
+
+@pytest.mark.parametrize("target", ["force", "approach"])
+def test_the_periodic_cascade_gives_the_single_level_answer(monkeypatch, target):
+    """Coarse levels 64^2 and 128^2 (to the coarse tolerance), then the whole 256^2 grid."""
+    surface, compliance, separation = _periodic_rough(256)
+    load = {"force": 5e6 * surface.area} if target == "force" else {"approach": 0.6 * np.std(separation)}
+    problem = dict(pixel_area=surface.pixel_area, tolerance=1e-10, **load)
+    reference = _constrained_cg.solve(compliance, separation, **problem)
+    calls = _recorded(monkeypatch)
+    cascaded = _box.solve(compliance, separation, **problem)
+    assert [shape for shape, _ in calls] == [(64, 64), (128, 128), (256, 256)]
+    assert np.max(np.abs(cascaded.pressure - reference.pressure)) <= 1e-8 * np.max(reference.pressure)
+    assert abs(cascaded.approach - reference.approach) <= 1e-8 * reference.approach
+    assert cascaded.residual <= 1e-10
+
+
+def test_a_patch_the_periodic_coarse_levels_lose_is_found_on_the_fine_grid(monkeypatch):
+    """A one-pixel peak in a valley touches; averaged over 2 x 2 pixels it stays out of contact."""
+    surface, compliance, separation = _periodic_rough(256)
+    problem = dict(pixel_area=surface.pixel_area, tolerance=1e-10, force=5e6 * surface.area)
+    plain = _constrained_cg.solve(compliance, separation, **problem)
+    peak = np.unravel_index(np.argmax(plain.gap), plain.gap.shape)  # the deepest valley
+    peaked = separation.copy()
+    peaked[peak] = max(plain.approach - 0.5 * plain.gap[peak] - plain.displacement[peak], 0.0)
+    reference = _constrained_cg.solve(compliance, peaked, **problem)
+    assert reference.pressure[peak] > 0
+    calls = []
+    coarse_engine = _box._constrained_cg.solve
+
+    def solve(operator, separation, **options):
+        result = coarse_engine(operator, separation, **options)
+        calls.append((separation.shape, result))
+        return result
+
+    monkeypatch.setattr(_box._constrained_cg, "solve", solve)
+    cascaded = _box.solve(compliance, peaked, **problem)
+    coarse = calls[-2][1].pressure  # the 128^2 level's answer
+    assert coarse[peak[0] // 2, peak[1] // 2] == 0  # lost there
+    assert cascaded.pressure[peak] > 0
+    assert np.max(np.abs(cascaded.pressure - reference.pressure)) <= 1e-8 * np.max(reference.pressure)
+
+
+def test_the_coarse_operator_is_the_same_body_on_pixels_twice_as_wide():
+    layer = ElasticLayer(1e-6, BALL, "bonded")
+    fine = SurfaceCompliance((64, 32), (64e-6, 32e-6), layer=layer, counter_body=FLAT)
+    coarse = fine.coarse()
+    assert coarse.shape == (32, 16) and coarse.size == fine.size and coarse.boundary == "periodic"
+    assert coarse.layer is layer and coarse.contact_modulus == fine.contact_modulus
+    with pytest.raises(InputError) as error:
+        SurfaceCompliance((64, 33), (64e-6, 33e-6), 1e9).coarse()
+    assert error.value.field == "shape"
+
+
+def test_a_coarse_level_that_does_not_converge_leaves_the_error_to_the_fine_level(monkeypatch):
+    """max_iterations=3 stops each coarse level (the next starts cold) and the fine grid, which raises."""
+    surface, compliance, separation = _periodic_rough(256)
+    problem = dict(pixel_area=surface.pixel_area, tolerance=1e-10, force=5e6 * surface.area)
+    shapes, engine = [], _box._constrained_cg.solve
+
+    def solve(operator, separation, **options):
+        shapes.append((separation.shape, options["initial_pressure"] is None))
+        return engine(operator, separation, **options)
+
+    monkeypatch.setattr(_box._constrained_cg, "solve", solve)
+    with pytest.raises(ConvergenceError) as error:
+        _box.solve(compliance, separation, max_iterations=3, **problem)
+    assert shapes == [((64, 64), True), ((128, 128), True), ((256, 256), True)]  # each level starts cold
+    assert error.value.iterations == 3 and error.value.residual > 1e-4

@@ -143,6 +143,10 @@ class SurfaceCompliance:
     fft_backend : {"auto", "fftw", "scipy"}, optional
         FFT library (:func:`roughcontact._backend.fft_backend`; default: the environment
         variable ``ROUGHCONTACT_FFT``, else FFTW when pyFFTW imports). Same result to round-off.
+    fft_measure : bool, optional
+        FFTW planner effort of the operator's transforms (:class:`~roughcontact._backend.RealFFT2`'s
+        ``measure``; default by size). :meth:`coarse` operators are estimated: they run a few
+        iterations, and a measured plan costs about a second at 1024^2.
 
     Attributes
     ----------
@@ -172,6 +176,7 @@ class SurfaceCompliance:
         boundary: str = "periodic",
         workers: int | None = None,
         fft_backend: str | None = None,
+        fft_measure: bool | None = None,
     ):
         if boundary not in kernels.BOUNDARIES:
             raise InputError("boundary", f"unknown boundary {boundary!r}.", "use 'periodic' or 'free'.")
@@ -197,11 +202,12 @@ class SurfaceCompliance:
         padded = (2 * self.shape[0], 2 * self.shape[1])
         self.transform_shape = self.shape if boundary == "periodic" else padded
         self._counter_body = counter_body
-        self._fft_backend = fft_backend
+        self._fft_backend, self._fft_measure = fft_backend, fft_measure
         self._windows: dict[tuple[int, int], SurfaceCompliance] = {}
         self.kernel = self._kernel(boundary)
         self._derived = {}  # made on first use: inverse kernel, single-precision transform and kernels
-        self._fft = RealFFT2(self.transform_shape, self.workers, input_shape=self.shape, backend=fft_backend)
+        options = dict(input_shape=self.shape, backend=fft_backend, measure=fft_measure)
+        self._fft = RealFFT2(self.transform_shape, self.workers, **options)
 
     def _kernel(self, boundary: str) -> np.ndarray:
         """Return the compliance kernel [m/Pa] on the transform grid of ``boundary`` (rfft2 layout).
@@ -258,17 +264,37 @@ class SurfaceCompliance:
         return kernels.sub_grid_operator(self, self._windows, shape, self._free_half_space)
 
     def coarse(self) -> SurfaceCompliance:
-        """Return the half-space operator of this free grid coarsened 2 x 2 (pixels twice as wide).
+        """Return this body's operator on the grid coarsened 2 x 2 (pixels twice as wide).
 
-        For odd sides the last row or column is left out. Built once. Raises
-        :class:`~roughcontact.errors.InputError` as :meth:`window`.
+        The same material, layer, counter-body and boundary; used by the coarse-to-fine cascade
+        (:mod:`roughcontact.contact._box`). For a free grid with odd sides the last row or column is
+        left out. Built once.
+
+        Raises
+        ------
+        InputError
+            A periodic grid with an odd side (its period is not a whole number of coarse pixels).
         """
         if "coarse" not in self._derived:
-            self.window(self.shape)  # the same refusals
+            if self.boundary == "periodic" and (self.shape[0] % 2 or self.shape[1] % 2):
+                raise InputError(
+                    "shape", f"a periodic {self.shape} grid has no 2 x 2 coarsening.", "use even sides."
+                )
             shape = (self.shape[0] // 2, self.shape[1] // 2)
             spacing = (self.size[0] / self.shape[0], self.size[1] / self.shape[1])
             size = (2 * shape[0] * spacing[0], 2 * shape[1] * spacing[1])
-            self._derived["coarse"] = self._free_half_space(shape, size)
+            modulus = None if self.layer is not None else self.contact_modulus
+            self._derived["coarse"] = SurfaceCompliance(
+                shape,
+                size,
+                modulus,
+                layer=self.layer,
+                counter_body=self._counter_body,
+                boundary=self.boundary,
+                workers=self.workers,
+                fft_backend=self._fft_backend,
+                fft_measure=False,
+            )
         return self._derived["coarse"]
 
     def _free_half_space(self, shape, size) -> SurfaceCompliance:
@@ -328,7 +354,7 @@ class SurfaceCompliance:
         one or two on free Hertz and rough-ball cases, 256^2 to 1024^2.
         """
         if "single" not in self._derived:
-            options = dict(backend=self._fft.backend, precision="single")
+            options = dict(backend=self._fft.backend, precision="single", measure=self._fft_measure)
             single = RealFFT2(self.transform_shape, self.workers, input_shape=self.shape, **options)
             if self.boundary == "periodic":
                 window, stiffness = single, self.inverse_kernel()
