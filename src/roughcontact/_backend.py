@@ -16,7 +16,7 @@ FFTW configuration, from timings on a 2-core machine (``benchmarks/fft_backend.p
   planning would cost more than it saves over one solve (0.3 s at 256^2 to save 0.2 ms per
   transform). FFTW keeps the wisdom of every plan for the life of the process, so a later
   operator of the same shape and thread count (a load path, repeated solves) plans in a
-  millisecond;
+  millisecond, and :mod:`roughcontact._fftw_wisdom` keeps it on disk for the next process;
 - one thread below :data:`THREADS_FROM` points, where a second thread gains nothing;
 - OpenMP threads that sleep at barriers (``OMP_WAIT_POLICY=PASSIVE``, see
   :func:`_import_pyfftw`), which keeps a transform from stalling when another process
@@ -33,11 +33,13 @@ from __future__ import annotations
 import contextlib
 import os
 import threading
+import time
 
 import numba as nb
 import numpy as np
 from scipy import fft as _scipy_fft
 
+from . import _fftw_wisdom
 from .errors import InputError
 
 
@@ -71,6 +73,9 @@ MEASURE_FROM = 1 << 20
 """Transform size (points) from which FFTW plans are measured rather than estimated."""
 PLANNING_TIME_LIMIT = 10.0
 """Upper bound [s] of the planning time of one FFTW_MEASURE plan."""
+WISDOM_SAVED_FROM = 0.05
+"""Planning time [s] of a measured pair of plans above which the wisdom file is rewritten (a pair
+found in the wisdom takes about a millisecond; :mod:`roughcontact._fftw_wisdom`)."""
 THREADS_FROM = 1 << 15
 """Transform size (points) from which FFTW runs on ``workers`` threads; smaller ones on one thread."""
 PRECISIONS = {"double": (np.float64, np.complex128), "single": (np.float32, np.complex64)}
@@ -200,9 +205,15 @@ class RealFFT2:
         real_out = _pyfftw.empty_aligned(self.shape, dtype=self.real_dtype) if padded else real_in
         threads = self.workers if self.shape[0] * self.shape[1] >= THREADS_FROM else 1
         options = {"axes": (0, 1), "threads": threads, "planning_timelimit": PLANNING_TIME_LIMIT}
+        measured = self.planner == "FFTW_MEASURE"
+        if measured:
+            _fftw_wisdom.load(_pyfftw)  # the plans measured by earlier processes on this machine
+        start = time.perf_counter()
         forward = _pyfftw.FFTW(real_in, spectrum, flags=(self.planner,), **options)
         flags = (self.planner, "FFTW_DESTROY_INPUT")
         backward = _pyfftw.FFTW(spectrum, real_out, direction="FFTW_BACKWARD", flags=flags, **options)
+        if measured and time.perf_counter() - start > WISDOM_SAVED_FROM:
+            _fftw_wisdom.save(_pyfftw)  # a plan that was measured, not found in the wisdom
         real_in[...] = 0.0  # planning may have written into the buffers
         return real_in, spectrum, real_out, forward, backward
 

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy import fft
 
-from roughcontact import _backend
+from roughcontact import _backend, _fftw_wisdom
 from roughcontact._backend import RealFFT2, fft_backend
 from roughcontact.contact import solve_normal
 from roughcontact.contact.normal import compliance_for
@@ -215,3 +215,53 @@ def test_local_cluster_workers_share_the_cores():
     for workers in (1, 2, cores, 4 * cores):
         env = _worker_threads(workers)
         assert int(env[_backend.THREADS_VARIABLE]) == max(cores // workers, 1) == int(env["OMP_NUM_THREADS"])
+
+
+@needs_fftw
+def test_measured_plans_keep_their_wisdom_in_a_file_for_the_next_process(monkeypatch, tmp_path):
+    """A measured plan writes FFTW's wisdom to the file; another process (here: after FFTW forgot it)
+    imports it from there."""
+    import json
+    import shutil
+
+    monkeypatch.setenv(_fftw_wisdom.ENVIRONMENT_VARIABLE, str(tmp_path / "wisdom.json"))
+    monkeypatch.setattr(_backend, "WISDOM_SAVED_FROM", 0.0)  # this small plan counts as measured
+    transform = RealFFT2((48, 40), measure=True)
+    field = np.random.default_rng(3).random((48, 40))
+    kernel = np.ones(transform.spectrum_shape)
+    assert np.allclose(transform.convolve(field, kernel), field, rtol=0, atol=1e-12)
+    parts = json.loads((tmp_path / "wisdom.json").read_text())["wisdom"]
+    assert len(parts) == 3 and parts[0]
+    shutil.copy(tmp_path / "wisdom.json", tmp_path / "next.json")
+    monkeypatch.setenv(_fftw_wisdom.ENVIRONMENT_VARIABLE, str(tmp_path / "next.json"))
+    _backend._pyfftw.forget_wisdom()
+    assert _fftw_wisdom.load(_backend._pyfftw)
+    assert not _fftw_wisdom.load(_backend._pyfftw)  # once per process and path
+
+
+@needs_fftw
+@pytest.mark.parametrize("content", ["not json", '{"wisdom": ["%%%"]}', '{"other": 1}'])
+def test_a_damaged_wisdom_file_only_costs_the_planning(monkeypatch, tmp_path, content):
+    path = tmp_path / "wisdom.json"
+    path.write_text(content)
+    monkeypatch.setenv(_fftw_wisdom.ENVIRONMENT_VARIABLE, str(path))
+    monkeypatch.setattr(_backend, "WISDOM_SAVED_FROM", 0.0)
+    field = np.random.default_rng(4).random((30, 20))
+    transform = RealFFT2((30, 20), measure=True)
+    assert np.allclose(transform.convolve(field, np.ones(transform.spectrum_shape)), field, atol=1e-12)
+    assert "wisdom" in path.read_text() and path.read_text() != content  # rewritten, whole
+
+
+def test_wisdom_can_be_switched_off_and_an_unwritable_cache_is_no_error(monkeypatch, tmp_path):
+    monkeypatch.setenv(_fftw_wisdom.ENVIRONMENT_VARIABLE, "off")
+    assert _fftw_wisdom.wisdom_path() is None
+    assert not _fftw_wisdom.save(_backend._pyfftw) and not _fftw_wisdom.load(_backend._pyfftw)
+    blocker = tmp_path / "a file"
+    blocker.write_text("")
+    monkeypatch.setenv(_fftw_wisdom.ENVIRONMENT_VARIABLE, str(blocker / "wisdom.json"))
+    if _backend._pyfftw is not None:
+        assert not _fftw_wisdom.save(_backend._pyfftw)
+    assert list(tmp_path.iterdir()) == [blocker]  # no temporary file left behind
+    monkeypatch.delenv(_fftw_wisdom.ENVIRONMENT_VARIABLE)
+    default = _fftw_wisdom.wisdom_path()
+    assert default.parent.name == "roughcontact" and default.name.startswith("fftw-wisdom-")
