@@ -12,7 +12,8 @@ to each peer relative to the peak pressure. A case whose tolerance is below its 
 floor (the solver stops as stalled, ``ConvergenceError.stalled_at``; 4096^2 at 1e-10) is solved,
 ours and the peers alike, at twice the floor rounded up (``suggested_tolerance``), and the row
 says so. As for the peers, operator set-up (kernel, FFT plans) is not in the solve time; ours is
-printed beside it. A solve builds its coarse-level operators (and a free surface's box operators)
+printed beside it (after a first run on a machine FFTW's plans come from its wisdom file:
+``ROUGHCONTACT_FFTW_WISDOM=off`` to time the planning itself). A solve builds its coarse-level operators (and a free surface's box operators)
 on first use (``contact/_box.py``; cached on the operator), so the first round's time ("first s")
 is printed too: with ``--repeats 1`` it is the solve time. Iterations are those of the finest level
 (and of the box), not of the coarse levels, whose time is in the solve time. A 32^2 warm-up solve
