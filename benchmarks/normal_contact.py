@@ -13,12 +13,12 @@ floor (the solver stops as stalled, ``ConvergenceError.stalled_at``; 4096^2 at 1
 ours and the peers alike, at twice the floor rounded up (``suggested_tolerance``), and the row
 says so. As for the peers, operator set-up (kernel, FFT plans) is not in the solve time; ours is
 printed beside it (after a first run on a machine FFTW's plans come from its wisdom file:
-``ROUGHCONTACT_FFTW_WISDOM=off`` to time the planning itself). A solve builds its coarse-level operators (and a free surface's box operators)
-on first use (``contact/_box.py``; cached on the operator), so the first round's time ("first s")
-is printed too: with ``--repeats 1`` it is the solve time. Iterations are those of the finest level
-(and of the box), not of the coarse levels, whose time is in the solve time. A 32^2 warm-up solve
-first compiles the numba kernels (cached on disk after the first run of an install). Ends with one
-JSON line.
+``ROUGHCONTACT_FFTW_WISDOM=off`` to time the planning itself). A solve builds its coarse-level
+operators (and a free surface's box operators) on first use (``contact/_box.py``; cached on the
+operator), so the first round's time ("first s") is printed too: with ``--repeats 1`` it is the
+solve time. Iterations are those of the finest level (and of the box), not of the coarse levels,
+whose time is in the solve time. A 32^2 warm-up solve first compiles the numba kernels (cached on
+disk after the first run of an install). Ends with one JSON line.
 
     python benchmarks/normal_contact.py [--sizes 256 512 1024] [--tolerance 1e-10] [--no-peers]
         [--peers aspher] [--peers-up-to 2048] [--free-sizes 256 512 1024] [--repeats 3]

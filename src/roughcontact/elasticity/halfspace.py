@@ -239,11 +239,14 @@ class SurfaceCompliance:
     def self_compliance(self) -> float:
         """K_ii [m/Pa]: a pixel's displacement under its own unit pressure (the operator's diagonal).
 
-        The same at every pixel (the operator is translation-invariant); computed once.
+        The same at every pixel (the operator is translation-invariant); computed once, without a
+        transform: the inverse transform of the kernel at the origin, the mean of the kernel over
+        the whole spectrum, whose columns 1 .. (n - 1) / 2 the rfft layout holds once for two.
         """
-        impulse = np.zeros(self.shape)
-        impulse[0, 0] = 1.0
-        return float(self(impulse)[0, 0])
+        n = self.transform_shape[1]
+        doubled = np.ones(self.kernel.shape[1])
+        doubled[1 : (n + 1) // 2] = 2.0  # the column n/2 of an even n is its own mirror
+        return float(self.kernel.sum(axis=0) @ doubled) / (self.transform_shape[0] * n)
 
     def window(self, shape) -> SurfaceCompliance:
         """Return the half-space operator on a ``shape`` sub-grid of this free surface (same pixels).
