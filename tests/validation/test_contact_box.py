@@ -272,16 +272,19 @@ def _periodic_rough(n):
     return surface, compliance, separation
 
 
-@pytest.mark.parametrize("target", ["force", "approach"])
-def test_the_periodic_cascade_gives_the_single_level_answer(monkeypatch, target):
-    """Coarse levels 64^2 and 128^2 (to the coarse tolerance), then the whole 256^2 grid."""
-    surface, compliance, separation = _periodic_rough(256)
+@pytest.mark.parametrize(
+    "n, target", [(128, "force"), (256, "force"), (256, "approach"), (512, "force"), (512, "approach")]
+)
+def test_the_periodic_cascade_gives_the_single_level_answer(monkeypatch, n, target):
+    """Coarse levels from 64^2 up (to the coarse tolerance), then the whole grid, at every size."""
+    surface, compliance, separation = _periodic_rough(n)
     load = {"force": 5e6 * surface.area} if target == "force" else {"approach": 0.6 * np.std(separation)}
     problem = dict(pixel_area=surface.pixel_area, tolerance=1e-10, **load)
     reference = _constrained_cg.solve(compliance, separation, **problem)
     calls = _recorded(monkeypatch)
     cascaded = _box.solve(compliance, separation, **problem)
-    assert [shape for shape, _ in calls] == [(64, 64), (128, 128), (256, 256)]
+    levels = [(side, side) for side in (64, 128, 256, 512) if side <= n]
+    assert [shape for shape, _ in calls] == levels
     assert np.max(np.abs(cascaded.pressure - reference.pressure)) <= 1e-8 * np.max(reference.pressure)
     assert abs(cascaded.approach - reference.approach) <= 1e-8 * reference.approach
     assert cascaded.residual <= 1e-10
