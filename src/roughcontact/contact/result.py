@@ -60,8 +60,10 @@ class NormalContactResult:
     boundary : str
         "periodic" or "free".
     iterations : int
-        Conjugate-gradient iterations (under load control with a hardness: of all the
-        displacement-controlled solves of the root search for the approach).
+        Conjugate-gradient iterations on the whole grid and on the box around the contact (not
+        those of the coarse levels that warm-start a solve, :mod:`roughcontact.contact._box`);
+        under load control with a hardness, of all the displacement-controlled solves of the
+        root search for the approach.
     residual : float
         Scale-free residual at the returned iterate (see ``roughcontact.contact._constrained_cg``).
     tolerance : float
