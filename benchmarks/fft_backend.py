@@ -6,7 +6,9 @@ by the first application in a process (FFTW plans; the wisdom makes later operat
 same grid free), and one periodic self-affine ``solve_normal`` as in ``periodic_case`` of
 ``benchmarks/normal_contact.py`` (mean pressure 5e6 Pa, E* 1e9 Pa, tolerance 1e-10), operator
 construction included, planning not (it is paid once, above). Solve times are the best of
-``--repeats`` runs. Ratios are FFTW over scipy. Ends with one JSON line.
+``--repeats`` runs. Ratios are FFTW over scipy. Ends with one JSON line. FFTW's wisdom file
+(:mod:`roughcontact._fftw_wisdom`) is off in this benchmark, which times the planning itself,
+unless ``ROUGHCONTACT_FFTW_WISDOM`` is set (then it times plans found in that file).
 
     python benchmarks/fft_backend.py [--sizes 256 512 1024] [--repeats 2] [--no-solve]
 """
@@ -21,6 +23,7 @@ import time
 
 import numpy as np
 
+from roughcontact import _fftw_wisdom
 from roughcontact._backend import ENVIRONMENT_VARIABLE, RealFFT2, fft_backend
 from roughcontact.contact import solve_normal
 from roughcontact.contact.normal import compliance_for
@@ -77,6 +80,7 @@ def main() -> None:
     parser.add_argument("--repeats", type=int, default=2, help="solves per case (best is kept)")
     parser.add_argument("--no-solve", action="store_true", help="time the operator only")
     args = parser.parse_args()
+    os.environ.setdefault(_fftw_wisdom.ENVIRONMENT_VARIABLE, "off")  # time the planning (docstring)
     fft_backend("fftw")  # fail early without pyFFTW
     print(
         f"FFT backend, {os.cpu_count()} CPUs, {platform.processor() or platform.machine()}; "
