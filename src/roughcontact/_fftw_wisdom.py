@@ -18,6 +18,7 @@ temporary file renamed into place, so processes planning at once never leave a t
 from __future__ import annotations
 
 import base64
+import functools
 import hashlib
 import json
 import os
@@ -41,8 +42,9 @@ def wisdom_path() -> Path | None:
     return cache / "roughcontact" / f"fftw-wisdom-{_machine_key()}.json"
 
 
+@functools.cache
 def _machine_key() -> str:
-    """Return a short hash of the processor model, the architecture and the pyFFTW version."""
+    """Return a short hash of the processor model, the architecture and the pyFFTW version (read once)."""
     model = platform.processor()
     try:
         for line in Path("/proc/cpuinfo").read_text().splitlines():

@@ -264,7 +264,7 @@ class SurfaceCompliance:
             raise InputError(
                 "layer", "a layered body has no exact sub-grid operator.", "use the whole grid's."
             )
-        return kernels.sub_grid_operator(self, self._windows, shape, self._free_half_space)
+        return kernels.sub_grid_operator(self, self._windows, shape, self._on_grid)
 
     def coarse(self) -> SurfaceCompliance:
         """Return this body's operator on the grid coarsened 2 x 2 (pixels twice as wide).
@@ -286,29 +286,24 @@ class SurfaceCompliance:
             shape = (self.shape[0] // 2, self.shape[1] // 2)
             spacing = (self.size[0] / self.shape[0], self.size[1] / self.shape[1])
             size = (2 * shape[0] * spacing[0], 2 * shape[1] * spacing[1])
-            modulus = None if self.layer is not None else self.contact_modulus
-            self._derived["coarse"] = SurfaceCompliance(
-                shape,
-                size,
-                modulus,
-                layer=self.layer,
-                counter_body=self._counter_body,
-                boundary=self.boundary,
-                workers=self.workers,
-                fft_backend=self._fft_backend,
-                fft_measure=False,
-            )
+            self._derived["coarse"] = self._on_grid(shape, size, fft_measure=False)
         return self._derived["coarse"]
 
-    def _free_half_space(self, shape, size) -> SurfaceCompliance:
-        """Return a free half-space operator of this one's modulus, threads and backend on another grid."""
+    def _on_grid(self, shape, size, fft_measure=None) -> SurfaceCompliance:
+        """Return this body's operator on another grid (the builder of :meth:`window` and :meth:`coarse`).
+
+        Modulus or layer, counter-body, boundary, threads and FFT backend are this operator's.
+        """
         return SurfaceCompliance(
             shape,
             size,
-            self.contact_modulus,
-            boundary="free",
+            None if self.layer is not None else self.contact_modulus,
+            layer=self.layer,
+            counter_body=self._counter_body,
+            boundary=self.boundary,
             workers=self.workers,
             fft_backend=self._fft_backend,
+            fft_measure=fft_measure,
         )
 
     def __call__(self, pressure: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
