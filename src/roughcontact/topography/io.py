@@ -51,6 +51,7 @@ from ..units import length_unit_factor, quantity
 from .native import channel_name, is_native_file, read_native
 from .process import fill_undefined
 from .surface import Topography
+from .text import TextFormatError, TextTable, decode_text, parse_table
 
 __all__ = ["ChannelInfo", "list_channels", "read_topography"]
 
@@ -362,6 +363,113 @@ def _decompressed(path: Path) -> io.BytesIO | str:
     return io.BytesIO(content)
 
 
+_LOOSE_TEXT_READERS = ("asc", "xyz")
+"""SurfaceTopography's readers that guess the layout of a text file (checked by :mod:`.text`)."""
+
+_SIZE_ONLY_READERS = ("hgt",)
+"""SurfaceTopography's readers that recognise a file by its size alone (NASA SRTM: n x n int16)."""
+
+
+def _text_content(source: io.BytesIO | str) -> str | None:
+    """The file as text when it is a text file (see :func:`.text.decode_text`), else None."""
+    if isinstance(source, io.BytesIO):
+        return decode_text(source.getvalue())
+    with open(source, "rb") as stream:
+        if decode_text(stream.read(1 << 16)) is None:
+            return None
+        return decode_text(Path(source).read_bytes())
+
+
+def _grid_agrees(reader, table: TextTable) -> bool:
+    """Whether SurfaceTopography read exactly the table that :func:`.text.parse_table` found."""
+    if len(reader.channels) != 1:
+        return False
+    grid = tuple(int(n) for n in reader.channels[0].nb_grid_pts)
+    rows, columns = table.shape
+    if reader.format() == "xyz":
+        return columns in (2, 3) and math.prod(grid) == rows
+    if columns == 1 or rows == 1:
+        return grid == (rows * columns,)
+    return grid == (columns, rows)
+
+
+def _checked_text_reader(path: Path, text: str, reader, tried: str):
+    """Return a reader of a text file that reads exactly its strict table, or refuse the file.
+
+    ``reader`` is SurfaceTopography's own guess (None when it found none), ``tried`` says what
+    it tried. A comma- or semicolon-separated table (or one with decimal commas) is handed to
+    SurfaceTopography blank-separated, header unchanged.
+    """
+    import SurfaceTopography
+
+    try:
+        table = parse_table(text)
+    except TextFormatError as error:
+        if error.line is None:
+            fix = "give an instrument file, or heights as a table of numbers (a matrix or x z / x y z columns)."
+        else:
+            fix = (
+                "correct that line in a text editor, or export the file again: plain-text heights are "
+                "read only when every data line holds the same number of numbers (nan marks an "
+                "undefined point)."
+            )
+        raise UnsupportedFormatError(
+            str(path), f"is not a clean table of numbers: {error} {tried}", fix
+        ) from error
+    if reader is not None and reader.format() not in _SIZE_ONLY_READERS and _grid_agrees(reader, table):
+        return reader
+    if reader is not None:
+        reader.close()
+    reader = SurfaceTopography.open_topography(io.BytesIO(table.normalised().encode()))
+    if not _grid_agrees(reader, table):
+        found = " x ".join(map(str, reader.channels[0].nb_grid_pts)) if reader.channels else "nothing"
+        reader.close()
+        raise UnsupportedFormatError(
+            str(path),
+            f"holds a {table.shape[0]} x {table.shape[1]} table of numbers ({table.layout}), "
+            f"but SurfaceTopography reads {found} from it.",
+            "write the heights as a matrix (one line per y, one value per x) or as x z / x y z columns.",
+        )
+    return reader
+
+
+def _opened(path: Path, source: io.BytesIO | str):
+    """Open ``source`` with SurfaceTopography, holding its guesses to what the content is.
+
+    A text file read by a reader that guesses its layout (plain-text matrices, x-y-z columns) must
+    be the clean table :func:`.text.parse_table` finds; a file recognised by its size alone (NASA
+    SRTM) is taken only when it is binary and named ``.hgt``.
+    """
+    import SurfaceTopography
+    from SurfaceTopography.Exceptions import CannotDetectFileFormat
+
+    text = _text_content(source)
+    try:
+        reader = SurfaceTopography.open_topography(source)
+    except CannotDetectFileFormat:
+        if text is None:
+            raise
+        reader = None
+    guessed = None if reader is None else reader.format()
+    tried = (
+        "No instrument format matches it either."
+        if reader is None
+        else f"(SurfaceTopography's {reader.name()!r} reader would accept it without this check.)"
+    )
+    if text is not None and (reader is None or guessed in _LOOSE_TEXT_READERS + _SIZE_ONLY_READERS):
+        return _checked_text_reader(path, text, reader, tried)
+    if guessed in _SIZE_ONLY_READERS and path.suffix.lower() != ".hgt":
+        reader.close()
+        raise UnsupportedFormatError(
+            str(path),
+            "no reader recognises this file by its content; only the NASA SRTM elevation reader "
+            "would take it, by its size alone (2 bytes per point of a square grid), and it is not "
+            "named .hgt.",
+            _REREAD_FIX,
+        )
+    return reader
+
+
 @contextmanager
 def _open_reader(path: Path):
     """Open ``path`` (decompressing gzip) with SurfaceTopography; close the reader afterwards.
@@ -369,11 +477,9 @@ def _open_reader(path: Path):
     Failures inside the ``with`` block that uses the reader are reported as in
     :func:`_reader_errors`, since any access to the reader may parse more of the file.
     """
-    import SurfaceTopography
-
     source = _decompressed(path)
     with _reader_errors(path):
-        reader = SurfaceTopography.open_topography(source)
+        reader = _opened(path, source)
         try:
             yield reader
         finally:
