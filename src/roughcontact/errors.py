@@ -20,17 +20,27 @@ class InputError(ValueError):
     problem : str
         What is wrong with it.
     fix : str, optional
-        What the user should do instead.
+        What the user should do instead, in Python's words (``channel=0``).
+    fixes : dict, optional
+        The fix in another front end's words, by style: ``"study"`` (a study file: ``channel = 0``)
+        and ``"cli"`` (the command line: ``--channel 0``); :meth:`fix_in` falls back to ``fix``.
     """
 
-    def __init__(self, field: str, problem: str, fix: str | None = None):
+    def __init__(
+        self, field: str, problem: str, fix: str | None = None, *, fixes: dict[str, str] | None = None
+    ):
         self.field = field
         self.problem = problem
         self.fix = fix
+        self.fixes = dict(fixes or {})
         message = f"{field}: {problem}"
         if fix:
             message += f" Fix: {fix}"
         super().__init__(message)
+
+    def fix_in(self, style: str) -> str | None:
+        """Return the fix in the words of ``style`` (``"python"``, ``"study"`` or ``"cli"``)."""
+        return self.fixes.get(style, self.fix)
 
 
 class UnitError(InputError):

@@ -77,10 +77,16 @@ def test_read_topography_and_list_channels_recognise_native_files(tmp_path):
     [channel] = list_channels(path)
     assert (channel.shape, channel.size) == ((8, 5), (2e-6, 3e-6))
     assert (channel.height_unit, channel.is_default) == ("m", True)
-    resized = read_topography(path, size="4 um")
+    with pytest.raises(InputError, match="2 µm x 3 µm") as caught:
+        read_topography(path, size="4 um")
+    assert caught.value.field == "size" and "override_file_values=True" in caught.value.fix
+    resized = read_topography(path, size="4 um", override_file_values=True)
     assert resized.size == (4e-6, 4e-6) and resized.info["size_in_file"] == (2e-6, 3e-6)
+    assert read_topography(path, size=("2 um", "3 um")) == topography  # the file's own size: no clash
     with pytest.raises(InputError, match="'m'"):
         read_topography(path, height_unit="nm")
+    in_nm = read_topography(path, height_unit="nm", override_file_values=True)
+    np.testing.assert_array_equal(in_nm.heights, topography.heights * 1e-9)
 
 
 def test_failed_write_leaves_nothing_and_keeps_the_old_file(tmp_path, monkeypatch):

@@ -188,9 +188,16 @@ def test_unit_less_xyz_needs_size_and_unit(shared_topographies):
         read_topography(shared_topographies / "xyz-1.txt", height_unit="um")
 
 
-def test_user_size_wins_over_the_file(shared_topographies):
+def test_a_size_beside_the_files_own_is_refused_unless_overridden(shared_topographies):
     path = shared_topographies / "di-3.di"
-    topography = read_topography(path, size=("20 um", 30e-6))
+    with pytest.raises(InputError) as caught:
+        read_topography(path, size=("20 um", 30e-6))
+    assert caught.value.field == "size"
+    assert "10 µm x 10 µm" in caught.value.problem and "20 µm x 30 µm" in caught.value.problem
+    assert "override_file_values=True" in caught.value.fix
+    assert "--override-file-values" in caught.value.fix_in("cli")
+    assert read_topography(path, size="10 um").size == read_topography(path).size  # same value: no clash
+    topography = read_topography(path, size=("20 um", 30e-6), override_file_values=True)
     assert topography.size == (20e-6, 30e-6)
     assert topography.info["size_in_file"] == pytest.approx((10 * UM, 10 * UM), rel=1e-12, abs=0)
     assert np.array_equal(topography.heights, read_topography(path).heights)
@@ -200,7 +207,9 @@ def test_height_unit_must_agree_with_the_file(shared_topographies):
     path = shared_topographies / "di-3.di"
     with pytest.raises(InputError, match="'nm'") as caught:
         read_topography(path, height_unit="um")
-    assert caught.value.field == "height_unit"
+    assert caught.value.field == "height_unit" and "'um'" in caught.value.problem
+    overridden = read_topography(path, height_unit="um", override_file_values=True)
+    np.testing.assert_allclose(overridden.heights, read_topography(path).heights * 1000, rtol=1e-14)
     assert np.array_equal(read_topography(path, height_unit="nm").heights, read_topography(path).heights)
 
 

@@ -52,11 +52,21 @@ def file_options(*, required: bool = True) -> argparse.ArgumentParser:
     )
     group.add_argument("--channel", type=channel_argument, help="channel name or index (default: the file's)")
     group.add_argument(
+        "--treat-as-height",
+        action="store_true",
+        help="read a channel whose name says it holds no heights (phase, amplitude, error...) as heights",
+    )
+    group.add_argument(
         "--size",
         type=size_argument,
         help="physical scan size where the file lacks it, e.g. '5 um' or '5 um x 10 um'",
     )
     group.add_argument("--height-unit", help="unit of the stored heights where the file lacks it, e.g. nm")
+    group.add_argument(
+        "--override-file-values",
+        action="store_true",
+        help="use --size/--height-unit where the file stores other values (its metadata are wrong)",
+    )
     group.add_argument(
         "--fill-undefined",
         action="store_true",
@@ -113,9 +123,20 @@ def read_file(args: argparse.Namespace):
     for part in args.size or ():  # a unit is required here, as in a study file ('--size 5' is not 5 m)
         quantity(part, "length", field="--size", require_unit=True)
     size = args.size if args.size is None or len(args.size) > 1 else args.size[0]
-    scan = read_scan(
-        args.file, channel=args.channel, size=size, height_unit=args.height_unit, periodic=args.periodic
-    )
+    try:
+        scan = read_scan(
+            args.file,
+            channel=args.channel,
+            size=size,
+            height_unit=args.height_unit,
+            periodic=args.periodic,
+            treat_as_height=args.treat_as_height,
+            override_file_values=args.override_file_values,
+        )
+    except InputError as error:
+        if "cli" not in error.fixes:
+            raise
+        raise InputError(_flag(error.field), error.problem, error.fix_in("cli")) from None
     undefined = None
     if not isinstance(scan, Scan):
         topography = scan
@@ -253,7 +274,15 @@ class CommandStudy:
         table: dict[str, Any] = {"file": str(Path(file if file is not None else args.file).resolve())}
         where = ("topographies", name)
         self.document["topographies"][name] = table
-        for key in ("size", "height_unit", "channel", "fill_undefined", "max_filled"):  # named in fixes
+        for key in (
+            "size",
+            "height_unit",
+            "channel",
+            "fill_undefined",
+            "max_filled",
+            "treat_as_height",
+            "override_file_values",
+        ):
             self.words.setdefault(key, _flag(key))
         self.flags[(*where, "max_filled")] = "--max-filled"
         self.name_flag((*where, "file"), "FILE" if file is None else str(file))
@@ -264,7 +293,9 @@ class CommandStudy:
                 self.set((*where, key), getattr(args, key), _flag(key))
         if getattr(args, "size", None) is not None:
             self.set((*where, "size"), list(args.size) if len(args.size) > 1 else args.size[0], "--size")
-        for key in ("fill_undefined", "periodic") if file is None else ():
+        if getattr(args, "override_file_values", False):
+            self.set((*where, "override_file_values"), True, "--override-file-values")
+        for key in ("fill_undefined", "periodic", "treat_as_height") if file is None else ():
             if getattr(args, key, False):
                 self.set((*where, key), True, _flag(key))
         if getattr(args, "detrend", None) is not None:
@@ -435,7 +466,7 @@ class CommandStudy:
             (
                 self.option_of(p.path) or p.field,
                 self.translate(p.problem, p.path),
-                self.translate(p.fix, p.path),
+                getattr(p, "cli_fix", None) or self.translate(p.fix, p.path),
             )
             for p in problems
         ]

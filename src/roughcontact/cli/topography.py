@@ -15,7 +15,7 @@ from .._json import json_ready
 from ..errors import InputError
 from ..study.display import shown
 from ..topography import Topography
-from ..topography.io import MAX_FILLED, max_filled_allowing
+from ..topography.io import MAX_FILLED, channel_of, channel_words, max_filled_allowing
 from ..topography.process import LEVELLING
 from ..topography.statistics import SUMMARY
 from ..units import format_si
@@ -35,6 +35,7 @@ def describe(topography: Topography, undefined=None) -> dict:
 
     description = {
         "name": topography.info.get("name") or topography.info.get("source"),
+        "channel": channel_of(topography.info),
         "grid": list(topography.shape),
         "size_m": list(topography.size),
         "spacing_m": list(topography.spacing),
@@ -61,8 +62,10 @@ def format_description(description: dict) -> str:
     """Render :func:`describe` output as an aligned text table with SI-prefixed units."""
     size = " x ".join(format_si(s, "m") for s in description["size_m"])
     spacing = " x ".join(format_si(s, "m") for s in description["spacing_m"])
-    lines = [
-        f"surface        {description['name']}",
+    lines = [f"surface        {description['name']}"]
+    if description.get("channel"):
+        lines.append(f"channel        {channel_words(description['channel'])}")
+    lines += [
         f"grid           {' x '.join(str(n) for n in description['grid'])} points",
         f"physical size  {size}  (pixel {spacing})",
         f"periodic       {description['periodic']}",
@@ -117,6 +120,8 @@ def _inspect(args: argparse.Namespace) -> int:
             "size_m": None if c.size is None else list(c.size),
             "height_unit": c.height_unit,
             "default": c.is_default,
+            "holds_heights": c.is_height,
+            "holds": c.holds or "heights",
         }
         for c in channels
     ]
@@ -129,7 +134,8 @@ def _inspect(args: argparse.Namespace) -> int:
         size = "size not in file" if c.size is None else " x ".join(format_si(s, "m") for s in c.size)
         marker = "*" if c.is_default else " "
         grid = " x ".join(str(n) for n in c.shape)
-        print(f" {marker}{c.index:>2}  {c.name:<24} {grid:<12} {size:<24} heights in {c.height_unit or '?'}")
+        holds = f"heights in {c.height_unit or '?'}" if c.is_height else f"not heights: {c.holds}"
+        print(f" {marker}{c.index:>2}  {c.name:<24} {grid:<12} {size:<24} {holds}")
     print(format_description(description))
     return 0
 

@@ -60,6 +60,7 @@ from pydantic import BaseModel
 from ..errors import InputError, MissingMetadataError, UndefinedPointsError
 from ..materials import MATERIALS, Material, get_material
 from ..topography import Topography
+from ..topography.io import channel_of
 from ..units import format_si
 from .kind import CaseParameters, Kind
 from .problems import Problem, Where, collect
@@ -247,7 +248,7 @@ def preparation(spec: FileTopography, topography: Topography) -> dict[str, Any]:
     filled = int(topography.info.get("undefined_points_filled", 0))
     return {
         "file": Path(spec.file).name,
-        "channel": topography.info.get("channel"),
+        "channel": channel_of(topography.info),
         "grid": list(topography.shape),
         "size_m": list(topography.size),
         "detrend": spec.detrend,
@@ -279,9 +280,9 @@ class _Builder:
         for name, raw in self.raw_materials.items():
             self._material(name, raw)
 
-    def problem(self, where: Where, problem: str, fix: str | None) -> None:
-        """Record a problem at ``where``."""
-        self.problems.append(Problem(where.label, problem, fix, where.path))
+    def problem(self, where: Where, problem: str, fix: str | None, cli_fix: str | None = None) -> None:
+        """Record a problem at ``where`` (``cli_fix``: its fix in the command line's words, if known)."""
+        self.problems.append(Problem(where.label, problem, fix, where.path, cli_fix))
 
     def _tables(self, key: str) -> dict[str, dict]:
         tables = self.document.get(key, {})
@@ -337,6 +338,8 @@ class _Builder:
                 undefined="interpolate" if spec.fill_undefined else "refuse",
                 max_filled=spec.max_filled,
                 periodic=spec.periodic,
+                treat_as_height=spec.treat_as_height,
+                override_file_values=spec.override_file_values,
             )
         except InputError as error:  # said in a study file's words
             fix = error.fix
@@ -348,8 +351,11 @@ class _Builder:
                 fix = f"if that is acceptable, allow it: max_filled = {error.allowing:g}; or crop them away."
             elif isinstance(error, UndefinedPointsError):
                 fix = "add fill_undefined = true to fill them by harmonic interpolation, or crop them away."
+            else:
+                fix = error.fix_in("study")
             key = error.field if error.field in ("size", "height_unit", "channel", "max_filled") else "file"
-            self.problem(Where(where.child(key).path, f"{where.label} ({error.field})"), error.problem, fix)
+            place = Where(where.child(key).path, f"{where.label} ({error.field})")
+            self.problem(place, error.problem, fix, error.fixes.get("cli"))
             return None
         sides = [side for side in topography.size if not 1e-9 <= side <= 1.0]
         if sides:

@@ -49,14 +49,19 @@ class Problem(tuple):
         How to fix it.
     path : tuple
         Where the value sits in the document (``("materials", "film", "youngs_modulus")``).
+    cli_fix : str or None
+        The fix in the command line's words, where a study file's words do not translate
+        (``leave --size out`` for ``remove size``).
     """
 
     path: Path
+    cli_fix: str | None
 
-    def __new__(cls, field: str, problem: str, fix: str | None, path: Path = ()):
+    def __new__(cls, field: str, problem: str, fix: str | None, path: Path = (), cli_fix: str | None = None):
         """Make the triple, with its ``path`` in the document."""
         self = super().__new__(cls, (field, problem, fix))
         self.path = tuple(path)
+        self.cli_fix = cli_fix
         return self
 
     @property

@@ -13,6 +13,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
+from ..topography.io import channel_words
 from ..topography.process import LEVELLING
 from ..units import format_si
 from .display import column_cells, columns, number
@@ -111,7 +112,9 @@ def preparation_line(name: str, prepared: dict[str, Any]) -> str:
         else "no undefined points"
     )
     words = LEVELLING.get(prepared["detrend"], prepared["detrend"])
-    return f"{name}: {prepared['file']}, {grid} points, {size}; {words}; {undefined}."
+    channel = prepared.get("channel")
+    channel = f" channel {channel_words(channel)}" if isinstance(channel, dict) else ""
+    return f"{name}: {prepared['file']}{channel}, {grid} points, {size}; {words}; {undefined}."
 
 
 def _cases(analysis: StoredAnalysis, rows: list[dict]) -> list[str]:

@@ -181,8 +181,12 @@ class FileTopography(Strict):
 
     file: Path
     channel: int | str | None = None
+    treat_as_height: bool = False
+    """Read a channel whose name says it holds no heights (phase, amplitude, ...) as heights."""
     size: LengthPerAxis | None = None
     height_unit: str | None = None
+    override_file_values: bool = False
+    """Use size and height_unit where the file stores other values (else such a clash is refused)."""
     fill_undefined: bool = False
     max_filled: float = Field(default=MAX_FILLED, ge=0.0, le=1.0)
     """Largest fraction of undefined points that fill_undefined may fill (more needs saying so)."""

@@ -47,13 +47,14 @@ from ..errors import (
     UnitError,
     UnsupportedFormatError,
 )
-from ..units import length_unit_factor, quantity
+from ..units import format_si, length_unit_factor, quantity
+from .channels import ChannelKind, classify_channel
 from .native import channel_name, is_native_file, read_native
 from .process import fill_undefined
 from .surface import Topography
 from .text import TextFormatError, TextTable, decode_text, parse_table
 
-__all__ = ["ChannelInfo", "list_channels", "read_topography"]
+__all__ = ["ChannelInfo", "channel_of", "channel_words", "list_channels", "read_topography"]
 
 _GZIP_MAGIC = b"\x1f\x8b"
 _UNDEFINED_CHOICES = ("refuse", "interpolate")
@@ -97,6 +98,11 @@ class ChannelInfo:
         Unit of the lateral sizes in the file.
     is_default : bool
         Whether this is the file's default channel (read when ``channel`` is not given).
+    is_height : bool
+        Whether the channel holds heights (:func:`roughcontact.topography.channels.classify_channel`:
+        its name, unit and data kind); a computation refuses the others.
+    holds : str
+        What a channel that holds no heights holds, and how that was seen (empty for heights).
     """
 
     index: int
@@ -106,6 +112,8 @@ class ChannelInfo:
     height_unit: str | None
     size_unit: str | None
     is_default: bool
+    is_height: bool = True
+    holds: str = ""
 
 
 # --- public functions ------------------------------------------------------------------------------
@@ -158,6 +166,8 @@ def read_topography(
     undefined: str = "refuse",
     max_filled: float = MAX_FILLED,
     periodic: bool = False,
+    treat_as_height: bool = False,
+    override_file_values: bool = False,
 ) -> Topography:
     """Read one channel of a topography file into a :class:`Topography` in SI units.
 
@@ -174,14 +184,16 @@ def read_topography(
         roughcontact ``.nc`` file written by :func:`~roughcontact.topography.native.save_topography`.
     channel : int or str, optional
         Channel index or name (see :func:`list_channels`); default: the file's default channel.
+        A name that two channels share is refused (choose by index). Only channels that hold
+        heights are read (:mod:`roughcontact.topography.channels`).
     size : float or str or tuple, optional
         Physical scan size: metres as a float, or a string with a unit (``"10 um"``); one value
         (square map or a profile) or one per axis (``("10 um", "20 um")``). Required when the
-        file has no size; when the file has one, this value wins and ``info['size_in_file']``
-        keeps the file's.
+        file has no size; when the file has one, a different size is refused unless
+        ``override_file_values`` (then ``info['size_in_file']`` keeps the file's).
     height_unit : str, optional
         Unit of the stored heights (``"nm"``, ``"um"``, ...). Required when the file declares
-        none; must agree with the file's unit when it declares one.
+        none; a unit other than the file's is refused unless ``override_file_values``.
     undefined : {"refuse", "interpolate"}
         What to do with undefined (missing) points: refuse the file, or fill them by harmonic
         interpolation (:func:`roughcontact.topography.process.fill_undefined`), recording the
@@ -193,6 +205,13 @@ def read_topography(
     periodic : bool
         Treat the surface as periodic (measured surfaces are not, as a rule). A file that
         declares itself periodic (a roughcontact or SurfaceTopography ``.nc`` file) stays so.
+    treat_as_height : bool
+        Read a channel whose name or data kind says it holds no heights (phase, amplitude,
+        error, ...) as heights anyway, for a file whose channels are misnamed. A channel whose
+        values are in a unit that is not a length is refused all the same.
+    override_file_values : bool
+        Use ``size`` and ``height_unit`` where the file stores other values (a file whose
+        metadata are known to be wrong); without it such a clash is refused, showing both.
 
     Returns
     -------
@@ -217,7 +236,15 @@ def read_topography(
     """
     if undefined not in _UNDEFINED_CHOICES:
         raise InputError("undefined", f"unknown choice {undefined!r}.", "choose 'refuse' or 'interpolate'.")
-    scan = read_scan(path, channel=channel, size=size, height_unit=height_unit, periodic=periodic)
+    scan = read_scan(
+        path,
+        channel=channel,
+        size=size,
+        height_unit=height_unit,
+        periodic=periodic,
+        treat_as_height=treat_as_height,
+        override_file_values=override_file_values,
+    )
     if isinstance(scan, Topography):
         return scan
     return scan.topography(undefined=undefined, max_filled=max_filled)
@@ -276,6 +303,8 @@ def read_scan(
     size: SizeLike | None = None,
     height_unit: str | None = None,
     periodic: bool = False,
+    treat_as_height: bool = False,
+    override_file_values: bool = False,
 ) -> Scan | Topography:
     """Read one channel of a file as stored: a :class:`Scan` (NaN where undefined), SI units.
 
@@ -284,14 +313,15 @@ def read_scan(
     """
     path = existing_file(path, empty_fix=_REREAD_FIX)
     if is_native_file(path):
-        return _with_options(read_native(path, channel=channel), path, size, height_unit, periodic)
+        topography = read_native(path, channel=channel)
+        return _with_options(topography, path, size, height_unit, periodic, override_file_values)
     with _open_reader(path) as reader:
         selected = _select_channel(reader, channel, path)
         file_size_unit, file_height_unit = _file_units(selected)
-        _check_height_channel(selected, file_height_unit, reader)
+        _check_height_channel(selected, reader, treat_as_height)
         _require_metadata(path, reader, selected, (file_size_unit, file_height_unit), size, height_unit)
         user_size = None if size is None else _user_size(size, selected.dim)
-        height_factor = _height_factor(path, file_height_unit, height_unit)
+        height_factor = _height_factor(path, file_height_unit, height_unit, override_file_values)
         dummy_size = None if selected.physical_sizes is not None else tuple(map(float, selected.nb_grid_pts))
         measured = reader.topography(channel_index=selected.index, physical_sizes=dummy_size)
         heights, extent, steps = _uniform_heights(measured)
@@ -307,11 +337,40 @@ def read_scan(
     else:
         physical_size = user_size
         if file_size is not None:
+            _size_agrees(path, file_size, user_size, override_file_values)
             info["size_in_file"] = file_size
         elif selected.physical_sizes is not None:
             info["size_in_file_without_unit"] = tuple(map(float, extent))
     info["history"] = (f"read {path.name} channel {selected.name!r} ({reader.name()})", *steps)
     return Scan(heights, tuple(float(s) for s in np.atleast_1d(physical_size)), periodic, info, path)
+
+
+def channel_of(info: Mapping[str, Any]) -> dict[str, Any] | None:
+    """Return the channel a topography was read from: ``{"name", "index", "shares_name_with"}``.
+
+    None for a topography that was not read from a file channel (generated, combined).
+    """
+    if "channel" not in info:
+        return None
+    return {
+        "name": info["channel"],
+        "index": info.get("channel_index"),
+        "shares_name_with": list(info.get("channel_shares_name_with", ())),
+    }
+
+
+def channel_words(channel: Mapping[str, Any]) -> str:
+    """Return a channel in words: ``'Height' (index 0; index 1 has the same name)``."""
+    words = f"{channel['name']!r}"
+    if channel.get("index") is not None:
+        words += f" (index {channel['index']}"
+        others = channel.get("shares_name_with") or []
+        if others:
+            one = len(others) == 1
+            indices = ", ".join(map(str, others))
+            words += f"; {'index' if one else 'indices'} {indices} {'has' if one else 'have'} the same name"
+        words += ")"
+    return words
 
 
 # --- files and SurfaceTopography -----------------------------------------------------------------
@@ -371,7 +430,7 @@ _SIZE_ONLY_READERS = ("hgt",)
 
 
 def _text_content(source: io.BytesIO | str) -> str | None:
-    """The file as text when it is a text file (see :func:`.text.decode_text`), else None."""
+    """Return the file as text when it is a text file (see :func:`.text.decode_text`), else None."""
     if isinstance(source, io.BytesIO):
         return decode_text(source.getvalue())
     with open(source, "rb") as stream:
@@ -406,7 +465,9 @@ def _checked_text_reader(path: Path, text: str, reader, tried: str):
         table = parse_table(text)
     except TextFormatError as error:
         if error.line is None:
-            fix = "give an instrument file, or heights as a table of numbers (a matrix or x z / x y z columns)."
+            fix = (
+                "give an instrument file, or heights as a table of numbers (a matrix or x z / x y z columns)."
+            )
         else:
             fix = (
                 "correct that line in a text editor, or export the file again: plain-text heights are "
@@ -520,9 +581,22 @@ def _grid_extent(channel) -> tuple[float, ...]:
     return tuple(s * n / (n - 1) for s, n in zip(extent, channel.nb_grid_pts, strict=True))
 
 
+def _kind(channel) -> ChannelKind:
+    """Whether a SurfaceTopography channel holds heights (:func:`.channels.classify_channel`)."""
+    unit = _file_units(channel)[1]
+    data_kind = getattr(channel, "data_kind", None)
+    return classify_channel(
+        str(channel.name),
+        unit,
+        None if unit is None else _length_factor(unit) is not None,
+        None if data_kind is None else getattr(data_kind, "name", str(data_kind)),
+    )
+
+
 def _channel_info(channel, is_default: bool) -> ChannelInfo:
     size_unit, height_unit = _file_units(channel)
     size = None if channel.physical_sizes is None else _size_in_metres(_grid_extent(channel), size_unit)
+    kind = _kind(channel)
     return ChannelInfo(
         index=int(channel.index),
         name=str(channel.name),
@@ -531,15 +605,16 @@ def _channel_info(channel, is_default: bool) -> ChannelInfo:
         height_unit=height_unit,
         size_unit=size_unit,
         is_default=is_default,
+        is_height=kind.is_height,
+        holds=kind.reason,
     )
 
 
-def _channel_names(reader) -> str:
-    return ", ".join(f"{c.index}: {c.name!r}" for c in reader.channels)
-
-
 def _select_channel(reader, channel: int | str | None, path: Path):
-    """Return the SurfaceTopography channel chosen by index or name (default: the file's)."""
+    """Return the SurfaceTopography channel chosen by index or name (default: the file's).
+
+    A name that several channels share is refused, naming their indices.
+    """
     channels = reader.channels
     if channel is None:
         return reader.default_channel
@@ -551,32 +626,69 @@ def _select_channel(reader, channel: int | str | None, path: Path):
         raise InputError(
             "channel",
             f"expected a channel index or name, got {type(channel).__name__}.",
-            f"choose one of {_channel_names(reader)}.",
+            f"give an index or a name: {_channel_list(reader)}.",
         )
     if not matches:
-        raise InputError(
-            "channel",
+        raise _channel_error(
             f"{path.name} has no channel {channel!r}.",
-            f"choose one of {_channel_names(reader)} (by index or name).",
+            [int(c.index) for c in channels if _kind(c).is_height],
+            False,
+            reader,
+        )
+    if len(matches) > 1:
+        indices = " and ".join(str(c.index) for c in matches)
+        raise _channel_error(
+            f"{path.name} has {len(matches)} channels named {channel!r}: indices {indices}.",
+            [int(c.index) for c in matches],
+            False,
+            reader,
         )
     return matches[0]
 
 
-def _height_channel_names(reader) -> list[str]:
-    """Names of the channels whose values the file declares in a length unit."""
-    return [c.name for c in reader.channels if _length_factor(_file_units(c)[1]) is not None]
+def _same_name(reader, channel) -> list[int]:
+    """Return the indices of the other channels named like ``channel``."""
+    return [int(c.index) for c in reader.channels if c.name == channel.name and c.index != channel.index]
 
 
-def _check_height_channel(channel, file_height_unit: str | None, reader) -> None:
-    """Refuse a channel whose values are not lengths (phase in deg, potential in V, ...)."""
-    if file_height_unit is None or _length_factor(file_height_unit) is not None:
-        return
-    names = ", ".join(map(repr, _height_channel_names(reader))) or "none in this file"
-    raise InputError(
-        "channel",
-        f"channel {channel.name!r} holds values in {file_height_unit!r}, not heights.",
-        f"choose a height channel: {names}.",
+def _channel_list(reader) -> str:
+    """Every channel as ``0: 'ZSensor' (heights), 2: 'Phase' (not heights)``."""
+    return ", ".join(
+        f"{c.index}: {c.name!r} ({'heights' if _kind(c).is_height else 'not heights'})"
+        for c in reader.channels
     )
+
+
+def _check_height_channel(channel, reader, treat_as_height: bool) -> None:
+    """Refuse a channel that holds no heights (phase, amplitude, error, a unit that is no length)."""
+    kind = _kind(channel)
+    if kind.is_height or (treat_as_height and kind.unit_is_length is not False):
+        return
+    raise _channel_error(
+        f"channel {channel.index} ({channel.name!r}) holds {kind.reason}, not heights.",
+        [int(c.index) for c in reader.channels if _kind(c).is_height],
+        kind.unit_is_length is not False,
+        reader,
+    )
+
+
+def _channel_error(problem: str, choices: list[int], override: bool, reader) -> InputError:
+    """Return the refusal of a channel, offering ``choices`` (and ``treat_as_height`` with ``override``)."""
+    fixes = {}
+    for style, choose, flag in (
+        ("python", "channel={}", "treat_as_height=True"),
+        ("study", "channel = {}", "treat_as_height = true"),
+        ("cli", "--channel {}", "--treat-as-height"),
+    ):
+        if choices:
+            options = " or ".join(choose.format(index) for index in choices[:3])
+            fix = f"choose a channel by its index, {options} ({_channel_list(reader)})"
+        else:
+            fix = f"this file has no height channel ({_channel_list(reader)})"
+        if override:
+            fix += f"; if this channel does hold heights (a misnamed channel), add {flag}"
+        fixes[style] = fix + "."
+    return InputError("channel", problem, fixes["python"], fixes=fixes)
 
 
 def _require_metadata(
@@ -602,10 +714,6 @@ def _require_metadata(
             notes.append('a non-square scan takes size=("5 um", "10 um") or --size "5 um x 10 um"')
     if height_unit is None and file_height_unit is None:
         missing.append(("height_unit", "no height unit", 'height_unit="nm"', "--height-unit nm", "nm"))
-        others = [name for name in _height_channel_names(reader) if name != channel.name]
-        if others:
-            names = ", ".join(map(repr, others))
-            notes.append(f"channel {channel.name!r} may hold no heights; these do: {names}")
     if not missing:
         return
     what = " and ".join(m[1] for m in missing)
@@ -623,20 +731,50 @@ def _require_metadata(
     )
 
 
-def _height_factor(path: Path, file_unit: str | None, user_unit: str | None) -> float:
-    """Factor from stored heights to metres: the file's unit, or the user's when the file has none."""
+def _clash(field: str, problem: str, use_file: str, use_given: str) -> InputError:
+    """Return the refusal of a value given beside the file's own, both ways out in each front end's words."""
+    flag = "--" + field.replace("_", "-")
+    fixes = {
+        "python": f"leave {field} out to use {use_file}, or add override_file_values=True to use "
+        f"{use_given}.",
+        "study": f"remove {field} to use {use_file}, or add override_file_values = true to use {use_given}.",
+        "cli": f"leave {flag} out to use {use_file}, or add --override-file-values to use {use_given}.",
+    }
+    return InputError(field, problem, fixes["python"], fixes=fixes)
+
+
+def _size_agrees(path: Path, file_size, user_size, override: bool) -> None:
+    """Refuse a given size that differs from the file's, unless ``override``."""
+    if override or np.allclose(file_size, user_size, rtol=1e-9, atol=0.0):
+        return
+    stored, given = (" x ".join(format_si(s, "m") for s in sides) for sides in (file_size, user_size))
+    raise _clash(
+        "size",
+        f"{path.name} stores its scan size, {stored}, but size {given} was given.",
+        f"the file's {stored}",
+        f"{given} (the file's value is kept as size_in_file)",
+    )
+
+
+def _height_factor(path: Path, file_unit: str | None, user_unit: str | None, override: bool = False) -> float:
+    """Factor from stored heights to metres: the file's unit, or the user's when the file has none.
+
+    A user's unit other than the file's is refused unless ``override``.
+    """
     user_factor = None if user_unit is None else length_unit_factor(user_unit, field="height_unit")
     if file_unit is None:
         return user_factor
     file_factor = length_unit_factor(file_unit, field=str(path))
-    if user_factor is not None and not np.isclose(user_factor, file_factor, rtol=1e-12, atol=0.0):
-        raise InputError(
-            "height_unit",
-            f"{path.name} stores heights in {file_unit!r}, but height_unit={user_unit!r} was given.",
-            "leave height_unit out (the file's unit is used); rescale the heights afterwards "
-            "if the file's unit is wrong.",
-        )
-    return file_factor
+    if user_factor is None or np.isclose(user_factor, file_factor, rtol=1e-12, atol=0.0):
+        return file_factor
+    if override:
+        return user_factor
+    raise _clash(
+        "height_unit",
+        f"{path.name} stores heights in {file_unit!r}, but height unit {user_unit!r} was given.",
+        f"the file's {file_unit!r}",
+        f"{user_unit!r}",
+    )
 
 
 def _uniform_heights(measured) -> tuple[np.ndarray, tuple[float, ...], list[str]]:
@@ -707,6 +845,7 @@ def _file_info(
         "file_format": reader.name(),
         "channel": str(channel.name),
         "channel_index": int(channel.index),
+        "channel_shares_name_with": tuple(_same_name(reader, channel)),
         "data_source": str(getattr(channel, "channel_id", channel.name)),
         "height_unit": file_height_unit if file_height_unit is not None else user_height_unit,
         "height_unit_from": "file" if file_height_unit is not None else "user",
@@ -754,14 +893,25 @@ def _user_size(size: SizeLike, dim: int) -> tuple[float, ...]:
 
 
 def _with_options(
-    topography: Topography, path: Path, size: SizeLike | None, height_unit: str | None, periodic: bool
+    topography: Topography,
+    path: Path,
+    size: SizeLike | None,
+    height_unit: str | None,
+    periodic: bool,
+    override: bool,
 ) -> Topography:
     """Apply read_topography's size, height_unit and periodic to a roughcontact file's topography."""
-    _height_factor(path, "m", height_unit)  # its heights are stored in metres
+    factor = _height_factor(path, "m", height_unit, override)  # its heights are stored in metres
     changes: dict[str, Any] = {}
-    if size is not None:
-        changes["size"] = _user_size(size, topography.dim)
+    given = None if size is None else _user_size(size, topography.dim)
+    if given is not None and not np.allclose(given, topography.size, rtol=1e-9, atol=0.0):
+        _size_agrees(path, topography.size, given, override)
+        changes["size"] = given
         changes["info"] = {**topography.info, "size_in_file": topography.size}
+    if factor != 1.0:
+        changes["heights"] = topography.heights * factor
     if periodic:
         changes["periodic"] = True
-    return topography.with_heights(topography.heights, **changes) if changes else topography
+    if not changes:
+        return topography
+    return topography.with_heights(changes.pop("heights", topography.heights), **changes)

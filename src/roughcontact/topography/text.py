@@ -109,7 +109,7 @@ class TextTable:
         return words[self.separator] + (", decimal comma" if self.decimal == "," else "")
 
     def normalised(self) -> str:
-        """The file as SurfaceTopography's plain-text readers take it: header, then blank-separated data."""
+        """Return the file as SurfaceTopography's plain-text readers take it: header, blank-separated data."""
         rows = "\n".join(" ".join(repr(float(v)) for v in row) for row in self.values)
         return "\n".join(self.header) + ("\n" if self.header else "") + rows + "\n"
 
@@ -145,7 +145,7 @@ def _tokens(line: str, separator: str | None) -> list[str]:
 
 
 def _number(token: str, decimal: str) -> float | None:
-    """The value of ``token`` (NaN for an undefined marker), or None when it is no number."""
+    """Return the value of ``token`` (NaN for an undefined marker), or None when it is no number."""
     if token.lower() in _UNDEFINED_WORDS:
         return float("nan")
     if decimal == ",":
@@ -159,7 +159,7 @@ def _number(token: str, decimal: str) -> float | None:
 
 
 def _row(line: str, layout: tuple[str | None, str]) -> list[float] | None:
-    """The numbers of a line laid out as ``layout``, or None when a token is not a number."""
+    """Return the numbers of a line laid out as ``layout``, or None when a token is not a number."""
     tokens = _tokens(line, layout[0])
     if not tokens or tokens == [""]:
         return None
@@ -172,7 +172,7 @@ def _is_comment(line: str) -> bool:
 
 
 def _choose_layout(lines: list[str]) -> tuple[tuple[str | None, str], int]:
-    """The (separator, decimal) that reads the most of the first data-looking lines, and the data's width."""
+    """Return the (separator, decimal) reading most of the first data-looking lines, and the data width."""
     candidates = [line for line in lines if line.strip() and not _is_comment(line)][: 4 * _SAMPLE_LINES]
 
     def score(layout):
