@@ -78,6 +78,22 @@ def file_options(*, required: bool = True) -> argparse.ArgumentParser:
         metavar="FRACTION",
         help=f"largest fraction of the points --fill-undefined may fill (default {MAX_FILLED:g})",
     )
+    group.add_argument(
+        "--crop",
+        nargs="+",
+        metavar="EDGE",
+        help="read a window only: x0 x1 [y0 y1] with units, e.g. --crop '0 mm' '20 mm' '22 mm' '50 mm'",
+    )
+    group.add_argument(
+        "--remove-specks",
+        action="store_true",
+        help="make measured points standing alone amid undefined ones undefined before filling",
+    )
+    group.add_argument(
+        "--exclude-filled",
+        action="store_true",
+        help="keep the filled points out of contact (lowered below every measured point)",
+    )
     group.add_argument("--periodic", action="store_true", help="treat the surface as periodic")
     group.add_argument(
         "--detrend",
@@ -105,19 +121,23 @@ def new_command(
 def read_file(args: argparse.Namespace):
     """Read and level FILE as the file options say (for the commands that describe a file, not a model).
 
+    ``--exclude-filled`` is left to the models: the statistics and figures of a file describe
+    its heights as filled.
+
     Returns
     -------
     topography : Topography
         The levelled surface. For a file with undefined points read without --fill-undefined,
-        those points hold the mean height (a placeholder: what needs every point is refused).
+        those points hold the mean height (a placeholder: what needs every point is refused);
+        its ``specks`` are marked.
     undefined : ndarray of bool or None
         Where the file holds no height (None when every point is defined or was filled).
     """
     import numpy as np
 
     from ..topography import Topography
-    from ..topography.io import Scan, read_scan
-    from ..topography.process import level
+    from ..topography.io import Scan, crop_metres, read_scan
+    from ..topography.process import crop, find_specks, level
     from ..units import quantity
 
     for part in args.size or ():  # a unit is required here, as in a study file ('--size 5' is not 5 m)
@@ -133,7 +153,14 @@ def read_file(args: argparse.Namespace):
             treat_as_height=args.treat_as_height,
             override_file_values=args.override_file_values,
         )
+        if args.crop:
+            for edge in args.crop:
+                quantity(edge, "length", field="--crop", require_unit=True)
+            window = crop_metres(args.crop, len(scan.size))
+            scan = scan.cropped(*window) if isinstance(scan, Scan) else crop(scan, *window)
     except InputError as error:
+        if error.field in ("crop", "x", "y"):
+            raise InputError("--crop", error.problem, error.fix) from None
         if "cli" not in error.fixes:
             raise
         raise InputError(_flag(error.field), error.problem, error.fix_in("cli")) from None
@@ -143,7 +170,9 @@ def read_file(args: argparse.Namespace):
     elif args.fill_undefined or not scan.undefined.any():
         try:
             topography = scan.topography(
-                undefined="interpolate", max_filled=MAX_FILLED if args.max_filled is None else args.max_filled
+                undefined="interpolate",
+                max_filled=MAX_FILLED if args.max_filled is None else args.max_filled,
+                remove_specks=args.remove_specks,
             )
         except UndefinedPointsError as error:
             fix = f"if that is acceptable, allow it: --max-filled {error.allowing:g}; or crop them away."
@@ -151,7 +180,9 @@ def read_file(args: argparse.Namespace):
     else:
         undefined = scan.undefined
         placeholder = np.where(undefined, np.nanmean(scan.heights), scan.heights)
-        topography = Topography(placeholder, scan.size, periodic=scan.periodic, info=scan.info)
+        topography = Topography(
+            placeholder, scan.size, periodic=scan.periodic, info=scan.info, specks=find_specks(undefined)
+        )
     try:
         return level(topography, args.detrend), undefined
     except InputError as error:
@@ -282,6 +313,9 @@ class CommandStudy:
             "max_filled",
             "treat_as_height",
             "override_file_values",
+            "remove_specks",
+            "exclude_filled",
+            "crop",
         ):
             self.words.setdefault(key, _flag(key))
         self.flags[(*where, "max_filled")] = "--max-filled"
@@ -293,9 +327,12 @@ class CommandStudy:
                 self.set((*where, key), getattr(args, key), _flag(key))
         if getattr(args, "size", None) is not None:
             self.set((*where, "size"), list(args.size) if len(args.size) > 1 else args.size[0], "--size")
+        if getattr(args, "crop", None):
+            self.set((*where, "crop"), list(args.crop), "--crop")
         if getattr(args, "override_file_values", False):
             self.set((*where, "override_file_values"), True, "--override-file-values")
-        for key in ("fill_undefined", "periodic", "treat_as_height") if file is None else ():
+        flags = ("fill_undefined", "periodic", "treat_as_height", "remove_specks", "exclude_filled")
+        for key in flags if file is None else ():
             if getattr(args, key, False):
                 self.set((*where, key), True, _flag(key))
         if getattr(args, "detrend", None) is not None:

@@ -16,7 +16,7 @@ from ..errors import InputError
 from ..study.display import shown
 from ..topography import Topography
 from ..topography.io import MAX_FILLED, channel_of, channel_words, max_filled_allowing
-from ..topography.process import LEVELLING
+from ..topography.process import LEVELLING, SPECK
 from ..topography.statistics import SUMMARY
 from ..units import format_si
 from .options import new_command, read_file
@@ -42,6 +42,8 @@ def describe(topography: Topography, undefined=None) -> dict:
         "periodic": topography.periodic,
         "height_unit_in_file": topography.info.get("height_unit"),
         "undefined_points_filled": topography.info.get("undefined_points_filled", 0),
+        "specks": 0 if topography.specks is None else int(np.count_nonzero(topography.specks)),
+        "specks_removed": topography.info.get("specks_removed", 0),
     }
     if undefined is None:
         return description | {"statistics": summary(topography)}
@@ -93,6 +95,16 @@ def format_description(description: dict) -> str:
             )
             + " to fill them, or see where they are with: roughcontact plot FILE -o FIGURE.png",
         ]
+    if description.get("specks"):
+        lines.append(
+            f"specks         {description['specks']} measured points in groups of fewer than {SPECK} amid "
+            "undefined ones (often outliers; a contact on them is flagged): --remove-specks makes them "
+            "undefined before filling"
+        )
+    if description.get("specks_removed"):
+        lines.append(
+            f"specks         {description['specks_removed']} removed (made undefined before filling)"
+        )
     if "detrend" in description:
         lines.append(f"levelling      {LEVELLING[description['detrend']]}")
     if "statistics" in description:

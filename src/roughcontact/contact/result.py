@@ -10,6 +10,7 @@ import numpy as np
 from scipy import ndimage
 
 from ..topography import Topography
+from .trust import contact_shares, share_warnings
 
 
 def count_patches(mask: np.ndarray, *, periodic: bool) -> int:
@@ -162,8 +163,16 @@ class NormalContactResult:
         """Plastic flow depth [m]: the overlap -gap where the pressure is at the hardness."""
         return np.where(self.plastic_mask, np.maximum(-self.gap, 0.0), 0.0)
 
+    @cached_property
+    def shares(self) -> dict[str, float]:
+        """Shares of the load and the contact area on filled points, specks and a free window's edge.
+
+        See :func:`roughcontact.contact.trust.contact_shares`; only those that apply.
+        """
+        return contact_shares(self.pressure, self.topography, self.boundary)
+
     def scalars(self) -> dict[str, float]:
-        """Return the scalar results as a flat dictionary (SI)."""
+        """Return the scalar results as a flat dictionary (SI), the :attr:`shares` last."""
         return {
             "force": self.force,
             "mean_pressure": self.mean_pressure,
@@ -176,7 +185,7 @@ class NormalContactResult:
             "iterations": int(self.iterations),
             "residual": float(self.residual),
             "contact_modulus": self.contact_modulus,
-        }
+        } | self.shares
 
     def range_warnings(self, *, slope_pressure: float = 0.1) -> list[str]:
         """Say where this solution leaves the range of the model that produced it (empty when it does not).
@@ -188,6 +197,8 @@ class NormalContactResult:
           or a coarser, instrument-limited scan.
         * Full contact (every point touching): the answer no longer depends on the roughness,
           and a free (non-periodic) surface is then carried at its edges.
+        * A large share of the load on filled points, on specks or at a free window's edge
+          (:func:`roughcontact.contact.trust.share_warnings`).
 
         Parameters
         ----------
@@ -204,7 +215,7 @@ class NormalContactResult:
             )
         if self.contact_fraction >= 1.0:
             notes.append("full contact: every point touches, so the roughness no longer matters.")
-        return notes
+        return notes + share_warnings(self.shares, self.topography, self.boundary)
 
     def to_xarray(self):
         """Return an ``xarray.Dataset``: fields on x (and y) coordinates, scalars as attributes."""

@@ -12,6 +12,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ..topography import Topography
+from ..topography.process import find_specks
 from ..topography.statistics import psd_1d, psd_radial
 from ..units import prefixed_scale
 from .layout import CLIP_PERCENTILES, axes_for, colour_scale, shared_colorbar
@@ -19,26 +20,6 @@ from .layout import CLIP_PERCENTILES, axes_for, colour_scale, shared_colorbar
 
 def _title(topography: Topography) -> str:
     return str(topography.info.get("name") or topography.info.get("source") or "topography")
-
-
-SPECK = 10
-"""Defined points in a group smaller than this, amid undefined ones, do not set a map's colour scale."""
-
-
-def _specks(undefined: np.ndarray) -> np.ndarray:
-    """Return the defined points in connected groups of fewer than :data:`SPECK` points.
-
-    An instrument that loses most of a region often keeps scattered single pixels there, of any
-    height (SurfaceTopography's frt-2.frt: 244 such points, 0.75 % of its defined ones, down to
-    -70 um on a surface that spans 5 um); they are drawn, but would set the colour scale.
-    """
-    from scipy import ndimage
-
-    labels, count = ndimage.label(~undefined)
-    if count == 0:
-        return np.zeros(undefined.shape, dtype=bool)
-    sizes = ndimage.sum(~undefined, labels, np.arange(1, count + 1))
-    return np.isin(labels, 1 + np.flatnonzero(sizes < SPECK))
 
 
 def plot_heights(
@@ -65,7 +46,8 @@ def plot_heights(
         Colour map of the height map.
     undefined : ndarray of bool, optional
         Points the instrument did not record: drawn grey and left out of the colour scale, as are
-        the defined points in specks of fewer than :data:`SPECK` amid them (:func:`_specks`).
+        the measured points in specks amid them
+        (:func:`roughcontact.topography.process.find_specks`).
     percentiles : (float, float)
         Percentiles of the heights at the two ends of the colour scale ((0, 100): the full range).
 
@@ -79,7 +61,7 @@ def plot_heights(
     specks = None
     if undefined is not None:
         heights[undefined] = np.nan
-        specks = _specks(undefined)
+        specks = find_specks(undefined)
     surface = heights if specks is None else np.where(specks, np.nan, heights)  # what sets the scale
     mean = np.nanmean(surface)
     heights -= mean

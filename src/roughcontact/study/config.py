@@ -254,6 +254,9 @@ def preparation(spec: FileTopography, topography: Topography) -> dict[str, Any]:
         "detrend": spec.detrend,
         "undefined_points_filled": filled,
         "undefined_fraction_filled": filled / topography.heights.size,
+        "filled_excluded_from_contact": bool(spec.exclude_filled and filled),
+        "specks": 0 if topography.specks is None else int(topography.specks.sum()),
+        "specks_removed": int(topography.info.get("specks_removed", 0)),
     }
 
 
@@ -327,7 +330,7 @@ class _Builder:
 
     def _read(self, spec: FileTopography, where: Where) -> Topography | None:
         from ..topography.io import read_topography
-        from ..topography.process import level
+        from ..topography.process import exclude_filled, level
 
         try:
             topography = read_topography(
@@ -335,8 +338,10 @@ class _Builder:
                 channel=spec.channel,
                 size=spec.size,
                 height_unit=spec.height_unit,
+                crop=spec.crop,
                 undefined="interpolate" if spec.fill_undefined else "refuse",
                 max_filled=spec.max_filled,
+                remove_specks=spec.remove_specks,
                 periodic=spec.periodic,
                 treat_as_height=spec.treat_as_height,
                 override_file_values=spec.override_file_values,
@@ -353,7 +358,8 @@ class _Builder:
                 fix = "add fill_undefined = true to fill them by harmonic interpolation, or crop them away."
             else:
                 fix = error.fix_in("study")
-            key = error.field if error.field in ("size", "height_unit", "channel", "max_filled") else "file"
+            named = ("size", "height_unit", "channel", "max_filled", "crop", "x", "y")
+            key = {"x": "crop", "y": "crop"}.get(error.field, error.field) if error.field in named else "file"
             place = Where(where.child(key).path, f"{where.label} ({error.field})")
             self.problem(place, error.problem, fix, error.fixes.get("cli"))
             return None
@@ -364,7 +370,8 @@ class _Builder:
                 f"{where.label}: the scan is {shown}, outside 1 nm to 1 m; check its size and "
                 "height unit (the file's metadata, or size and height_unit here)."
             )
-        return level(topography, spec.detrend)
+        levelled = level(topography, spec.detrend)
+        return exclude_filled(levelled) if spec.exclude_filled else levelled
 
     def _material(self, name: str, raw: dict) -> Material | None:
         where = Where(("materials", name), f"materials.{name}")

@@ -111,6 +111,12 @@ def preparation_line(name: str, prepared: dict[str, Any]) -> str:
         if filled
         else "no undefined points"
     )
+    if prepared.get("specks_removed"):
+        undefined += f" (with {prepared['specks_removed']} specks, isolated measured points, removed first)"
+    elif prepared.get("specks"):
+        undefined += f"; {prepared['specks']} specks (isolated measured points amid them) kept"
+    if prepared.get("filled_excluded_from_contact"):
+        undefined += "; the filled points kept out of contact"
     words = LEVELLING.get(prepared["detrend"], prepared["detrend"])
     channel = prepared.get("channel")
     channel = f" channel {channel_words(channel)}" if isinstance(channel, dict) else ""

@@ -187,9 +187,15 @@ class FileTopography(Strict):
     height_unit: str | None = None
     override_file_values: bool = False
     """Use size and height_unit where the file stores other values (else such a clash is refused)."""
+    crop: list[Length] | None = None
+    """Read a window only: [x0, x1, y0, y1] ([x0, x1] for a profile), before any filling."""
     fill_undefined: bool = False
     max_filled: float = Field(default=MAX_FILLED, ge=0.0, le=1.0)
     """Largest fraction of undefined points that fill_undefined may fill (more needs saying so)."""
+    remove_specks: bool = False
+    """Make measured points standing alone amid undefined ones undefined before filling."""
+    exclude_filled: bool = False
+    """Keep the filled points out of contact (lowered below every measured point after levelling)."""
     periodic: bool = False
     detrend: Literal["none", "mean", "plane", "curvature", "sphere"] = "plane"
 

@@ -50,7 +50,8 @@ from ..errors import (
 from ..units import format_si, length_unit_factor, quantity
 from .channels import ChannelKind, classify_channel
 from .native import channel_name, is_native_file, read_native
-from .process import fill_undefined
+from .process import crop as crop_topography
+from .process import crop_window, fill_undefined, find_specks
 from .surface import Topography
 from .text import TextFormatError, TextTable, decode_text, parse_table
 
@@ -75,6 +76,7 @@ _REREAD_FIX = (
 
 PathLike = str | os.PathLike
 SizeLike = float | str | tuple[float | str, ...]
+CropLike = tuple
 
 
 @dataclass(frozen=True)
@@ -163,8 +165,10 @@ def read_topography(
     channel: int | str | None = None,
     size: SizeLike | None = None,
     height_unit: str | None = None,
+    crop: CropLike | None = None,
     undefined: str = "refuse",
     max_filled: float = MAX_FILLED,
+    remove_specks: bool = False,
     periodic: bool = False,
     treat_as_height: bool = False,
     override_file_values: bool = False,
@@ -194,6 +198,11 @@ def read_topography(
     height_unit : str, optional
         Unit of the stored heights (``"nm"``, ``"um"``, ...). Required when the file declares
         none; a unit other than the file's is refused unless ``override_file_values``.
+    crop : tuple, optional
+        Read only a window: ``((x0, x1), (y0, y1))`` (``(x0, x1)`` for a profile), metres as
+        floats or strings with a unit (``("0 mm", "20 mm")``), half-open as in
+        :func:`~roughcontact.topography.process.crop`; cut before undefined points are counted or
+        filled, so a window without them needs no filling.
     undefined : {"refuse", "interpolate"}
         What to do with undefined (missing) points: refuse the file, or fill them by harmonic
         interpolation (:func:`roughcontact.topography.process.fill_undefined`), recording the
@@ -202,6 +211,11 @@ def read_topography(
         Largest fraction of the points that ``undefined="interpolate"`` may fill (default
         :data:`MAX_FILLED`, 5 %). Filling more invents much of the surface (SurfaceTopography's
         ``frt-2.frt`` lacks 27 %), so it must be asked for explicitly: ``max_filled=0.3``.
+    remove_specks : bool
+        Make the specks (measured points in groups of fewer than ten standing alone amid
+        undefined ones, :func:`~roughcontact.topography.process.find_specks`) undefined before
+        filling: they are often outliers, and filled around they stand up as spikes. Kept, they
+        are marked in ``specks`` (contact results report the load they carry).
     periodic : bool
         Treat the surface as periodic (measured surfaces are not, as a rule). A file that
         declares itself periodic (a roughcontact or SurfaceTopography ``.nc`` file) stays so.
@@ -245,9 +259,12 @@ def read_topography(
         treat_as_height=treat_as_height,
         override_file_values=override_file_values,
     )
+    window = None if crop is None else crop_metres(crop, len(scan.size))
     if isinstance(scan, Topography):
-        return scan
-    return scan.topography(undefined=undefined, max_filled=max_filled)
+        return scan if window is None else crop_topography(scan, *window)
+    if window is not None:
+        scan = scan.cropped(*window)
+    return scan.topography(undefined=undefined, max_filled=max_filled, remove_specks=remove_specks)
 
 
 @dataclass(frozen=True)
@@ -281,19 +298,46 @@ class Scan:
         """True where the file holds no height."""
         return ~np.isfinite(self.heights)
 
-    def topography(self, *, undefined: str = "refuse", max_filled: float = MAX_FILLED) -> Topography:
+    def cropped(self, x: tuple[float, float] | None, y: tuple[float, float] | None = None) -> Scan:
+        """Return the window ``x`` x ``y`` [m] of the scan (as :func:`~.process.crop` does)."""
+        spacing = tuple(s / n for s, n in zip(self.size, self.heights.shape, strict=True))
+        window = crop_window(self.heights.shape, spacing, x, y)
+        heights = self.heights[window]
+        size = tuple(n * h for n, h in zip(heights.shape, spacing, strict=True))
+        info = dict(self.info)
+        info["history"] = (*info.get("history", ()), f"crop(x={x}, y={y})")
+        info["cropped_from"] = tuple(self.heights.shape)
+        return Scan(heights, size, False, info, self.path)
+
+    def topography(
+        self, *, undefined: str = "refuse", max_filled: float = MAX_FILLED, remove_specks: bool = False
+    ) -> Topography:
         """Return the scan as a :class:`Topography`, its undefined points refused or filled.
 
-        See :func:`read_topography` for ``undefined`` and ``max_filled``.
+        See :func:`read_topography` for ``undefined``, ``max_filled`` and ``remove_specks``. The
+        filled points and the specks are marked on the topography (``filled``, ``specks``).
         """
-        heights, filled = _handle_undefined(self.heights, undefined, max_filled, self.path)
         info = dict(self.info)
         steps = list(info.pop("history", ()))
+        heights = self.heights
+        specks = find_specks(self.undefined)
+        if remove_specks and specks.any():
+            heights = np.where(specks, np.nan, heights)
+            count = int(np.count_nonzero(specks))
+            steps.append(
+                f"remove_specks: {count} measured points standing alone amid undefined ones set undefined"
+            )
+            info["specks_removed"] = count
+            specks = None
+        missing = ~np.isfinite(heights)
+        heights, filled = _handle_undefined(heights, undefined, max_filled, self.path)
         if filled:
             info["undefined_points_filled"] = filled
             steps.append(f"fill_undefined: {filled} undefined points interpolated (harmonic)")
         info["history"] = tuple(steps)
-        return Topography(heights, self.size, periodic=self.periodic, info=info)
+        return Topography(
+            heights, self.size, periodic=self.periodic, info=info, filled=missing, specks=specks
+        )
 
 
 def read_scan(
@@ -875,6 +919,28 @@ def _info_value(value: Any) -> Any:
     if value is None or isinstance(value, str | bool | int | float):
         return value
     return str(value)
+
+
+def crop_metres(crop: CropLike, dim: int) -> tuple[tuple[float, float], ...]:
+    """Return a crop window as (start, stop) pairs in metres per axis.
+
+    ``crop`` is ``((x0, x1), (y0, y1))``, ``(x0, x1)`` for a profile, or the flat
+    ``(x0, x1, y0, y1)`` the command line gives; each value metres or a string with a unit.
+    """
+    values = list(crop)
+    if values and all(isinstance(v, tuple | list) for v in values):
+        values = [v for pair in values for v in pair]
+    if len(values) != 2 * dim:
+        raise InputError(
+            "crop",
+            f"got {len(values)} values for a {dim}D topography.",
+            "give x0 x1"
+            + (" y0 y1" if dim == 2 else "")
+            + ", e.g. '0 um' '5 um'"
+            + (" '0 um' '5 um'." if dim == 2 else "."),
+        )
+    metres = [quantity(v, "length", field="crop") for v in values]
+    return tuple((metres[2 * k], metres[2 * k + 1]) for k in range(dim))
 
 
 def _user_size(size: SizeLike, dim: int) -> tuple[float, ...]:

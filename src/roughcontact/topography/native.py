@@ -38,6 +38,12 @@ NATIVE_VERSION = 1
 """Version of the format written (``format_version`` attribute); the only one read."""
 
 _HDF5_MAGIC = b"\x89HDF\r\n\x1a\n"
+_MASKS = {
+    "filled": "1 where the height was interpolated, not measured",
+    "specks": "1 at measured points standing alone amid undefined ones",
+}
+"""The masks of a topography kept beside its heights when it has them (optional variables)."""
+
 _TUPLE_TAG = "__tuple__"  # JSON has no tuples: {"__tuple__": [...]} keeps info round trips exact
 _DEFAULT_CHANNEL = "heights"
 _EMPTY_FIX = "write the file again with save_topography()."
@@ -93,7 +99,13 @@ def save_topography(topography: Topography, path: PathLike) -> None:
             "info": _encode_info(topography.info),
         },
     )
-    encoding = {name: {"_FillValue": None} for name in (*dims, "heights")}
+    masks = {
+        name: (dims, getattr(topography, name).astype(np.uint8), {"long_name": meaning})
+        for name, meaning in _MASKS.items()
+        if getattr(topography, name) is not None
+    }
+    dataset = dataset.assign(masks)
+    encoding = {name: {"_FillValue": None} for name in (*dims, "heights", *masks)}
     _write_atomically(dataset, path, encoding)
 
 
@@ -143,8 +155,13 @@ def load_topography(path: PathLike) -> Topography:
             "open it with the roughcontact version that wrote it.",
         )
     size = tuple(float(s) for s in np.atleast_1d(attrs["size"]))
+    masks = {name: dataset[name].values.astype(bool) for name in _MASKS if name in dataset}
     return Topography(
-        dataset["heights"].values, size, periodic=bool(attrs["periodic"]), info=_decode_info(attrs["info"])
+        dataset["heights"].values,
+        size,
+        periodic=bool(attrs["periodic"]),
+        info=_decode_info(attrs["info"]),
+        **masks,
     )
 
 

@@ -11,6 +11,9 @@ Conventions (used everywhere in roughcontact)
 * A 1D topography is a line scan (profile) along x.
 * Every height is finite: missing points are dealt with when a file is read
   (:func:`roughcontact.topography.io.read_topography`, ``undefined=``), never carried silently.
+  Points whose heights were invented (``filled``: interpolated where the instrument recorded
+  nothing) and measured points standing alone amid undefined ones (``specks``) stay marked, so
+  that a result resting on them can say so (:mod:`roughcontact.contact.trust`).
 """
 
 from __future__ import annotations
@@ -31,6 +34,23 @@ def _frozen_mapping(info: Mapping[str, Any] | None) -> Mapping[str, Any]:
     return MappingProxyType(dict(info or {}))
 
 
+def _mask(mask, shape: tuple[int, ...], name: str) -> np.ndarray | None:
+    """Return a read-only bool copy of ``mask`` (None when absent or all False); refuse another shape."""
+    if mask is None:
+        return None
+    mask = np.array(mask, dtype=bool)
+    if mask.shape != shape:
+        raise InputError(name, f"mask of shape {mask.shape} on a grid of {shape}.", "give one per point.")
+    if not mask.any():
+        return None
+    mask.flags.writeable = False
+    return mask
+
+
+def _same_mask(a: np.ndarray | None, b: np.ndarray | None) -> bool:
+    return (a is None and b is None) or (a is not None and b is not None and np.array_equal(a, b))
+
+
 @dataclass(frozen=True, eq=False)
 class Topography:
     """A measured or generated surface: heights [m] on a regular grid of physical ``size`` [m].
@@ -47,18 +67,27 @@ class Topography:
         measured ones do not).
     info : mapping, optional
         Metadata: source file, instrument, channel, units of the file, processing history.
+    filled : ndarray of bool, optional
+        True where the height was interpolated, not measured (undefined points of the file that
+        were filled). None (or all False) when every height was measured.
+    specks : ndarray of bool, optional
+        True at measured points in groups of a few standing alone amid undefined ones
+        (:func:`roughcontact.topography.process.find_specks`): often outliers of an instrument
+        that lost the region. None when there are none.
 
     Raises
     ------
     InputError
         Empty or non-finite heights, a size that is not positive and finite, or a size
-        whose number of values does not match the number of axes.
+        whose number of values does not match the number of axes, masks of another shape.
     """
 
     heights: np.ndarray
     size: tuple[float, ...]
     periodic: bool = False
     info: Mapping[str, Any] = field(default_factory=dict)
+    filled: np.ndarray | None = None
+    specks: np.ndarray | None = None
 
     def __post_init__(self):
         heights = np.array(self.heights, dtype=float)  # always a private copy
@@ -98,6 +127,8 @@ class Topography:
                 "give the scan size in metres (or with a unit at the CLI, e.g. '10 um').",
             )
         heights.flags.writeable = False
+        for name in ("filled", "specks"):
+            object.__setattr__(self, name, _mask(getattr(self, name), heights.shape, name))
         object.__setattr__(self, "heights", heights)
         object.__setattr__(self, "size", tuple(float(s) for s in size))
         object.__setattr__(self, "periodic", bool(self.periodic))
@@ -177,6 +208,7 @@ class Topography:
             and self.periodic == other.periodic
             and np.array_equal(self.heights, other.heights)
             and dict(self.info) == dict(other.info)
+            and all(_same_mask(getattr(self, n), getattr(other, n)) for n in ("filled", "specks"))
         )
 
     __hash__ = None  # mutable-looking numpy content; equality is by value

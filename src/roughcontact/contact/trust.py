@@ -1,0 +1,176 @@
+"""How much of a contact rests on points that are not measured surface, and on a window's edge.
+
+A contact computed on a measured scan can look certain and rest on nothing measured:
+
+* **filled points**: heights interpolated where the instrument recorded nothing
+  (``Topography.filled``). Harmonic filling is smooth, but its rim follows the measured points
+  around it, spikes included (SurfaceTopography's ``frt-2.frt``, 27 % undefined: 81 of the 109
+  contact points at 20 MPa are filled ones);
+* **specks**: measured points in groups of a few standing alone amid undefined ones
+  (``Topography.specks``), often outliers that the filling turns into spikes (the other 28);
+* **the edge of a free window**: a scan is a window cut from a larger surface. Solved with a free
+  boundary, the window's edge acts as the edge of a punch when the contact reaches it, and the
+  pressure there is singular (``sur-2.sur`` at 20 MPa: 1231 of the 1237 points above 200 MPa lie
+  within 3 pixels of the edge). Filled points kept out of contact
+  (:func:`roughcontact.topography.process.exclude_filled`) leave such an edge inside the window
+  too, around them, whatever the boundary.
+
+:func:`contact_shares` measures the share of the load and of the contact area each carries;
+:func:`share_warnings` says when one is large enough to change the answer, and the fix.
+
+The thresholds are choices, stated here: a share of the load above :data:`INVENTED_SHARE` on
+filled points or specks, and a share within :data:`EDGE_PIXELS` of a free window's edge above
+:data:`EDGE_SHARE` and above :data:`EDGE_EXCESS` times the band's share of the nominal area (a
+contact spread evenly over the window puts about the band's share there).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy import ndimage
+
+__all__ = [
+    "EDGE_EXCESS",
+    "EDGE_PIXELS",
+    "EDGE_SHARE",
+    "INVENTED_SHARE",
+    "SHARES",
+    "contact_shares",
+    "edge_band",
+    "share_warnings",
+]
+
+EDGE_PIXELS = 3
+"""Width of the band along a free window's edge whose load is reported [pixels]."""
+
+INVENTED_SHARE = 0.05
+"""Share of the load on filled points (or on specks) above which a result warns."""
+
+EDGE_SHARE = 0.1
+"""Share of the load in the edge band above which a free window's result warns (with EDGE_EXCESS)."""
+
+EDGE_EXCESS = 2.0
+"""... and above this many times the band's share of the nominal area."""
+
+SHARES = {
+    "filled_load_share": "share of the load carried by filled (interpolated) points",
+    "filled_area_share": "share of the contact area on filled (interpolated) points",
+    "speck_load_share": "share of the load carried by specks (isolated measured points)",
+    "speck_area_share": "share of the contact area on specks",
+    "edge_load_share": f"share of the load within {EDGE_PIXELS} pixels of an edge of the measured surface "
+    "(a free window's edge, the rim of filled points kept out of contact)",
+    "edge_area_share": f"share of the contact area within {EDGE_PIXELS} pixels of such an edge",
+}
+"""The scalars :func:`contact_shares` may return, and what each is (all dimensionless)."""
+
+
+def edge_band(topography, boundary: str, pixels: int = EDGE_PIXELS) -> np.ndarray | None:
+    """Return True within ``pixels`` of an edge of the measured surface; None where it has none.
+
+    The edges are the window's (both ends of a profile) for a free boundary, and the rim of the
+    filled points where they were kept out of contact (``info['filled_excluded']``).
+    """
+    shape = topography.shape
+    band = np.zeros(shape, dtype=bool)
+    if boundary == "free":
+        for axis, n in enumerate(shape):
+            index = [slice(None)] * len(shape)
+            width = min(pixels, n)
+            index[axis] = slice(0, width)
+            band[tuple(index)] = True
+            index[axis] = slice(n - width, n)
+            band[tuple(index)] = True
+    excluded = topography.filled if topography.info.get("filled_excluded") else None
+    if excluded is not None:
+        rim = ndimage.binary_dilation(excluded, iterations=pixels, border_value=0)
+        if boundary == "periodic":
+            rim = ndimage.binary_dilation(np.pad(excluded, pixels, mode="wrap"), iterations=pixels)
+            rim = rim[tuple(slice(pixels, pixels + n) for n in shape)]
+        band |= rim & ~excluded
+    elif boundary != "free":
+        return None
+    return band
+
+
+def _shares(pressure: np.ndarray, contact: np.ndarray, mask: np.ndarray) -> tuple[float, float]:
+    load = float(pressure[contact].sum())
+    on_mask = contact & mask
+    load_share = float(pressure[on_mask].sum()) / load if load > 0 else 0.0
+    count = int(np.count_nonzero(contact))
+    return load_share, (int(np.count_nonzero(on_mask)) / count if count else 0.0)
+
+
+def contact_shares(pressure: np.ndarray, topography, boundary: str) -> dict[str, float]:
+    """Return the shares of the load and of the contact area on filled points, specks and a free edge.
+
+    Only the shares that apply are returned: ``filled_*`` for a surface with filled points,
+    ``speck_*`` for one with specks, ``edge_*`` for a free boundary (see :data:`SHARES`).
+
+    Parameters
+    ----------
+    pressure : ndarray
+        Contact pressure [Pa] on the topography's grid, compressive positive; the contact is
+        where it is positive (a tensile, adhesive pressure carries no load here).
+    topography : Topography
+        The surface solved (its ``filled`` and ``specks`` masks).
+    boundary : {"periodic", "free"}
+
+    Returns
+    -------
+    dict
+        Shares in [0, 1]; 0 when nothing is in contact.
+    """
+    pressure = np.asarray(pressure, dtype=float).reshape(topography.shape)
+    contact = pressure > 0
+    shares = {}
+    for name, mask in (("filled", topography.filled), ("speck", topography.specks)):
+        if mask is not None:
+            shares[f"{name}_load_share"], shares[f"{name}_area_share"] = _shares(pressure, contact, mask)
+    band = edge_band(topography, boundary)
+    if band is not None:
+        shares["edge_load_share"], shares["edge_area_share"] = _shares(pressure, contact, band)
+    return shares
+
+
+def share_warnings(shares: dict[str, float], topography, boundary: str) -> list[str]:
+    """Return a warning, with its fix, for each share of :func:`contact_shares` that is too large."""
+    warnings = []
+    filled = shares.get("filled_load_share", 0.0)
+    if filled > INVENTED_SHARE:
+        count = int(np.count_nonzero(topography.filled))
+        warnings.append(
+            f"{100 * filled:.3g} % of the load ({100 * shares['filled_area_share']:.3g} % of the contact "
+            f"area) rests on filled points, heights interpolated where the file has none ({count} of "
+            f"{topography.heights.size} points): that part of the answer is invented. Keep them out of "
+            "contact (exclude_filled; command line --exclude-filled), or crop the undefined region away."
+        )
+    specks = shares.get("speck_load_share", 0.0)
+    if specks > INVENTED_SHARE:
+        count = int(np.count_nonzero(topography.specks))
+        warnings.append(
+            f"{100 * specks:.3g} % of the load ({100 * shares['speck_area_share']:.3g} % of the contact "
+            f"area) rests on specks, {count} measured points standing alone amid undefined ones (often "
+            "outliers that the filling turns into spikes). Remove them before filling (remove_specks; "
+            "command line --remove-specks); roughcontact inspect lists them."
+        )
+    edge = shares.get("edge_load_share", 0.0)
+    band = edge_band(topography, boundary)
+    band = 0.0 if band is None else float(band.mean())
+    if edge > EDGE_SHARE and edge > EDGE_EXCESS * band and not topography.info.get("filled_excluded"):
+        warnings.append(
+            f"{100 * edge:.3g} % of the load is carried within {EDGE_PIXELS} pixels of the window's edge, "
+            f"which is {100 * band:.2g} % of its area: that contact depends on the surface beyond the "
+            "scan, which is not known (with a free boundary a contact cut by the edge of the scan is "
+            "pressed like the edge of a punch). Use a periodic boundary (boundary = 'periodic'; command "
+            "line --boundary periodic) where the surface may be repeated, a lower load or a larger scan; "
+            "a scan bowed by the scanner needs detrend = 'curvature' (--detrend curvature)."
+        )
+    if edge > EDGE_SHARE and edge > EDGE_EXCESS * band and topography.info.get("filled_excluded"):
+        warnings.append(
+            f"{100 * edge:.3g} % of the load is carried within {EDGE_PIXELS} pixels of an edge of the "
+            f"measured surface (the window's{' edge' if boundary == 'free' else ''} or the rim of the filled "
+            f"points kept out of contact), which is {100 * band:.2g} % of its area: a contact cut by such "
+            "an edge is pressed like the edge of a punch, and the surface beyond it is not known. Crop "
+            "the scan to a region without undefined points, or use a lower load."
+        )
+    return warnings
