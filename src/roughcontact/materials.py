@@ -44,6 +44,35 @@ from .errors import InputError
 from .units import quantity
 
 
+def material_problems(
+    youngs_modulus, poissons_ratio, hardness=None, yield_strength=None, surface_energy=None
+) -> list[InputError]:
+    """Return every problem of a material's values (empty when they make a material).
+
+    What :class:`Material` checks, all at once: a study reports a negative modulus and a Poisson's
+    ratio of 0.6 together, not one after the other.
+    """
+    checks = [
+        lambda: positive(youngs_modulus, "youngs_modulus", example="70e9", unit="Pa"),
+        lambda: poissons_ratio_checked(poissons_ratio),
+    ]
+    if hardness is not None:
+        checks.append(lambda: positive(hardness, "hardness", example="0.462e9", unit="Pa"))
+    if yield_strength is not None:
+        checks.append(lambda: positive(yield_strength, "yield_strength", example="0.165e9", unit="Pa"))
+    if surface_energy is not None:
+        checks.append(
+            lambda: positive(surface_energy, "surface_energy", example="0.072", unit="J/m^2", allow_zero=True)
+        )
+    problems = []
+    for check in checks:
+        try:
+            check()
+        except InputError as error:
+            problems.append(error)
+    return problems
+
+
 @dataclass(frozen=True)
 class Material:
     """An isotropic linear-elastic material, optionally with plastic and surface properties.
@@ -81,14 +110,17 @@ class Material:
     source: str = ""
 
     def __post_init__(self):
-        positive(self.youngs_modulus, "youngs_modulus", example="70e9", unit="Pa")
-        poissons_ratio_checked(self.poissons_ratio)
-        if self.hardness is not None:
-            positive(self.hardness, "hardness", example="0.462e9", unit="Pa")
-        if self.yield_strength is not None:
-            positive(self.yield_strength, "yield_strength", example="0.165e9", unit="Pa")
-        if self.surface_energy is not None:
-            positive(self.surface_energy, "surface_energy", example="0.072", unit="J/m^2", allow_zero=True)
+        problems = material_problems(
+            self.youngs_modulus, self.poissons_ratio, self.hardness, self.yield_strength, self.surface_energy
+        )
+        if len(problems) == 1:
+            raise problems[0]
+        if problems:
+            raise InputError(
+                problems[0].field,
+                f"{len(problems)} problems: " + " ".join(str(p) for p in problems),
+                problems[0].fix,
+            )
 
     @property
     def shear_modulus(self) -> float:

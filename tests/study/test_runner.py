@@ -20,8 +20,9 @@ import numpy as np
 import pytest
 
 import roughcontact
-from roughcontact.cli import EXIT_CASES_FAILED, EXIT_INTERRUPTED
+from roughcontact.cli import EXIT_CASES_FAILED, EXIT_INPUT_ERROR, EXIT_INTERRUPTED
 from roughcontact.cli.study import run_and_report
+from roughcontact.errors import ConvergenceError
 from roughcontact.study import load_study, run_study
 from roughcontact.study.outputs import write_results_table
 from roughcontact.study.store import read_table, record_path
@@ -387,26 +388,50 @@ def test_extending_a_sweep_reuses_every_unchanged_case(reference, tmp_path):
 # --- failures ------------------------------------------------------------------------------------
 
 
-def test_a_failing_case_is_recorded_the_others_finish_and_resume_retries_only_it(tmp_path, cli):
-    # hardness 15 MPa caps the pressure: a mean pressure of 20 MPa is more than the surface can carry
+def test_a_load_the_scan_cannot_carry_fails_validation_with_the_case_named(tmp_path, cli):
+    # hardness 15 MPa caps the pressure: a mean pressure of 20 MPa is more than the surface can carry,
+    # known before anything runs (issue 32: validate runs every check run runs)
     study_path = write_study(tmp_path, replicates=(0,), extra='hardness = "15 MPa"')
+    for command in ("validate", "run"):
+        arguments = (study_path,) if command == "validate" else (study_path, "-o", tmp_path / "out")
+        status, out, err = cli(command, *arguments)
+        assert status == EXIT_INPUT_ERROR
+        assert "sweep.mean_pressure" in err and "20 MPa" in err and "hardness 15 MPa" in err
+        assert "Traceback" not in err
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_failing_case_is_recorded_the_others_finish_and_resume_retries_only_it(tmp_path, cli, monkeypatch):
+    # a solver that does not converge at 20 MPa (what validation cannot know): that case fails
+    import roughcontact.contact as contact
+
+    original = contact.solve_normal
+
+    def stalls_above_15_mpa(*args, **kwargs):
+        if (kwargs.get("mean_pressure") or 0) > 15e6:
+            raise ConvergenceError("solve_normal", 1e-3, 10_000, 1e-8)
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(contact, "solve_normal", stalls_above_15_mpa)
+    study_path = write_study(tmp_path, replicates=(0,))
     output = tmp_path / "out"
     status, out, err = cli("run", study_path, "-o", output, "--no-progress")
     assert status == EXIT_CASES_FAILED
     assert "2 cases run, 0 reused, 1 failed" in out
     (failed,) = [c for c in load_study(study_path).cases if c.parameters.mean_pressure > 15e6]
     label = ", ".join(f"{axis.rsplit('.', 1)[-1]}={value}" for axis, value in failed.axes.items())
-    assert f"failed: contact ({label}): force:" in err and failed.case_id not in err
+    assert f"failed: contact ({label}): ConvergenceError: solve_normal did not converge" in err
+    assert failed.case_id not in err
 
     rows = {r["case"]: r for r in read_table(output / "results.csv")}
     assert len(rows) == 3
     assert [r["status"] for r in rows.values()] == ["done", "done", "failed"]
-    assert "capacity" in rows[failed.case_id]["error"] and not rows[failed.case_id].get("contact_fraction")
+    assert "residual" in rows[failed.case_id]["error"] and not rows[failed.case_id].get("contact_fraction")
     assert all(r["error"] == "" and float(r["contact_fraction"]) > 0 for r in list(rows.values())[:2])
     record = json.loads(record_path(output, "contact", failed.case_id).read_text())
     assert record["status"] == "failed" and record["scalars"] == {} and record["fields"] is None
-    assert record["error"].startswith("force:") and "hardness" in record["error"]
-    assert "_capped_at_force" in record["traceback"]
+    assert "solve_normal did not converge" in record["error"]
+    assert "stalls_above_15_mpa" in record["traceback"]
     assert provenance(output)["cases"] == {"total": 3, "reused": 0, "done": 2, "failed": 1, "pending": 0}
 
     before = file_identities(output)

@@ -8,7 +8,9 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ..topography import Topography
+from ..units import format_si
 from .interaction import INTERACTION_FRACTION, MaugisDugdale
+from .trust import area_resolution
 
 RESOLVED_ZONE_PIXELS = 2.0
 """Pixels the cohesive zone must span for a smooth law's pull-off to be mesh-independent (the
@@ -149,15 +151,24 @@ class AdhesiveResult:
         return bool(np.all(self.residual <= self.tolerance))
 
     @property
+    def touched(self) -> bool:
+        """Whether the programme brought the surfaces into contact at any step."""
+        return bool(np.any(self.contact_area > 0))
+
+    @property
     def pull_off_force(self) -> float:
         """Most tensile force [N], positive (parabola through the smallest force and its neighbours).
 
         The parabola's vertex is used when it lies between the neighbours and below the smallest
         force by no more than the neighbours lie above it; otherwise the smallest force itself.
+        NaN when the surfaces never touched: the largest attraction along a programme that stays
+        apart is no pull-off.
         """
         return -self._pull_off()[1]
 
     def _pull_off(self) -> tuple[float, float]:
+        if not self.touched:
+            return float("nan"), float("nan")
         i = int(np.argmin(self.force))
         approach, force = float(self.approach[i]), float(self.force[i])
         if 0 < i < len(self.force) - 1 and not (self.jump[i] or self.jump[i + 1]):
@@ -196,6 +207,10 @@ class AdhesiveResult:
         return float(np.sum(0.5 * (self.force[1:] + self.force[:-1]) * np.diff(self.approach)))
 
     @property
+    def _force_unit(self) -> str:
+        return "N" if self.topography.dim == 2 else "N/m"
+
+    @property
     def _spacing(self) -> float:
         """Pixel size [m] (the side of a square pixel; the spacing of a profile)."""
         return float(np.sqrt(self.pixel_area)) if self.topography.dim == 2 else self.pixel_area
@@ -203,12 +218,31 @@ class AdhesiveResult:
     def range_warnings(self) -> list[str]:
         """Why the answer may depend on the grid or the window.
 
-        A cohesive zone narrower than :data:`RESOLVED_ZONE_PIXELS` pixels
-        (:data:`MAUGIS_DUGDALE_ZONE_PIXELS` for the Maugis-Dugdale law); on a free window, an
-        interaction that reaches the window's edge at the pull-off (the attraction beyond it is
-        missing, so the pull-off is too small).
+        A programme that never brings the surfaces into contact (no pull-off); a contact area at
+        pull-off (or at its largest) of fewer than ten pixels
+        (:func:`roughcontact.contact.trust.area_resolution`); a cohesive zone narrower than
+        :data:`RESOLVED_ZONE_PIXELS` pixels (:data:`MAUGIS_DUGDALE_ZONE_PIXELS` for the
+        Maugis-Dugdale law); on a free window, an interaction that reaches the window's edge at
+        the pull-off (the attraction beyond it is missing, so the pull-off is too small).
         """
         warnings = []
+        if not self.touched:
+            i = int(np.argmin(self.force))
+            deepest, attraction = (
+                format_si(self.approach.max(), "m"),
+                format_si(-self.force[i], self._force_unit),
+            )
+            return [
+                f"the surfaces never touch: the programme's deepest approach, {deepest} from the first "
+                f"touch, leaves them apart, so there is no pull-off (the largest attraction along it, "
+                f"{attraction} at {format_si(self.approach[i], 'm')}, is not one). Give a positive "
+                "max_approach (command line --max-approach), e.g. a few interaction lengths."
+            ]
+        measure, dim = self.pixel_area, self.topography.dim
+        at_pull_off = float(self.contact_area[self.map_steps["pull_off"]])
+        fix = "Use a scan with smaller pixels over the contact."
+        warnings += area_resolution("the contact area at pull-off", at_pull_off, measure, dim, fix)
+        warnings += area_resolution("the largest contact area", float(self.contact_area.max()), measure, dim)
         spacing = self._spacing
         pixels = self.cohesive_zone / spacing
         stepped = isinstance(self.interaction, MaugisDugdale)

@@ -26,6 +26,7 @@ from ..elasticity.halfspace import ElasticLayer, SurfaceCompliance
 from ..errors import InputError
 from ..materials import Material, contact_modulus
 from ..topography import Topography
+from ..units import format_si
 from . import _box, _constrained_cg
 from .result import NormalContactResult
 
@@ -34,15 +35,23 @@ _LINE_WIDTH = 1.0
 
 
 def resolve_boundary(topography: Topography, boundary: str | None) -> str:
-    """Return the boundary to solve: ``boundary``, or "periodic" for a periodic topography, else "free"."""
-    boundary = boundary or ("periodic" if topography.periodic else "free")
-    if topography.dim == 1 and boundary == "free":
-        raise InputError(
-            "boundary",
-            "a line scan is solved as a periodic plane-strain line contact only.",
-            "pass a periodic profile (periodic=True) or a 2D map.",
-        )
-    return boundary
+    """Return the boundary to solve: ``boundary``, else "periodic" for a periodic topography or a profile.
+
+    A line scan (1D) is solved as a plane-strain line contact, which exists only periodic: the
+    displacement of a free half-plane under a line load grows without bound (logarithmically), so
+    a profile is solved as repeated with its length as the period, whatever its own flag says.
+    """
+    if topography.dim == 1:
+        if boundary == "free":
+            raise InputError(
+                "boundary",
+                "a line scan is solved as a plane-strain line contact, which is periodic only (a free "
+                "half-plane's displacement under a line load has no finite value).",
+                "leave boundary out, or give boundary='periodic' (command line --boundary periodic): the "
+                "profile is repeated with its length as the period.",
+            )
+        return "periodic"
+    return boundary or ("periodic" if topography.periodic else "free")
 
 
 def compliance_for(
@@ -213,6 +222,10 @@ def solve_normal(
     measure = topography.pixel_area if topography.dim == 2 else topography.spacing[0]
     nominal = topography.area if topography.dim == 2 else topography.size[0]
     target_force = value * nominal if name == "mean_pressure" else value
+    if name != "approach":
+        check_carried(
+            name, value, target_force / nominal, topography.size, compliance.contact_modulus, hardness
+        )
     guess = initial.approach if isinstance(initial, NormalContactResult) else None
     if initial is not None:
         initial = (initial.pressure if isinstance(initial, NormalContactResult) else initial).reshape(shape)
@@ -246,6 +259,50 @@ def solve_normal(
         hardness=hardness,
         parameters={name: value, "version": __version__},
     )
+
+
+CARRIED_PRESSURE = 1.0
+"""Largest nominal mean pressure, in units of E*, a load may ask of an elastic surface."""
+
+
+def check_carried(
+    name: str, value: float, pressure: float, size: tuple[float, ...], modulus: float, hardness: float | None
+) -> None:
+    """Refuse a load the scan cannot carry, before solving: a nominal pressure of E* or more, or the hardness.
+
+    An elastic half-space under a mean pressure of order E* is strained by order one: beyond
+    small-strain elasticity whatever the roughness (:data:`CARRIED_PRESSURE`). An
+    elastic-perfectly-plastic surface carries at most its hardness over the whole nominal area.
+    Such a load is usually a wrong unit or a wrong scan size, so both are shown in engineering
+    units. ``size`` is the scan's physical size [m] (one value: a profile, the load per length).
+
+    Raises
+    ------
+    InputError
+        Naming the load (``force`` or ``mean_pressure``).
+    """
+    line = len(size) == 1
+    unit = {"force": "N/m" if line else "N", "mean_pressure": "Pa"}[name]
+    area = " x ".join(format_si(side, "m") for side in size)
+    nominal = f"{format_si(pressure, 'Pa')} over the nominal {'length' if line else 'area'} {area}"
+    asked = f"{name} {format_si(value, unit)}" + (
+        f" is a mean pressure of {nominal}" if name == "force" else ""
+    )
+    if hardness is not None and pressure >= hardness:
+        raise InputError(
+            name,
+            f"{asked}: at or above the hardness {format_si(hardness, 'Pa')}, which an "
+            "elastic-perfectly-plastic surface carries at most, over its whole area.",
+            "check the load's unit and the scan's size; lower the load or use a larger scan.",
+        )
+    if hardness is None and pressure >= CARRIED_PRESSURE * modulus:
+        raise InputError(
+            name,
+            f"{asked}: {pressure / modulus:.3g} times the contact modulus E* = {format_si(modulus, 'Pa')}, "
+            "strains of order one, beyond the small-strain elastic model (whatever the roughness).",
+            "check the load's unit and the scan's size (the load of a scan is its nominal pressure "
+            "times its area); give a hardness for a plastic surface.",
+        )
 
 
 def _capped_at_force(compliance, separation, target_force, initial, guess, measure, hardness, common):

@@ -10,7 +10,7 @@ import numpy as np
 from scipy import ndimage
 
 from ..topography import Topography
-from .trust import contact_shares, share_warnings
+from .trust import area_resolution, contact_shares, one_pixel_patches, patch_resolution, share_warnings
 
 
 def count_patches(mask: np.ndarray, *, periodic: bool) -> int:
@@ -96,8 +96,11 @@ class NormalContactResult:
         "mean_gap": "m",
         "max_pressure": "Pa",
         "contact_modulus": "Pa",
+        "force_per_length": "N/m",
+        "contact_length": "m",
     }
-    """SI unit of each dimensional scalar of :meth:`scalars` (for a line scan force is per metre)."""
+    """SI unit of each dimensional scalar of :meth:`scalars`. A line scan (plane-strain line contact)
+    reports ``force_per_length`` and ``contact_length`` instead of ``force`` and ``contact_area``."""
 
     def __post_init__(self):
         for name in ("pressure", "gap", "displacement"):
@@ -146,6 +149,12 @@ class NormalContactResult:
         mask = self.contact_mask if self.contact_mask.ndim == 2 else self.contact_mask[:, None]
         return count_patches(mask, periodic=self.boundary == "periodic")
 
+    @cached_property
+    def one_pixel_patches(self) -> int:
+        """Number of contact patches that are a single pixel (none joined across a periodic edge)."""
+        mask = self.contact_mask if self.contact_mask.ndim == 2 else self.contact_mask[:, None]
+        return one_pixel_patches(mask)[1]
+
     @property
     def mean_gap(self) -> float:
         """Mean gap over the whole surface [m]."""
@@ -172,14 +181,20 @@ class NormalContactResult:
         return contact_shares(self.pressure, self.topography, self.boundary)
 
     def scalars(self) -> dict[str, float]:
-        """Return the scalar results as a flat dictionary (SI), the :attr:`shares` last."""
+        """Return the scalar results as a flat dictionary (SI), the :attr:`shares` last.
+
+        A line contact (1D) says what its numbers are: ``force_per_length`` [N/m] and
+        ``contact_length`` [m] in place of ``force`` and ``contact_area``.
+        """
+        line = self.topography.dim == 1
         return {
-            "force": self.force,
+            "force_per_length" if line else "force": self.force,
             "mean_pressure": self.mean_pressure,
             "approach": self.approach,
             "contact_fraction": self.contact_fraction,
-            "contact_area": self.contact_area,
+            "contact_length" if line else "contact_area": self.contact_area,
             "number_of_patches": self.number_of_patches,
+            "one_pixel_patches": self.one_pixel_patches,
             "mean_gap": self.mean_gap,
             "max_pressure": float(self.pressure.max()),
             "iterations": int(self.iterations),
@@ -199,6 +214,8 @@ class NormalContactResult:
           and a free (non-periodic) surface is then carried at its edges.
         * A large share of the load on filled points, on specks or at a free window's edge
           (:func:`roughcontact.contact.trust.share_warnings`).
+        * A contact area of fewer than ten pixels, or patches most of which are single pixels
+          (:func:`roughcontact.contact.trust.area_resolution`, ``patch_resolution``).
 
         Parameters
         ----------
@@ -215,6 +232,10 @@ class NormalContactResult:
             )
         if self.contact_fraction >= 1.0:
             notes.append("full contact: every point touches, so the roughness no longer matters.")
+        notes += area_resolution(
+            "the contact area", self.contact_area, self._pixel_measure, self.topography.dim
+        )
+        notes += patch_resolution(self.number_of_patches, self.one_pixel_patches)
         return notes + share_warnings(self.shares, self.topography, self.boundary)
 
     def to_xarray(self):

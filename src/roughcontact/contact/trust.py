@@ -1,4 +1,4 @@
-"""How much of a contact rests on points that are not measured surface, and on a window's edge.
+"""How much of a contact rests on points that are not measured surface, on a window's edge, on a few pixels.
 
 A contact computed on a measured scan can look certain and rest on nothing measured:
 
@@ -18,6 +18,11 @@ A contact computed on a measured scan can look certain and rest on nothing measu
 :func:`contact_shares` measures the share of the load and of the contact area each carries;
 :func:`share_warnings` says when one is large enough to change the answer, and the fix.
 
+An area resolved on a handful of pixels is a number of the grid, not of the surface:
+:func:`area_resolution` says so for an area below :data:`RESOLVED_PIXELS` pixels, and
+:func:`patch_resolution` for patch counts of which more than :data:`ONE_PIXEL_PATCHES` are single
+pixels (the next finer scan would split or merge them).
+
 The thresholds are choices, stated here: a share of the load above :data:`INVENTED_SHARE` on
 filled points or specks, and a share within :data:`EDGE_PIXELS` of a free window's edge above
 :data:`EDGE_SHARE` and above :data:`EDGE_EXCESS` times the band's share of the nominal area (a
@@ -29,8 +34,14 @@ from __future__ import annotations
 import numpy as np
 from scipy import ndimage
 
+from ..units import format_si
+
 __all__ = [
     "EDGE_EXCESS",
+    "ONE_PIXEL_PATCHES",
+    "RESOLVED_PIXELS",
+    "area_resolution",
+    "patch_resolution",
     "EDGE_PIXELS",
     "EDGE_SHARE",
     "INVENTED_SHARE",
@@ -51,6 +62,12 @@ EDGE_SHARE = 0.1
 
 EDGE_EXCESS = 2.0
 """... and above this many times the band's share of the nominal area."""
+
+RESOLVED_PIXELS = 10
+"""Pixels below which a contact (or pull-off) area is said to be unresolved."""
+
+ONE_PIXEL_PATCHES = 0.5
+"""Share of one-pixel patches above which a patch count is said to be unresolved (with 4 or more patches)."""
 
 SHARES = {
     "filled_load_share": "share of the load carried by filled (interpolated) points",
@@ -174,3 +191,60 @@ def share_warnings(shares: dict[str, float], topography, boundary: str) -> list[
             "the scan to a region without undefined points, or use a lower load."
         )
     return warnings
+
+
+def area_resolution(
+    what: str,
+    area: float,
+    pixel_measure: float,
+    dim: int = 2,
+    fix: str = "Use a scan with smaller pixels over the contact, or a higher load.",
+) -> list[str]:
+    """Return a warning when ``area`` [m^2] (a profile: length [m]) spans fewer than RESOLVED_PIXELS pixels.
+
+    Parameters
+    ----------
+    what : str
+        The quantity in words (``"the contact area at pull-off"``).
+    area : float
+        The area [m^2] (contact length [m] of a profile); 0 (no contact) gives no warning.
+    pixel_measure : float
+        Area of a pixel [m^2] (its length [m] for a profile).
+    dim : int
+        2 for a map, 1 for a profile.
+    fix : str
+        What to do about it.
+    """
+    pixels = area / pixel_measure
+    if not 0 < pixels < RESOLVED_PIXELS - 1e-9:
+        return []
+    unit = "m^2" if dim == 2 else "m"
+    count = f"{pixels:.3g} pixel" + ("" if round(pixels) == 1 else "s")
+    return [
+        f"{what} is {count} ({format_si(area, unit)}): not resolved by the grid (fewer than "
+        f"{RESOLVED_PIXELS} pixels), so it is a number of the pixel size ({format_si(pixel_measure, unit)}) "
+        f"more than of the surface. {fix}"
+    ]
+
+
+def one_pixel_patches(mask: np.ndarray) -> tuple[int, int]:
+    """Return (number of 4-connected patches, number of them that are a single pixel) of ``mask``."""
+    labels, count = ndimage.label(mask)
+    if count == 0:
+        return 0, 0
+    sizes = np.bincount(labels.ravel())[1:]
+    return int(count), int(np.count_nonzero(sizes == 1))
+
+
+def patch_resolution(patches: int, single: int, area: str = "contact area") -> list[str]:
+    """Return a warning when more than ONE_PIXEL_PATCHES of 4 or more patches are single pixels.
+
+    ``area`` names what to report instead of the patch count (``"contact length"`` for a profile).
+    """
+    if patches < 4 or single <= ONE_PIXEL_PATCHES * patches:
+        return []
+    return [
+        f"{single} of the {patches} contact patches are single pixels: the patches are not resolved, and "
+        f"their number and sizes would change on a finer scan. Report the {area} rather than the "
+        "patch count, or use a scan with smaller pixels."
+    ]

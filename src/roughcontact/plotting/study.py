@@ -55,3 +55,20 @@ def map_axes(
     if colorbar:
         shared_colorbar(image, [ax], label, unit, scale)
     return image
+
+
+def profile_axes(ax: Axes, fields: list, labels: list[str | None], name: str, unit: str):
+    """Draw 1D fields (``xarray.DataArray`` on x [m]) as curves on one axes, in readable units.
+
+    For line contacts (a profile solved in plane strain): pressure or gap against x, one curve per
+    case, the y axis from 0 in the prefixed unit of the largest value.
+    """
+    x_scale, x_unit = prefixed_scale(max(float(np.ptp(np.asarray(f["x"]))) for f in fields) or 1e-9, "m")
+    largest = max(float(np.nanmax(np.abs(np.asarray(f)))) for f in fields) or 1.0
+    y_scale, y_unit = prefixed_scale(largest, unit)
+    for field, label in zip(fields, labels, strict=True):
+        ax.plot(np.asarray(field["x"]) / x_scale, np.asarray(field) / y_scale, lw=0.8, label=label)
+    ax.set_xlabel(f"x ({x_unit})")
+    ax.set_ylabel(f"{name} ({y_unit})")
+    ax.set_ylim(bottom=0)
+    ax.grid(True, alpha=0.3)

@@ -260,6 +260,34 @@ def preparation(spec: FileTopography, topography: Topography) -> dict[str, Any]:
     }
 
 
+@dataclass(frozen=True)
+class KnownInputs:
+    """What validation knows of a case's inputs before building them: materials, and grids of topographies.
+
+    Passed to a kind's ``check_inputs`` (:class:`~roughcontact.study.kind.Kind`).
+    """
+
+    specs: dict[str, Any]
+    loaded: dict[str, Topography]
+    materials: dict[str, Material]
+
+    def material(self, name: str | None) -> Material | None:
+        """Return the material called ``name`` (None for None: rigid)."""
+        return None if name is None else self.materials.get(name)
+
+    def grid(self, name: str) -> tuple[tuple[int, ...], tuple[float, ...]] | None:
+        """Return (shape, size [m]) of topography ``name``; None where it is known only once built."""
+        from ..topography.generate import grid_of
+
+        spec = self.specs.get(name)
+        if isinstance(spec, FileTopography):
+            topography = self.loaded.get(spec.model_dump_json())
+            return None if topography is None else (topography.shape, topography.size)
+        if hasattr(spec, "shape") and hasattr(spec, "size"):
+            return grid_of(spec.shape, spec.size)
+        return None
+
+
 class _Builder:
     """Validates the study's tables and builds the cases of its analyses, collecting every problem."""
 
@@ -379,12 +407,14 @@ class _Builder:
         if spec is None:
             return None
         try:
-            return spec.build(name)
-        except InputError as error:
+            problems = spec.problems()
+        except InputError as error:  # an unknown library name
+            problems = [error]
+        for error in problems:
             typed = raw.get(error.field)  # the constructor sees SI: show the value as written too
             shown = f" (written {typed!r})" if isinstance(typed, str) and typed not in error.problem else ""
             self.problem(where.child(error.field), error.problem.rstrip(".") + shown + ".", error.fix)
-            return None
+        return None if problems else spec.build(name)
 
     def material(self, name: str, raw_tables: dict, where: Where) -> Material | None:
         """Return a study material (with this case's overrides) or a library material by name."""
@@ -610,6 +640,12 @@ class _Builder:
                 if material is None:
                     return None
                 used_materials[value] = material
+        if kind.check_inputs is not None:
+            try:
+                kind.check_inputs(checked, KnownInputs(found, self.loaded, used_materials))
+            except InputError as error:
+                self.problem(label.child(error.field), error.problem, error.fix)
+                return None
         files = {name: self.files[str(value)] for name, value in checked if isinstance(value, Path)}
         key_data = {
             "model": kind.name,

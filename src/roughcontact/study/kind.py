@@ -214,6 +214,12 @@ class Kind:
         ``check(parameters)``: reads a case's input files (its Path keys, resolved relative to the
         study file) at validation time and raises :class:`~roughcontact.errors.InputError` naming
         the problem, so a bad file fails ``roughcontact validate``, not a case half-way through a run.
+    check_inputs : callable, optional
+        ``check_inputs(parameters, known)``: a case's checks that need its materials and the grids
+        of its topographies but not their heights (``known.material(name)``, ``known.grid(name)``
+        -> ``(shape, size)`` or None; :class:`roughcontact.study.config.KnownInputs`), run at
+        validation time: a load the scan cannot carry fails ``roughcontact validate`` as the run
+        would.
     headline : tuple of str
         The scalars a command prints per case when it runs several (a sweep), besides the swept
         values; one case prints all of them.
@@ -231,5 +237,6 @@ class Kind:
     tables: Mapping[str, TableFunction] = field(default_factory=dict)
     compare: type[Strict] | None = None
     check: Callable[[Any], None] | None = None
+    check_inputs: Callable[[Any, Any], None] | None = None
     headline: tuple[str, ...] = ()
     renamed: Mapping[str, str] = field(default_factory=dict)

@@ -26,7 +26,7 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from ..errors import InputError
-from ..materials import Material, get_material
+from ..materials import Material, get_material, material_problems
 from ..topography.io import MAX_FILLED
 from ..units import SI_UNITS, quantity
 
@@ -204,6 +204,28 @@ class _Generated(Strict):
     shape: GridShape
     size: LengthPerAxis
 
+    @model_validator(mode="after")
+    def _generator_checks(self) -> _Generated:
+        """Run the generator's own checks (:func:`~roughcontact.topography.generate.check_arguments`).
+
+        So validation refuses what building the surface would, before any case runs.
+        """
+        from ..checks import positive
+        from ..topography.generate import check_arguments
+
+        options = self.model_dump(exclude={"generate", "shape", "size", "ra"})
+        try:
+            check_arguments(self.generate, self.shape, self.size, **options)
+            if getattr(self, "ra", None) is not None:
+                positive(self.ra, "ra", example="'5 nm'")
+        except InputError as error:
+            raise PydanticCustomError(
+                "quantity",
+                "{field}: {problem}",
+                {"field": error.field, "problem": error.problem, "fix": error.fix},
+            ) from None
+        return self
+
 
 class _Seeded(_Generated):
     seed: int | None = Field(
@@ -370,6 +392,14 @@ class MaterialSpec(Strict):
                 {"fix": "e.g. youngs_modulus = '70 GPa' and poissons_ratio = 0.17"},
             )
         return self
+
+    def problems(self) -> list[InputError]:
+        """Return every problem of the values (:func:`~roughcontact.materials.material_problems`)."""
+        values = self.model_dump(exclude={"library"})
+        if self.library is not None:
+            base = dataclasses.asdict(get_material(self.library))
+            values = {key: base[key] if values[key] is None else values[key] for key in values}
+        return material_problems(**values)
 
     def build(self, name: str) -> Material:
         """Return the :class:`~roughcontact.materials.Material` (checked by its constructor)."""

@@ -80,6 +80,11 @@ def _grid(
     return tuple(int(n) for n in dims), tuple(float(s) for s in lengths)
 
 
+def grid_of(shape, size) -> tuple[tuple[int, ...], tuple[float, ...]]:
+    """Return the (shape, size [m]) a generator makes of its ``shape`` and ``size`` arguments, checked."""
+    return _grid(shape, size)
+
+
 def _hurst(hurst: float) -> float:
     hurst = float(hurst)
     if not 0 < hurst <= 1:
@@ -159,6 +164,27 @@ def _one_target(rms_height: float | None, rms_slope: float | None) -> tuple[floa
     return None, positive(rms_slope, "rms_slope", example="0.1 (dimensionless)")
 
 
+def _self_affine_arguments(shape, size, hurst, rms_height, rms_slope, short_cutoff, long_cutoff, rolloff):
+    """Check and normalise the arguments of :func:`self_affine` (see :func:`check_arguments`)."""
+    shape, size = _grid(shape, size)
+    hurst = _hurst(hurst)
+    rms_height, rms_slope = _one_target(rms_height, rms_slope)
+    if short_cutoff is not None:
+        short_cutoff = positive(short_cutoff, "short_cutoff", example="1e-8", unit="m")
+    if long_cutoff is not None:
+        long_cutoff = positive(long_cutoff, "long_cutoff", example="1e-6", unit="m")
+    if short_cutoff is not None and long_cutoff is not None and long_cutoff <= short_cutoff:
+        raise InputError(
+            "long_cutoff",
+            f"{long_cutoff!r} m is not longer than short_cutoff {short_cutoff!r} m.",
+            "give long_cutoff > short_cutoff.",
+        )
+    plateau = 0.0
+    if rolloff is not None:
+        plateau = positive(rolloff, "rolloff", example="0 (no plateau) or 1 (flat plateau)", allow_zero=True)
+    return shape, size, hurst, rms_height, rms_slope, short_cutoff, long_cutoff, plateau
+
+
 def self_affine(
     shape: int | tuple[int, ...],
     size: float | tuple[float, ...],
@@ -232,24 +258,11 @@ def self_affine(
     Jacobs, Junge and Pastewka (2017) doi:10.1088/2051-672X/aa51f8; Persson et al. (2005)
     doi:10.1088/0953-8984/17/1/R01
     """
-    shape, size = _grid(shape, size)
-    hurst = _hurst(hurst)
-    rms_height, rms_slope = _one_target(rms_height, rms_slope)
-    if short_cutoff is not None:
-        short_cutoff = positive(short_cutoff, "short_cutoff", example="1e-8", unit="m")
-    if long_cutoff is not None:
-        long_cutoff = positive(long_cutoff, "long_cutoff", example="1e-6", unit="m")
+    shape, size, hurst, rms_height, rms_slope, short_cutoff, long_cutoff, plateau = _self_affine_arguments(
+        shape, size, hurst, rms_height, rms_slope, short_cutoff, long_cutoff, rolloff
+    )
     q_short = math.inf if short_cutoff is None else 2.0 * math.pi / short_cutoff
     q_long = 0.0 if long_cutoff is None else 2.0 * math.pi / long_cutoff
-    if q_long >= q_short:
-        raise InputError(
-            "long_cutoff",
-            f"{long_cutoff!r} m is not longer than short_cutoff {short_cutoff!r} m.",
-            "give long_cutoff > short_cutoff.",
-        )
-    plateau = 0.0
-    if rolloff is not None:
-        plateau = positive(rolloff, "rolloff", example="0 (no plateau) or 1 (flat plateau)", allow_zero=True)
     exponent = 2.0 * (1.0 + hurst) if len(shape) == 2 else 1.0 + 2.0 * hurst
 
     def psd_shape(q: np.ndarray) -> np.ndarray:
@@ -267,6 +280,14 @@ def self_affine(
         "rolloff": rolloff,
     }
     return _scaled(Topography(heights, size, periodic=True, info=info), rms_height, rms_slope)
+
+
+def _gaussian_random_arguments(shape, size, rms_height, correlation_length):
+    """Check and normalise the arguments of :func:`gaussian_random`."""
+    shape, size = _grid(shape, size)
+    rms_height = positive(rms_height, "rms_height", example="1e-9", unit="m")
+    correlation_length = positive(correlation_length, "correlation_length", example="1e-7", unit="m")
+    return shape, size, rms_height, correlation_length
 
 
 def gaussian_random(
@@ -309,9 +330,9 @@ def gaussian_random(
     Whitehouse, D. J. and Archard, J. F. (1970). The properties of random surfaces of significance
     in their contact. Proc. R. Soc. A 316, 97-121. doi:10.1098/rspa.1970.0068
     """
-    shape, size = _grid(shape, size)
-    rms_height = positive(rms_height, "rms_height", example="1e-9", unit="m")
-    correlation_length = positive(correlation_length, "correlation_length", example="1e-7", unit="m")
+    shape, size, rms_height, correlation_length = _gaussian_random_arguments(
+        shape, size, rms_height, correlation_length
+    )
     heights = _filtered_noise(
         shape, size, lambda q: np.exp(-((q * correlation_length) ** 2) / 4.0), seed, "correlation_length"
     )
@@ -352,6 +373,41 @@ def _radial_distance(
             d = d - s * np.round(d / s)
         squared = squared + np.expand_dims(d**2, tuple(a for a in range(len(shape)) if a != axis))
     return np.sqrt(np.broadcast_to(squared, shape))
+
+
+def _farthest(shape, size, centre, periodic: bool) -> float:
+    """Largest distance [m] of a grid point from ``centre`` (minimum image when periodic)."""
+    spacing = [s / n for n, s in zip(shape, size, strict=True)]
+    if centre is None:
+        centre = tuple((n // 2) * h for n, h in zip(shape, spacing, strict=True))
+    centre = np.atleast_1d(np.asarray(centre, dtype=float))
+    if centre.shape != (len(shape),) or not np.all(np.isfinite(centre)):
+        raise InputError(
+            "centre",
+            f"{tuple(centre)} is not {len(shape)} finite coordinates.",
+            f"give the apex position in metres, {len(shape)} values.",
+        )
+    reach = []
+    for n, h, c, s in zip(shape, spacing, centre, size, strict=True):
+        d = np.array([0.0, (n - 1) * h]) - c
+        reach.append(s / 2 if periodic else float(np.max(np.abs(d))))
+    return float(np.sqrt(sum(r**2 for r in reach)))
+
+
+def _sphere_arguments(shape, size, radius, centre, kind, periodic):
+    """Check and normalise the arguments of :func:`sphere`."""
+    shape, size = _grid(shape, size)
+    radius = positive(radius, "radius", example="5e-3", unit="m")
+    if kind not in ("sphere", "paraboloid"):
+        raise InputError("kind", f"unknown kind {kind!r}.", "choose 'sphere' or 'paraboloid'.")
+    farthest = _farthest(shape, size, centre, periodic)
+    if kind == "sphere" and farthest > radius:
+        raise InputError(
+            "radius",
+            f"the grid reaches {farthest:.6g} m from the apex, beyond the sphere radius {radius:.6g} m.",
+            "use a smaller size, a larger radius, or kind='paraboloid'.",
+        )
+    return shape, size, radius
 
 
 def sphere(
@@ -401,22 +457,12 @@ def sphere(
     Johnson, K. L. (1985). Contact Mechanics, ch. 4. Cambridge University Press.
     doi:10.1017/CBO9781139171731
     """
-    shape, size = _grid(shape, size)
-    radius = positive(radius, "radius", example="5e-3", unit="m")
-    if kind not in ("sphere", "paraboloid"):
-        raise InputError("kind", f"unknown kind {kind!r}.", "choose 'sphere' or 'paraboloid'.")
+    shape, size, radius = _sphere_arguments(shape, size, radius, centre, kind, periodic)
     distance = _radial_distance(shape, size, centre, periodic)
     if kind == "paraboloid":
         heights = -(distance**2) / (2.0 * radius)
     else:
-        if distance.max() > radius:
-            raise InputError(
-                "radius",
-                f"the grid reaches {distance.max():.6g} m from the apex, beyond the "
-                f"sphere radius {radius:.6g} m.",
-                "use a smaller size, a larger radius, or kind='paraboloid'.",
-            )
-        heights = np.sqrt(radius**2 - distance**2) - radius
+        heights = np.sqrt(np.maximum(radius**2 - distance**2, 0.0)) - radius
     info = {"name": kind, "generator": "sphere", "radius": radius}
     return Topography(heights, size, periodic=periodic, info=info)
 
@@ -424,6 +470,18 @@ def sphere(
 def _divides(size: tuple[float, ...], wavelength: tuple[float, ...]) -> bool:
     cycles = [s / w for s, w in zip(size, wavelength, strict=True)]
     return all(abs(c - round(c)) <= _PERIOD_TOLERANCE * max(c, 1.0) for c in cycles)
+
+
+def _sinusoid_arguments(shape, size, amplitude, wavelength, axis):
+    """Check and normalise the arguments of :func:`sinusoid`."""
+    shape, size = _grid(shape, size)
+    amplitude = positive(amplitude, "amplitude", example="1e-7", unit="m")
+    wavelength = positive(wavelength, "wavelength", example="1e-5", unit="m")
+    if axis not in range(len(shape)):
+        raise InputError(
+            "axis", f"axis {axis!r} does not exist on a {len(shape)}D grid.", "use 0 (x), or 1 (y) for a map."
+        )
+    return shape, size, amplitude, wavelength
 
 
 def sinusoid(
@@ -459,13 +517,7 @@ def sinusoid(
     -------
     Topography
     """
-    shape, size = _grid(shape, size)
-    amplitude = positive(amplitude, "amplitude", example="1e-7", unit="m")
-    wavelength = positive(wavelength, "wavelength", example="1e-5", unit="m")
-    if axis not in range(len(shape)):
-        raise InputError(
-            "axis", f"axis {axis!r} does not exist on a {len(shape)}D grid.", "use 0 (x), or 1 (y) for a map."
-        )
+    shape, size, amplitude, wavelength = _sinusoid_arguments(shape, size, amplitude, wavelength, axis)
     x = np.arange(shape[axis]) * size[axis] / shape[axis]
     wave = amplitude * np.cos(2.0 * np.pi * x / wavelength)
     heights = np.broadcast_to(np.expand_dims(wave, tuple(a for a in range(len(shape)) if a != axis)), shape)
@@ -477,6 +529,15 @@ def sinusoid(
         "axis": axis,
     }
     return Topography(heights, size, periodic=_divides(size[axis : axis + 1], (wavelength,)), info=info)
+
+
+def _bisinusoid_arguments(shape, size, amplitude, wavelength):
+    """Check and normalise the arguments of :func:`bisinusoid`."""
+    shape, size = _grid(shape, size)
+    if len(shape) != 2:
+        raise InputError("shape", "a bisinusoid needs a map (nx, ny).", "use sinusoid for a profile.")
+    amplitude = positive(amplitude, "amplitude", example="1e-7", unit="m")
+    return shape, size, amplitude, _per_axis(wavelength, 2, "wavelength", "1e-5")
 
 
 def bisinusoid(
@@ -509,17 +570,20 @@ def bisinusoid(
     -------
     Topography
     """
-    shape, size = _grid(shape, size)
-    if len(shape) != 2:
-        raise InputError("shape", "a bisinusoid needs a map (nx, ny).", "use sinusoid for a profile.")
-    amplitude = positive(amplitude, "amplitude", example="1e-7", unit="m")
-    wavelength = _per_axis(wavelength, 2, "wavelength", "1e-5")
+    shape, size, amplitude, wavelength = _bisinusoid_arguments(shape, size, amplitude, wavelength)
     x, y = (np.arange(n) * s / n for n, s in zip(shape, size, strict=True))
     heights = amplitude * np.outer(
         np.cos(2.0 * np.pi * x / wavelength[0]), np.cos(2.0 * np.pi * y / wavelength[1])
     )
     info = {"name": "bisinusoid", "generator": "bisinusoid", "amplitude": amplitude, "wavelength": wavelength}
     return Topography(heights, size, periodic=_divides(size, wavelength), info=info)
+
+
+def _flat_punch_arguments(shape, size, radius, depth):
+    """Check and normalise the arguments of :func:`flat_punch`."""
+    shape, size = _grid(shape, size)
+    radius = positive(radius, "radius", example="10e-6", unit="m")
+    return shape, size, radius, positive(depth, "depth", example="1e-6", unit="m")
 
 
 def flat_punch(
@@ -559,12 +623,29 @@ def flat_punch(
     Johnson, K. L. (1985). Contact Mechanics, section 3.8 (rigid flat punch).
     doi:10.1017/CBO9781139171731
     """
-    shape, size = _grid(shape, size)
-    radius = positive(radius, "radius", example="10e-6", unit="m")
-    depth = positive(depth, "depth", example="1e-6", unit="m")
+    shape, size, radius, depth = _flat_punch_arguments(shape, size, radius, depth)
     heights = np.where(_radial_distance(shape, size, centre, False) <= radius, 0.0, -depth)
     info = {"name": "flat punch", "generator": "flat_punch", "radius": radius, "depth": depth}
     return Topography(heights, size, periodic=False, info=info)
+
+
+def _raised_island_arguments(shape, size, island_size, thickness, rms_height, hurst, substrate_height):
+    """Check and normalise the arguments of :func:`raised_island`."""
+    shape, size = _grid(shape, size)
+    island_size = positive(island_size, "island_size", example="25e-6", unit="m")
+    thickness = positive(thickness, "thickness", example="1e-6", unit="m")
+    rms_height = positive(rms_height, "rms_height", example="1e-9", unit="m", allow_zero=True)
+    hurst = _hurst(hurst)
+    substrate_height = float(substrate_height)
+    if not math.isfinite(substrate_height):
+        raise InputError("substrate_height", "must be finite.", "give a height in metres.")
+    if island_size > min(size):
+        raise InputError(
+            "island_size",
+            f"{island_size:.6g} m is wider than the scan {size} m.",
+            "use a smaller island or a larger size.",
+        )
+    return shape, size, island_size, thickness, rms_height, hurst, substrate_height
 
 
 def raised_island(
@@ -617,20 +698,9 @@ def raised_island(
     ----------
     Seed paper 002, section II (raised SU-8 squares, Fig. 2).
     """
-    shape, size = _grid(shape, size)
-    island_size = positive(island_size, "island_size", example="25e-6", unit="m")
-    thickness = positive(thickness, "thickness", example="1e-6", unit="m")
-    rms_height = positive(rms_height, "rms_height", example="1e-9", unit="m", allow_zero=True)
-    hurst = _hurst(hurst)
-    substrate_height = float(substrate_height)
-    if not math.isfinite(substrate_height):
-        raise InputError("substrate_height", "must be finite.", "give a height in metres.")
-    if island_size > min(size):
-        raise InputError(
-            "island_size",
-            f"{island_size:.6g} m is wider than the scan {size} m.",
-            "use a smaller island or a larger size.",
-        )
+    shape, size, island_size, thickness, rms_height, hurst, substrate_height = _raised_island_arguments(
+        shape, size, island_size, thickness, rms_height, hurst, substrate_height
+    )
     on_island = np.ones(shape, dtype=bool)
     for axis, (n, s) in enumerate(zip(shape, size, strict=True)):
         x = np.arange(n) * s / n - (n // 2) * s / n
@@ -721,3 +791,58 @@ def sphere_with_roughness(
         "seed": seed,
     }
     return Topography(body.heights + roughness.heights, body.size, periodic=False, info=info)
+
+
+def check_arguments(generator: str, shape, size, **options) -> None:
+    """Run the checks the generator ``generator`` runs on its arguments, without generating anything.
+
+    What a study file's validation calls for every generated topography of every case, so that
+    ``roughcontact validate`` refuses what the run would (a Hurst exponent outside (0, 1], a
+    sphere smaller than its grid, crossed cutoffs, ...). ``seed`` and options a generator does
+    not check are ignored.
+
+    Raises
+    ------
+    InputError
+        As the generator would, naming the argument.
+    """
+    options = {key: value for key, value in options.items() if key != "seed"}
+    if generator == "self_affine":
+        _self_affine_arguments(
+            shape,
+            size,
+            options["hurst"],
+            options.get("rms_height"),
+            options.get("rms_slope"),
+            options.get("short_cutoff"),
+            options.get("long_cutoff"),
+            options.get("rolloff"),
+        )
+    elif generator == "gaussian_random":
+        _gaussian_random_arguments(shape, size, options["rms_height"], options["correlation_length"])
+    elif generator in ("sphere", "sphere_with_roughness"):
+        kind = options.get("kind", "sphere" if generator == "sphere" else "paraboloid")
+        _sphere_arguments(
+            shape, size, options["radius"], options.get("centre"), kind, options.get("periodic", False)
+        )
+        if generator == "sphere_with_roughness":
+            cutoffs = (options.get("short_cutoff"), options.get("long_cutoff"))
+            _self_affine_arguments(
+                shape, size, options.get("hurst", 0.8), options["rms_height"], None, *cutoffs, None
+            )
+    elif generator == "sinusoid":
+        _sinusoid_arguments(shape, size, options["amplitude"], options["wavelength"], options.get("axis", 0))
+    elif generator == "bisinusoid":
+        _bisinusoid_arguments(shape, size, options["amplitude"], options["wavelength"])
+    elif generator == "flat_punch":
+        _flat_punch_arguments(shape, size, options["radius"], options["depth"])
+    elif generator == "raised_island":
+        _raised_island_arguments(
+            shape,
+            size,
+            options["island_size"],
+            options["thickness"],
+            options.get("rms_height", 0.0),
+            options.get("hurst", 0.8),
+            options.get("substrate_height", 0.0),
+        )

@@ -72,6 +72,23 @@ class NormalParameters(CaseParameters):
         return self
 
 
+def check_inputs(parameters: NormalParameters, known) -> None:
+    """Refuse at validation a load the scan cannot carry (:func:`~.contact.normal.check_carried`)."""
+    from ...contact.normal import check_carried
+    from ...materials import contact_modulus
+
+    grid = known.grid(parameters.topography)
+    if parameters.approach is not None or parameters.film_thickness is not None or grid is None:
+        return
+    shape, size = grid
+    nominal = size[0] * size[1] if len(shape) == 2 else size[0]
+    name = "force" if parameters.force is not None else "mean_pressure"
+    value = getattr(parameters, name)
+    pressure = value / nominal if name == "force" else value
+    modulus = contact_modulus(known.material(parameters.material), known.material(parameters.counter_body))
+    check_carried(name, value, pressure, size, modulus, parameters.hardness)
+
+
 def run(parameters: NormalParameters, inputs) -> CaseOutput:
     """Solve one case; scalars as :meth:`NormalContactResult.scalars` plus E* and stress maxima."""
     import xarray as xr
@@ -125,16 +142,32 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
 @caption(
     "Contact pressure (top) and gap (bottom) of up to four cases; each row shares one colour scale, "
     "from 0 to the 99.5th percentile of its nonzero values. Titles give the case and the fraction of "
-    "the nominal area in contact."
+    "the nominal area in contact. A line scan (plane-strain line contact) is drawn as profiles: "
+    "pressure and gap against x, one curve per case."
 )
 def _contact_maps(records, context):
-    from ...plotting.layout import colour_scale, new_figure, shared_colorbar
-    from ...plotting.study import map_axes
+    from ...plotting.layout import colour_scale, legend, new_figure, shared_colorbar
+    from ...plotting.study import map_axes, profile_axes
 
     chosen = evenly_chosen([r for r in records if r.fields_path is not None], 4)
     fields = [record.dataset() for record in chosen]
-    if not chosen or "y" not in fields[0].dims:
+    if not chosen:
         return None
+    if "y" not in fields[0].dims:
+        figure, axes = new_figure(2, 1, width=6.4, height=2.6)
+        labels = [
+            f"{r.label}: {100 * r.scalars['contact_fraction']:.3g} % in contact" if len(chosen) > 1 else None
+            for r in chosen
+        ]
+        profile_axes(axes[0][0], [data["pressure"] for data in fields], labels, "pressure", "Pa")
+        profile_axes(axes[1][0], [data["gap"] for data in fields], labels, "gap", "m")
+        if len(chosen) > 1:
+            legend(axes[0][0])
+        else:
+            axes[0][0].set_title(
+                f"{chosen[0].label}\n{100 * chosen[0].scalars['contact_fraction']:.3g} % in contact"
+            )
+        return figure
     figure, axes = new_figure(2, len(chosen), width=3.6 if len(chosen) > 1 else 4.6, height=3.2)
     for row, (name, cmap) in enumerate((("pressure", "magma"), ("gap", "viridis"))):
         unit = "Pa" if name == "pressure" else "m"
@@ -182,8 +215,14 @@ def _area_load(records, context):
     return _curve_of_cases(records, "mean_pressure", "contact_fraction", (1e-6, 100.0), labels)
 
 
-@caption("Normal force against the rigid approach counted from the first touch, one line per sample.")
+@caption(
+    "Normal force (per unit length for a line scan) against the rigid approach counted from the "
+    "first touch, one line per sample."
+)
 def _load_approach(records, context):
+    if records and "force_per_length" in records[0].scalars:
+        labels = ("approach (nm)", "force per length (N/m)", "load against approach")
+        return _curve_of_cases(records, "approach", "force_per_length", (1e9, 1.0), labels)
     labels = ("approach (nm)", "force (µN)", "load against approach")
     return _curve_of_cases(records, "approach", "force", (1e9, 1e6), labels)
 
@@ -215,6 +254,7 @@ KIND = Kind(
     summary="normal contact against a flat: FFT-BEM, load or approach control, optional hardness/film",
     parameters=NormalParameters,
     run=run,
+    check_inputs=check_inputs,
     units=NormalContactResult.UNITS | {"max_von_mises": "Pa", "max_von_mises_depth": "m"},
     figures={
         "contact": _contact_maps,
