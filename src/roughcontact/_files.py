@@ -81,6 +81,15 @@ def existing_file(path: str | os.PathLike, *, empty_fix: str) -> Path:
     return path
 
 
+def not_a_folder(path: Path) -> str | None:
+    """Say why ``path`` cannot be an output folder (it or a folder above it is a file); None if it can."""
+    for place in (path, *path.parents):
+        if place.exists() and not place.is_dir():
+            where = "is" if place == path else f"is inside {place}, which is"
+            return f"{path} {where} a file, not a folder."
+    return None
+
+
 def first_line(error: BaseException, limit: int = 160) -> str:
     """Return the first line of an exception's text (its type name if it has none), cut to ``limit``."""
     text = str(error).strip().splitlines()

@@ -34,9 +34,11 @@ References
 
 from __future__ import annotations
 
+import difflib
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from numbers import Real
 from types import MappingProxyType
 
 from .checks import poissons_ratio_checked, positive
@@ -585,3 +587,61 @@ def get_material(name: str) -> Material:
             f"use one of {[m.name for m in MATERIALS.values()]} or define a Material.",
         )
     return MATERIALS[key]
+
+
+def check_material(value, field: str, *, rigid: bool = False, modulus: bool = False) -> None:
+    """Refuse what is not a :class:`Material` where a function takes one, with a fix that works as typed.
+
+    Parameters
+    ----------
+    value : object
+        What was passed.
+    field : str
+        The parameter's name (``"material"``, ``"counter_body"``).
+    rigid : bool
+        None is accepted (a rigid body).
+    modulus : bool
+        A number is accepted (the contact modulus E* [Pa]).
+
+    Raises
+    ------
+    InputError
+        A library name as a string (fix: ``get_material('SiO2')``), a modulus with a unit as a string
+        (fix: ``quantity('70 GPa')``), or anything else, naming ``field``.
+    """
+    if isinstance(value, Material) or (rigid and value is None):
+        return
+    if modulus and isinstance(value, Real) and not isinstance(value, bool):
+        return
+    takes = (
+        "a Material"
+        + (" or the contact modulus E* in Pa" if modulus else "")
+        + (" or None (rigid)" if rigid else "")
+    )
+    if isinstance(value, str):
+        key = " ".join(value.replace("_", " ").lower().split())
+        if key in MATERIALS:
+            fix = f"pass {field}=get_material({value!r}) (from roughcontact import get_material)."
+        elif modulus and _is_pressure(value):
+            fix = f"pass {field}=quantity({value!r}) (from roughcontact import quantity)."
+        else:
+            close = difflib.get_close_matches(key, list(MATERIALS), n=1)
+            hint = f"did you mean get_material({MATERIALS[close[0]].name!r})? " if close else ""
+            fix = (
+                f"{hint}pass {field}=get_material(NAME) with one of {[m.name for m in MATERIALS.values()]}, "
+                "or Material(youngs_modulus=..., poissons_ratio=...)."
+            )
+        raise InputError(field, f"got the string {value!r}; Python takes {takes}.", fix)
+    raise InputError(
+        field,
+        f"got {type(value).__name__} {value!r}; Python takes {takes}.",
+        f"pass {field}=get_material(NAME) or Material(youngs_modulus=..., poissons_ratio=...).",
+    )
+
+
+def _is_pressure(text: str) -> bool:
+    try:
+        quantity(text, "pressure")
+    except InputError:
+        return False
+    return True

@@ -201,7 +201,9 @@ def _dimension_name(dimension: Dimension) -> str:
     return " or ".join(names) if names else f"m^{dimension[0]} kg^{dimension[1]} s^{dimension[2]}"
 
 
-def quantity(value: str | Real, expected: str, *, field: str = "value", require_unit: bool = False) -> float:
+def quantity(
+    value: str | Real, expected: str | None = None, *, field: str = "value", require_unit: bool = False
+) -> float:
     """Convert a quantity to SI, checking its dimension.
 
     Parameters
@@ -209,8 +211,10 @@ def quantity(value: str | Real, expected: str, *, field: str = "value", require_
     value : str or float
         ``"20 nm"``, ``"70 GPa"``, ... A bare number (or a string holding only a number)
         is taken to be in SI already, unless ``require_unit``.
-    expected : str
+    expected : str, optional
         Expected dimension, a key of :data:`DIMENSIONS` (``"length"``, ``"pressure"``, ...).
+        Without it any known unit is converted (``quantity("20 MPa")`` is 2e7): what a Python user
+        types to turn a value with a unit into the SI number a function takes.
     field : str
         Name of the input, used in error messages.
     require_unit : bool
@@ -235,9 +239,9 @@ def quantity(value: str | Real, expected: str, *, field: str = "value", require_
     >>> quantity("72 mJ/m^2", "surface_energy")
     0.072
     """
-    if expected not in DIMENSIONS:
+    if expected is not None and expected not in DIMENSIONS:
         raise ValueError(f"unknown dimension {expected!r}; choose from {sorted(DIMENSIONS)}")
-    if require_unit and expected != "dimensionless":
+    if require_unit and expected not in ("dimensionless", None):
         _refuse_bare(value, expected, field)
     if isinstance(value, Real) and not isinstance(value, bool):
         result = float(value)
@@ -246,15 +250,15 @@ def quantity(value: str | Real, expected: str, *, field: str = "value", require_
         if match is None:
             raise UnitError(
                 field,
-                f"cannot read {value!r} as a {expected}.",
-                f"write a number and a unit, e.g. {_EXAMPLES.get(expected, '1')!r}.",
+                f"cannot read {value!r} as a {expected or 'quantity'}.",
+                f"write a number and a unit, e.g. {_EXAMPLES.get(expected, '20 MPa')!r}.",
             )
         number, unit = match.groups()
         try:
             factor, dimension = unit_factor(unit)
         except UnitError as error:
             raise UnitError(field, f"{error.problem} (in {value!r})", error.fix) from None
-        if unit and dimension != DIMENSIONS[expected]:
+        if unit and expected is not None and dimension != DIMENSIONS[expected]:
             raise UnitError(
                 field,
                 f"{value!r} is a {_dimension_name(dimension)}, expected a {expected}.",

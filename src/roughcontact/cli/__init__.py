@@ -22,11 +22,18 @@ from collections.abc import Sequence
 from .._version import __version__
 from ..errors import ConvergenceError, InputError
 from . import adhesion, asperity, contact, friction, indentation, presliding, study, topography
-from .options import EXIT_CASES_FAILED, EXIT_INPUT_ERROR, EXIT_INTERRUPTED, EXIT_NOT_CONVERGED
+from .options import (
+    EXIT_CASES_FAILED,
+    EXIT_INPUT_ERROR,
+    EXIT_INTERNAL_ERROR,
+    EXIT_INTERRUPTED,
+    EXIT_NOT_CONVERGED,
+)
 
 __all__ = [
     "EXIT_CASES_FAILED",
     "EXIT_INPUT_ERROR",
+    "EXIT_INTERNAL_ERROR",
     "EXIT_INTERRUPTED",
     "EXIT_NOT_CONVERGED",
     "build_parser",
@@ -37,9 +44,17 @@ GROUPS = (topography, contact, adhesion, friction, asperity, presliding, indenta
 """The command groups, in the order ``roughcontact --help`` lists them."""
 
 
+class _Parser(argparse.ArgumentParser):
+    """An argument parser whose errors are one line and a pointer to ``--help`` (not the whole usage)."""
+
+    def error(self, message: str):
+        """Print ``PROG: error: MESSAGE`` and where the options are listed; exit 2."""
+        self.exit(2, f"{self.prog}: error: {message}\n  ({self.prog} --help lists the options)\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """Return the argument parser of the ``roughcontact`` command."""
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="roughcontact",
         description="Contact mechanics of rough surfaces from measured topographies.",
     )
@@ -68,3 +83,20 @@ def main(argv: Sequence[str] | None = None) -> int:
     except BrokenPipeError:  # the reader went away (roughcontact ... | head): not an error of ours
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no second error at exit
         return 0
+    except OSError as error:  # a path the system refuses (permissions, a full disk, ...)
+        where = error.filename or "a file"
+        print(
+            f"roughcontact: error: {where}: {error.strerror or error}. Fix: check the path, its "
+            "permissions and the free space.",
+            file=sys.stderr,
+        )
+        return EXIT_INPUT_ERROR
+    except Exception as error:  # a bug of ours: said in one line; -vv shows the traceback
+        if args.verbose >= 2:
+            raise
+        print(
+            f"roughcontact: internal error: {type(error).__name__}: {error}. This is a bug of roughcontact, "
+            "not of your input: please report it with the command line; rerun with -vv for the traceback.",
+            file=sys.stderr,
+        )
+        return EXIT_INTERNAL_ERROR

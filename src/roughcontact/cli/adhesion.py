@@ -74,6 +74,7 @@ def add_commands(commands) -> None:
         "(study model 'adhesion'). The work of adhesion is --work-of-adhesion or comes from the surface "
         "energies by --combining-rule. --winkler adds paper 000's Winkler-layer springs beside it.",
         file=True,
+        boundary=True,
     )
     parser.add_argument("counter_file", nargs="?", type=Path, help="topography of the counter-body (tip)")
     add_material_options(parser, "material", "the surface's body", "polysilicon, SiO2")
@@ -108,7 +109,6 @@ def add_commands(commands) -> None:
     parser.add_argument("--start", help="first approach, negative: apart (default: five ranges apart)")
     parser.add_argument("--steps", type=int, help="equal steps each way (default 40)")
     parser.add_argument("--jump-resolution", help="width jumps are bracketed to (default: a quarter range)")
-    parser.add_argument("--boundary", choices=("periodic", "free"), help="default: free unless --periodic")
     parser.add_argument("--film-thickness", help="the body is a film of this thickness on a rigid base")
     parser.add_argument(
         "--resample",

@@ -44,6 +44,7 @@ def add_commands(commands) -> None:
         "against a flat (study model 'normal'). Give exactly one of --pressure, --force, --approach, with "
         "units. -o writes the case, its figures and a report.",
         file=True,
+        boundary=True,
     )
     add_material_options(contact, "material", "the surface's body", "SU-8, polysilicon, SiO2")
     add_material_options(contact, "counter_body", "the flat (default: rigid)", "SiO2")
@@ -51,7 +52,6 @@ def add_commands(commands) -> None:
     contact.add_argument("--force", help="total force, e.g. '10 uN'")
     contact.add_argument("--approach", help="rigid approach from the first touch, e.g. '5 nm'")
     contact.add_argument("--hardness", help="cap the pressure (elastic-perfectly-plastic), e.g. '0.46 GPa'")
-    contact.add_argument("--boundary", choices=("periodic", "free"), help="default: free unless --periodic")
     contact.add_argument("--tolerance", type=float, default=1e-8, help="scale-free residual (default 1e-8)")
     contact.add_argument(
         "--stress-depths", nargs="+", metavar="DEPTH", help="von Mises maps at these depths, e.g. '20 nm'"

@@ -24,6 +24,8 @@ from ..topography.process import LEVELLING
 EXIT_INPUT_ERROR = 2
 EXIT_NOT_CONVERGED = 3
 EXIT_CASES_FAILED = 4
+EXIT_INTERNAL_ERROR = 70
+"""A bug of roughcontact (EX_SOFTWARE of sysexits.h), said in one line; ``-vv`` shows the traceback."""
 EXIT_INTERRUPTED = 130
 
 
@@ -40,8 +42,12 @@ def channel_argument(text: str) -> int | str:
     return int(text) if text.isdigit() else text
 
 
-def file_options(*, required: bool = True) -> argparse.ArgumentParser:
-    """Return a parent parser with FILE and the options that say how to read it."""
+def file_options(*, required: bool = True, periodic: bool = True) -> argparse.ArgumentParser:
+    """Return a parent parser with FILE and the options that say how to read it.
+
+    ``periodic`` adds ``--periodic`` (the surface repeats); a command that solves with a
+    ``--boundary`` option leaves it out, so that the boundary has one spelling.
+    """
     parent = argparse.ArgumentParser(add_help=False)
     group = parent.add_argument_group("reading the file")
     group.add_argument(
@@ -94,28 +100,64 @@ def file_options(*, required: bool = True) -> argparse.ArgumentParser:
         action="store_true",
         help="keep the filled points out of contact (lowered below every measured point)",
     )
-    group.add_argument("--periodic", action="store_true", help="treat the surface as periodic")
+    if periodic:
+        group.add_argument("--periodic", action="store_true", help="treat the surface as periodic")
     group.add_argument(
         "--detrend",
         choices=LEVELLING,
-        default="plane",
-        help="background removed from the scan before use (default plane: its tilt; none keeps it)",
+        help="background removed from the scan before use (default plane, its tilt; mean for a periodic "
+        "surface; none keeps it)",
     )
     return parent
 
 
 def new_command(
-    commands, name: str, handler, summary: str, description: str = "", *, file: bool | None = None
+    commands,
+    name: str,
+    handler,
+    summary: str,
+    description: str = "",
+    *,
+    file: bool | None = None,
+    boundary: bool = False,
 ):
     """Add the command ``name`` to the subparsers ``commands``, run by ``handler(args)``; return its parser.
 
     ``summary`` is its line in ``roughcontact --help``, ``description`` its ``--help`` text; ``file``
-    adds FILE and the options that say how to read it (True: required, False: optional).
+    adds FILE and the options that say how to read it (True: required, False: optional);
+    ``boundary`` adds ``--boundary periodic|free`` in place of ``--periodic``.
     """
-    parents = [] if file is None else [file_options(required=file)]
+    parents = [] if file is None else [file_options(required=file, periodic=not boundary)]
     parser = commands.add_parser(name, parents=parents, help=summary, description=description or None)
     parser.set_defaults(handler=handler)
+    if boundary:
+        parser.add_argument(
+            "--boundary",
+            choices=("periodic", "free"),
+            help="periodic (the scan repeated) or free (a window of a larger surface); default free for "
+            "a map, periodic for a line scan",
+        )
     return parser
+
+
+def levelling(args: argparse.Namespace) -> str:
+    """Return the levelling of FILE: ``--detrend``, else plane (mean for a ``--periodic`` surface).
+
+    Raises
+    ------
+    InputError
+        ``--periodic`` with a levelling that would make the surface non-periodic.
+    """
+    periodic = getattr(args, "periodic", False)
+    if args.detrend is None:
+        return "mean" if periodic else "plane"
+    if periodic and args.detrend not in ("none", "mean"):
+        raise InputError(
+            "--detrend",
+            f"{args.detrend} removes a background from a --periodic surface, which then no longer repeats.",
+            "use --detrend mean (or none) for a periodic surface, or leave --periodic out.",
+        )
+    return args.detrend
 
 
 def read_file(args: argparse.Namespace):
@@ -140,6 +182,7 @@ def read_file(args: argparse.Namespace):
     from ..topography.process import crop, find_specks, level
     from ..units import quantity
 
+    mode = levelling(args)
     for part in args.size or ():  # a unit is required here, as in a study file ('--size 5' is not 5 m)
         quantity(part, "length", field="--size", require_unit=True)
     size = args.size if args.size is None or len(args.size) > 1 else args.size[0]
@@ -149,7 +192,7 @@ def read_file(args: argparse.Namespace):
             channel=args.channel,
             size=size,
             height_unit=args.height_unit,
-            periodic=args.periodic,
+            periodic=getattr(args, "periodic", False),
             treat_as_height=args.treat_as_height,
             override_file_values=args.override_file_values,
         )
@@ -184,7 +227,7 @@ def read_file(args: argparse.Namespace):
             placeholder, scan.size, periodic=scan.periodic, info=scan.info, specks=find_specks(undefined)
         )
     try:
-        return level(topography, args.detrend), undefined
+        return level(topography, mode), undefined
     except InputError as error:
         raise InputError("--detrend", error.problem, error.fix) from None
 
@@ -216,12 +259,36 @@ _FLAG_ALIASES = {"counter_body": ("counter",)}
 """Option spellings of release 0.1 still accepted (``--counter`` for ``--counter-body``)."""
 
 
+def output_folder(text: str) -> Path:
+    """Return ``-o``'s folder; refuse (before anything is computed) a path that is a file or under one."""
+    from .._files import not_a_folder
+
+    path = Path(text).expanduser()
+    problem = not_a_folder(path)
+    if problem:
+        raise argparse.ArgumentTypeError(f"{problem} Fix: give a folder for the results (a new one is made).")
+    return path
+
+
+def dpi_argument(text: str) -> int:
+    """Return ``--dpi`` as an int from 10 to 2400 (dots per inch of the figures)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number. Fix: e.g. --dpi 300.") from None
+    if not 10 <= value <= 2400:
+        raise argparse.ArgumentTypeError(
+            f"{value} dots per inch is outside 10 to 2400. Fix: 150 for the screen, 300 or 600 for print."
+        )
+    return value
+
+
 def add_output_options(parser: argparse.ArgumentParser, *, figures: bool = True) -> None:
     """Add ``-o/--output``, ``--json`` and (for commands that draw) ``--dpi``."""
     parser.add_argument(
         "-o",
         "--output",
-        type=Path,
+        type=output_folder,
         help="folder for the results: each case, results.csv, tables, figures and report.html",
     )
     parser.add_argument(
@@ -231,7 +298,9 @@ def add_output_options(parser: argparse.ArgumentParser, *, figures: bool = True)
     )
     parser.add_argument("--json", action="store_true", help="print the results as one JSON document (SI)")
     if figures:
-        parser.add_argument("--dpi", type=int, default=150, help="resolution of the figures (default 150)")
+        parser.add_argument(
+            "--dpi", type=dpi_argument, default=150, help="resolution of the figures (default 150)"
+        )
 
 
 _STUDY_PHRASES = (
@@ -513,4 +582,5 @@ class CommandStudy:
         flag = self.words.get(error.field)
         if flag is None:
             return error
-        return InputError(flag, self.translate(error.problem), self.translate(error.fix))
+        fix = error.fixes.get("cli") or self.translate(error.fix)
+        return InputError(flag, self.translate(error.problem), fix)

@@ -75,7 +75,9 @@ def _run(study, command: CommandStudy, output: Path | None, dpi: int, overwrite:
                 return in_memory(study, records), None
             folder = output.expanduser().resolve()
             resume = _output_folder(folder, command, overwrite)
-            run_study(study, folder, resume=resume, progress=terminal, raise_errors=True)
+            summary = run_study(study, folder, resume=resume, progress=terminal, raise_errors=True)
+            if summary.recomputed_note:
+                print(f"roughcontact: note: {summary.recomputed_note}", file=sys.stderr)
         report = write_report(folder, dpi=dpi)
         return read_study(folder)[1], report
     except InputError as error:

@@ -12,7 +12,7 @@ import sys
 from pathlib import Path
 
 from ..errors import InputError
-from .options import EXIT_CASES_FAILED, EXIT_INTERRUPTED, new_command
+from .options import EXIT_CASES_FAILED, EXIT_INTERRUPTED, new_command, output_folder
 
 
 def _describe(study) -> list[str]:
@@ -45,6 +45,8 @@ def finish(folder: Path, summary) -> int:
     from ..study.report import write_report
 
     report = write_report(folder)
+    if summary.recomputed_note:
+        print(f"roughcontact: note: {summary.recomputed_note}", file=sys.stderr)
     print(
         f"{summary.done} case{'s' if summary.done != 1 else ''} run, {summary.skipped} reused, "
         f"{summary.failed} failed "
@@ -233,7 +235,7 @@ def add_commands(commands) -> None:
         "OUT/cases/, OUT/figures/, OUT/tables/, OUT/provenance.json and OUT/report.html.",
     )
     run.add_argument("study", type=Path, help="study file (TOML), see docs/studies.md")
-    run.add_argument("-o", "--output", type=Path, required=True, help="output folder")
+    run.add_argument("-o", "--output", type=output_folder, required=True, help="output folder")
     where = run.add_mutually_exclusive_group()
     where.add_argument("--workers", type=int, help="run on a local Dask cluster of N worker processes")
     where.add_argument("--scheduler", help="address of a running Dask scheduler, e.g. tcp://10.0.0.5:8786")
@@ -253,7 +255,7 @@ def add_commands(commands) -> None:
         ("report", _report, "write OUT/report.html: the tables and figures of a study on one offline page",
          (("folder",), {"type": Path, "help": "the output folder of 'roughcontact run'"})),
         ("demo", _demo, "run the embedded demo study (examples/demo.toml) and write its report",
-         (("-o", "--output"), {"type": Path, "default": Path("demo-output"), "help": "output folder"})),
+         (("-o", "--output"), {"type": output_folder, "default": Path("demo-output"), "help": "folder"})),
     )  # fmt: skip
     for name, handler, summary, (flags, keywords) in simple:
         new_command(commands, name, handler, summary).add_argument(*flags, **keywords)

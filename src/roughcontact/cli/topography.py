@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._files import not_a_folder
 from .._json import json_ready
 from ..errors import InputError
 from ..study.display import shown
@@ -19,7 +20,7 @@ from ..topography.io import MAX_FILLED, channel_of, channel_words, max_filled_al
 from ..topography.process import LEVELLING, SPECK
 from ..topography.statistics import SUMMARY
 from ..units import format_si
-from .options import new_command, read_file
+from .options import dpi_argument, levelling, new_command, read_file
 
 
 def describe(topography: Topography, undefined=None) -> dict:
@@ -122,7 +123,7 @@ def _inspect(args: argparse.Namespace) -> int:
     topography, undefined = read_file(args)
     description = describe(topography, undefined)
     description["file"] = str(args.file)
-    description["detrend"] = args.detrend
+    description["detrend"] = levelling(args)
     description["format"] = topography.info.get("file_format")
     description["channels"] = [
         {
@@ -152,6 +153,30 @@ def _inspect(args: argparse.Namespace) -> int:
     return 0
 
 
+def _check_figure_file(path: Path, overwrite: bool) -> None:
+    """Refuse, before drawing, a figure file matplotlib cannot write or one that would be replaced."""
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    formats = FigureCanvasBase.get_supported_filetypes()
+    suffix = path.suffix.lower().lstrip(".")
+    if suffix not in formats:
+        said = f"ends in .{suffix}, which is not a figure format" if suffix else "has no file extension"
+        raise InputError(
+            "-o/--output",
+            f"{path} {said}.",
+            "name the figure file with one of "
+            + ", ".join(f".{f}" for f in ("png", "pdf", "svg", "eps", "tif"))
+            + f" (all: {', '.join(sorted(formats))}).",
+        )
+    if path.is_dir():
+        raise InputError("-o/--output", f"{path} is a folder.", "give a figure file, e.g. -o scan.png.")
+    if path.exists() and not overwrite:
+        raise InputError("-o/--output", f"{path} exists.", "choose another name, or add --overwrite.")
+    problem = not_a_folder(path.parent)
+    if problem:
+        raise InputError("-o/--output", problem, "give the figure file a path in a folder.")
+
+
 def _plot(args: argparse.Namespace) -> int:
     from ..plotting import plot_overview
 
@@ -161,8 +186,7 @@ def _plot(args: argparse.Namespace) -> int:
         return plot_study(args.file)
     if args.output is None:
         raise InputError("-o/--output", "no figure file given.", "add -o FIGURE.png.")
-    if args.output.exists() and not args.overwrite:
-        raise InputError("-o/--output", f"{args.output} exists.", "choose another name, or add --overwrite.")
+    _check_figure_file(args.output, args.overwrite)
     topography, undefined = read_file(args)
     figure = plot_overview(topography, undefined=undefined)
     args.output.parent.mkdir(parents=True, exist_ok=True)
@@ -192,5 +216,5 @@ def add_commands(commands) -> None:
         file=True,
     )
     plot.add_argument("-o", "--output", type=Path, help="figure file (.png, .pdf, .svg) for a topography")
-    plot.add_argument("--dpi", type=int, default=150)
+    plot.add_argument("--dpi", type=dpi_argument, default=150, help="resolution of the figure (default 150)")
     plot.add_argument("--overwrite", action="store_true", help="replace an existing figure file")

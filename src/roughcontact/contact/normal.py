@@ -24,7 +24,7 @@ from .._version import __version__
 from ..checks import no_string
 from ..elasticity.halfspace import ElasticLayer, SurfaceCompliance
 from ..errors import InputError
-from ..materials import Material, contact_modulus
+from ..materials import Material, check_material, contact_modulus
 from ..topography import Topography
 from ..units import format_si
 from . import _box, _constrained_cg
@@ -41,17 +41,27 @@ def resolve_boundary(topography: Topography, boundary: str | None) -> str:
     displacement of a free half-plane under a line load grows without bound (logarithmically), so
     a profile is solved as repeated with its length as the period, whatever its own flag says.
     """
+    check_line_boundary(topography.dim, boundary)
     if topography.dim == 1:
-        if boundary == "free":
-            raise InputError(
-                "boundary",
-                "a line scan is solved as a plane-strain line contact, which is periodic only (a free "
-                "half-plane's displacement under a line load has no finite value).",
-                "leave boundary out, or give boundary='periodic' (command line --boundary periodic): the "
-                "profile is repeated with its length as the period.",
-            )
         return "periodic"
     return boundary or ("periodic" if topography.periodic else "free")
+
+
+def check_line_boundary(dim: int, boundary: str | None) -> None:
+    """Refuse a free boundary for a line scan (``dim`` 1), see :func:`resolve_boundary`."""
+    if dim != 1 or boundary != "free":
+        return
+    said = "the profile is repeated with its length as the period."
+    raise InputError(
+        "boundary",
+        "a line scan is solved as a plane-strain line contact, which is periodic only (a free "
+        "half-plane's displacement under a line load has no finite value).",
+        f"leave boundary out, or give boundary='periodic': {said}",
+        fixes={
+            "study": f"leave boundary out, or write boundary = 'periodic': {said}",
+            "cli": f"leave --boundary out, or give --boundary periodic: {said}",
+        },
+    )
 
 
 def compliance_for(
@@ -81,6 +91,7 @@ def compliance_for(
         Threads for scipy.fft.
     """
     boundary = resolve_boundary(topography, boundary)
+    check_material(counter_body, "counter_body", rigid=True)
     if material is None and layer is None:
         raise InputError(
             "material", "no material given.", "pass a Material, the contact modulus E* in Pa, or layer=."
@@ -93,15 +104,10 @@ def compliance_for(
         return SurfaceCompliance(
             shape, size, layer=layer, counter_body=counter_body, boundary=boundary, workers=workers
         )
+    check_material(material, "material", modulus=True)
     if isinstance(material, Material):
         modulus = contact_modulus(material, counter_body)
     else:
-        if isinstance(material, str):
-            raise InputError(
-                "material",
-                f"got the string {material!r}; Python takes a Material or E* in Pa.",
-                f"pass get_material({material!r}) for a library material, or quantity({material!r}) for E*.",
-            )
         if counter_body is not None:
             raise InputError(
                 "counter_body", "a contact modulus already includes both bodies.", "pass a Material instead."

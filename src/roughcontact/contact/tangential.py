@@ -56,7 +56,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from ..errors import InputError
-from ..materials import Material, contact_modulus
+from ..materials import Material, check_material, contact_modulus
 from . import _programme
 from .result import NormalContactResult
 from .tangential_result import TangentialPathResult
@@ -83,8 +83,8 @@ def _check_inputs(normal, material, counter_body):
         raise InputError("normal", f"got {type(normal).__name__}.", "pass the result of solve_normal.")
     if normal.hardness is not None:
         raise InputError("normal", "the normal contact is elastic-plastic.", "solve it without hardness.")
-    if not isinstance(material, Material):
-        raise InputError("material", "a Material is needed (shear moduli and Poisson's ratios).", None)
+    check_material(material, "material")
+    check_material(counter_body, "counter_body", rigid=True)
     expected = contact_modulus(material, counter_body)
     if not np.isclose(expected, normal.contact_modulus, rtol=1e-9):
         raise InputError(

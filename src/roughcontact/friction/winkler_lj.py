@@ -47,7 +47,7 @@ from scipy import optimize
 from .._deprecation import renamed
 from ..checks import positive
 from ..errors import InputError
-from ..materials import Material, composite_modulus, winkler_factor
+from ..materials import Material, check_material, composite_modulus, winkler_factor
 from ..topography import Topography
 from ..topography.process import combine
 from . import lennard_jones as lj
@@ -1148,6 +1148,8 @@ def winkler_lj_model(
     readings = Readings() if readings is None else readings
     _check_gap_model(gap_model, bem_boundary, readings)
     tip_radius = _tip_radius(tip_radius, counter_topography, readings)
+    check_material(material, "material")
+    check_material(counter_body, "counter_body", rigid=True)
     if not isinstance(topography, Topography) or topography.dim != 2:
         raise InputError("topography", "expected a 2D Topography.", "pass a height map (nx, ny) in metres.")
     surface = topography

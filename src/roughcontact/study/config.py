@@ -251,7 +251,7 @@ def preparation(spec: FileTopography, topography: Topography) -> dict[str, Any]:
         "channel": channel_of(topography.info),
         "grid": list(topography.shape),
         "size_m": list(topography.size),
-        "detrend": spec.detrend,
+        "detrend": spec.levelling,
         "undefined_points_filled": filled,
         "undefined_fraction_filled": filled / topography.heights.size,
         "filled_excluded_from_contact": bool(spec.exclude_filled and filled),
@@ -398,7 +398,7 @@ class _Builder:
                 f"{where.label}: the scan is {shown}, outside 1 nm to 1 m; check its size and "
                 "height unit (the file's metadata, or size and height_unit here)."
             )
-        levelled = level(topography, spec.detrend)
+        levelled = level(topography, spec.levelling)
         return exclude_filled(levelled) if spec.exclude_filled else levelled
 
     def _material(self, name: str, raw: dict) -> Material | None:
@@ -644,7 +644,9 @@ class _Builder:
             try:
                 kind.check_inputs(checked, KnownInputs(found, self.loaded, used_materials))
             except InputError as error:
-                self.problem(label.child(error.field), error.problem, error.fix)
+                self.problem(
+                    label.child(error.field), error.problem, error.fix_in("study"), error.fixes.get("cli")
+                )
                 return None
         files = {name: self.files[str(value)] for name, value in checked if isinstance(value, Path)}
         key_data = {

@@ -37,6 +37,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
+from .._files import not_a_folder
 from ..errors import InputError
 from .config import Case, Study
 from .inputs import CaseInputs
@@ -81,6 +82,12 @@ def _version() -> str:
     return __version__
 
 
+def _code() -> dict[str, Any]:
+    from .._version import code_identity
+
+    return code_identity()
+
+
 def failed_record(task: Task, error: str | None) -> dict[str, Any]:
     """Return the record of a case that has not (yet) succeeded: its inputs, no scalars, the error."""
     return {
@@ -98,6 +105,7 @@ def failed_record(task: Task, error: str | None) -> dict[str, Any]:
         "fields": None,
         "error": error,
         "version": _version(),
+        "code": _code(),
         "seconds": None,
     }
 
@@ -195,12 +203,24 @@ def make_task(
 
 
 def is_finished(folder: Path, case: Case) -> bool:
-    """Return True when ``case`` is stored as done with the same key (and its fields file, if any, exists)."""
+    """Return True when ``case`` is stored as done with the same key, by the running code.
+
+    Done means: the same key (inputs), the same code fingerprint
+    (:func:`roughcontact._version.code_identity`) and its fields file, if any, present.
+    """
+    return finished_state(folder, case) == "finished"
+
+
+def finished_state(folder: Path, case: Case) -> str | None:
+    """Return "finished", "other code" (done with the same key by other code) or None (not done)."""
     record = read_record(folder, case.analysis, case.case_id)
     if record is None or not record.done or record["key"] != case.key:
-        return False
+        return None
     path = record.fields_path
-    return path is None or path.exists()
+    if path is not None and not path.exists():
+        return None
+    stored = (record.data.get("code") or {}).get("fingerprint")
+    return "finished" if stored == _code()["fingerprint"] else "other code"
 
 
 @dataclass
@@ -209,6 +229,20 @@ class RunSummary:
 
     total: int
     skipped: int = 0
+    other_code: int = 0
+    """Cases stored as done by other code (another version or source of roughcontact): recomputed."""
+
+    @property
+    def recomputed_note(self) -> str | None:
+        """The line that says cases stored by other code were recomputed (None when none were)."""
+        if not self.other_code:
+            return None
+        many = self.other_code != 1
+        return (
+            f"{self.other_code} case{'s' if many else ''} stored by other code (another version of "
+            f"roughcontact, or changed sources) {'were' if many else 'was'} recomputed, not reused."
+        )
+
     done: int = 0
     failed: int = 0
     interrupted: bool = False
@@ -307,7 +341,10 @@ def case_progress(total: int, enabled: bool):
 
 
 def check_output(folder: Path, resume: bool) -> None:
-    """Refuse to mix a new study into a folder that holds another one's results, unless resuming."""
+    """Refuse a folder that is a file, and to mix a new study into one that holds another one's results."""
+    problem = not_a_folder(folder)
+    if problem:
+        raise InputError("-o/--output", problem, "give a folder for the results (a new one is made).")
     if resume or not folder.exists() or not any(folder.iterdir()):
         return
     if (folder / MARKER).exists():
@@ -373,8 +410,10 @@ def run_study(
     write_atomically(folder / MARKER, dumps(study_document(study, folder)))
 
     cases = study.cases
-    pending = [case for case in cases if not (resume and is_finished(folder, case))]
+    states = [finished_state(folder, case) if resume else None for case in cases]
+    pending = [case for case, state in zip(cases, states, strict=True) if state != "finished"]
     summary = RunSummary(total=len(cases), skipped=len(cases) - len(pending))
+    summary.other_code = states.count("other code")
     storage = None if worker_storage is None else str(Path(worker_storage).expanduser().resolve())
     tasks = [make_task(study, case, storage, raise_errors=raise_errors) for case in pending]
     started = datetime.now(UTC)

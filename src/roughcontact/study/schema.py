@@ -197,7 +197,26 @@ class FileTopography(Strict):
     exclude_filled: bool = False
     """Keep the filled points out of contact (lowered below every measured point after levelling)."""
     periodic: bool = False
-    detrend: Literal["none", "mean", "plane", "curvature", "sphere"] = "plane"
+    detrend: Literal["none", "mean", "plane", "curvature", "sphere"] | None = None
+    """Default plane (its tilt), mean for a periodic surface (a plane would make it non-periodic)."""
+
+    @model_validator(mode="after")
+    def _periodic_levelling(self) -> FileTopography:
+        if self.periodic and self.detrend not in (None, "none", "mean"):
+            raise PydanticCustomError(
+                "quantity",
+                "detrend = {detrend} removes a background from a periodic surface, which would not repeat",
+                {
+                    "detrend": repr(self.detrend),
+                    "fix": "use detrend = 'mean' (or 'none'), or leave periodic out",
+                },
+            )
+        return self
+
+    @property
+    def levelling(self) -> str:
+        """The levelling applied: ``detrend``, or its default (plane; mean for a periodic surface)."""
+        return self.detrend or ("mean" if self.periodic else "plane")
 
 
 class _Generated(Strict):

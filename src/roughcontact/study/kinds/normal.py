@@ -73,14 +73,20 @@ class NormalParameters(CaseParameters):
 
 
 def check_inputs(parameters: NormalParameters, known) -> None:
-    """Refuse at validation a load the scan cannot carry (:func:`~.contact.normal.check_carried`)."""
-    from ...contact.normal import check_carried
+    """Refuse at validation a free line contact and a load the scan cannot carry.
+
+    See :func:`~roughcontact.contact.normal.check_line_boundary` and ``check_carried``.
+    """
+    from ...contact.normal import check_carried, check_line_boundary
     from ...materials import contact_modulus
 
     grid = known.grid(parameters.topography)
-    if parameters.approach is not None or parameters.film_thickness is not None or grid is None:
+    if grid is None:
         return
     shape, size = grid
+    check_line_boundary(len(shape), parameters.boundary)
+    if parameters.approach is not None or parameters.film_thickness is not None:
+        return
     nominal = size[0] * size[1] if len(shape) == 2 else size[0]
     name = "force" if parameters.force is not None else "mean_pressure"
     value = getattr(parameters, name)
