@@ -44,3 +44,47 @@ def test_a_material_name_points_to_get_material():
 def test_quantity_gives_what_the_string_meant():
     by_string = rc.solve_normal(SURFACE, POLYSILICON, mean_pressure=rc.quantity("20 MPa", "pressure"))
     assert by_string.mean_pressure == pytest.approx(20e6, rel=1e-9)
+
+
+# --- the advice works when pasted (issue 32) ---------------------------------------------------------
+
+
+def _pasted(fix: str, field: str):
+    """Evaluate the ``field=...`` expression of a fix as a Python user would paste it."""
+    import re
+
+    expression = re.search(rf"\b{field}=((?:quantity|get_material)\('[^']*'(?:, '[^']*')?\))", fix).group(1)
+    return eval(expression, {"quantity": rc.quantity, "get_material": rc.get_material})  # noqa: S307
+
+
+@pytest.mark.parametrize(
+    ("keywords", "field"),
+    [
+        ({"mean_pressure": "20 MPa"}, "mean_pressure"),
+        ({"force": "10 nN"}, "force"),
+        ({"approach": "0.5 nm"}, "approach"),
+        ({"mean_pressure": 2e6, "hardness": "1 GPa"}, "hardness"),
+        ({"material": "polysilicon", "mean_pressure": 2e6}, "material"),
+        ({"material": "160 GPa", "mean_pressure": 2e6}, "material"),
+        ({"counter_body": "SiO2", "mean_pressure": 2e6}, "counter_body"),
+    ],
+)
+def test_the_advice_works_when_pasted(keywords, field):
+    arguments = {"material": POLYSILICON} | keywords
+    with pytest.raises(InputError) as caught:
+        rc.solve_normal(SURFACE, **arguments)
+    assert caught.value.field == field  # the parameter as the user named it, never an internal one
+    arguments[field] = _pasted(caught.value.fix, field)
+    assert rc.solve_normal(SURFACE, **arguments).converged
+
+
+def test_quantity_needs_no_dimension_but_checks_one_when_given():
+    assert rc.quantity("20 MPa") == 2e7 and rc.quantity("72 mJ/m^2") == pytest.approx(0.072)
+    with pytest.raises(rc.UnitError, match="expected a length"):
+        rc.quantity("20 MPa", "length")
+
+
+def test_a_misspelt_material_gets_the_nearest_name():
+    with pytest.raises(InputError) as caught:
+        rc.solve_normal(SURFACE, "polysilicone", mean_pressure=1e6)
+    assert "get_material('polysilicon')" in caught.value.fix

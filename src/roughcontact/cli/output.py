@@ -109,7 +109,10 @@ def run_command(command: CommandStudy, args) -> int:
         study, command, output, getattr(args, "dpi", 150), getattr(args, "overwrite", False)
     )
     tables, problems = produce(analyses, "table")
-    if args.json:
+    if args.json:  # the document on stdout; its warnings said on stderr too, where a person sees them
+        for analysis in analyses:
+            for line in warning_lines(analysis):
+                print(f"roughcontact: warning: {line}", file=sys.stderr)
         document = {
             "command": study.name,
             "topographies": study.prepared,

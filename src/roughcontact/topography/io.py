@@ -516,7 +516,7 @@ def _checked_text_reader(path: Path, text: str, reader, tried: str):
             fix = (
                 "correct that line in a text editor, or export the file again: plain-text heights are "
                 "read only when every data line holds the same number of numbers (nan marks an "
-                "undefined point)."
+                "undefined point), 4 or more for a height matrix (2 or 3 columns are x z or x y z points)."
             )
         raise UnsupportedFormatError(
             str(path), f"is not a clean table of numbers: {error} {tried}", fix
@@ -763,16 +763,17 @@ def _require_metadata(
     what = " and ".join(m[1] for m in missing)
     python = ", ".join(m[2] for m in missing)
     cli = " ".join(m[3] for m in missing)
-    raise MissingMetadataError(
+    noted = "".join(f"; {note}" for note in notes) + "."
+    error = MissingMetadataError(
         missing[0][0],
         f"{path} has {what}.",
         f"give the real values, e.g. read_topography({str(path)!r}, {python}) in Python, or "
-        f"roughcontact inspect {shlex.quote(str(path))} {cli} at the command line"
-        + "".join(f"; {note}" for note in notes)
-        + ".",
+        f"roughcontact inspect {shlex.quote(str(path))} {cli} at the command line" + noted,
         {m[0]: m[4] for m in missing},
         [note for note in notes if note.startswith("channel")],
     )
+    error.fixes["cli"] = f"give the real values, e.g. {cli}" + noted.replace('size=("5 um", "10 um") or ', "")
+    raise error
 
 
 def _clash(field: str, problem: str, use_file: str, use_given: str) -> InputError:
@@ -945,6 +946,10 @@ def crop_metres(crop: CropLike, dim: int) -> tuple[tuple[float, float], ...]:
 
 def _user_size(size: SizeLike, dim: int) -> tuple[float, ...]:
     """Parse a user-given size (metres or strings with units) into one length [m] per axis."""
+    if (
+        isinstance(size, str) and " x " in size
+    ):  # '5 um x 10 um', as the command line and study files write it
+        size = tuple(part.strip() for part in size.split(" x "))
     values = tuple(size) if isinstance(size, tuple | list) else (size,)
     metres = tuple(quantity(v, "length", field="size") for v in values)
     if len(metres) == 1:
