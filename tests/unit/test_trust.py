@@ -87,10 +87,14 @@ def test_warnings_say_the_share_and_the_fix():
     assert "40 % of the load" in filled_warning and "--exclude-filled" in filled_warning
     assert "20 % of the load" in speck_warning and "--remove-specks" in speck_warning
     assert share_warnings({"filled_load_share": 0.04, "filled_area_share": 0.04}, surface, "periodic") == []
-    # the band is 34 % of a 32 x 32 grid: 80 % of the load there is 2.3 times its share, 60 % is not 2
-    (edge,) = share_warnings({"edge_load_share": 0.8, "edge_area_share": 0.6}, _surface(), "free")
-    assert "80 % of the load" in edge and "--boundary periodic" in edge
-    assert share_warnings({"edge_load_share": 0.6, "edge_area_share": 0.5}, _surface(), "free") == []
+    # concentrated at the edge (a punch edge): 13 % of the load on 3 % of the contact
+    (edge,) = share_warnings({"edge_load_share": 0.13, "edge_area_share": 0.03}, _surface(), "free")
+    assert "13 % of the load" in edge and "concentrated" in edge and "--boundary periodic" in edge
+    # most of the load at the edge, whatever its pressure: decided beyond the scan
+    (edge,) = share_warnings({"edge_load_share": 0.84, "edge_area_share": 0.67}, _surface(), "free")
+    assert "decided at the edge" in edge
+    # a patch that merely lies near the edge
+    assert share_warnings({"edge_load_share": 0.105, "edge_area_share": 0.093}, _surface(), "free") == []
 
 
 def test_resolution_warnings():

@@ -10,7 +10,7 @@ import numpy as np
 from ..topography import Topography
 from ..units import format_si
 from .interaction import INTERACTION_FRACTION, MaugisDugdale
-from .trust import area_resolution
+from .trust import area_resolution, contact_shares, share_warnings
 
 RESOLVED_ZONE_PIXELS = 2.0
 """Pixels the cohesive zone must span for a smooth law's pull-off to be mesh-independent (the
@@ -238,6 +238,7 @@ class AdhesiveResult:
                 f"{attraction} at {format_si(self.approach[i], 'm')}, is not one). Give a positive "
                 "max_approach (command line --max-approach), e.g. a few interaction lengths."
             ]
+        warnings += share_warnings(self.shares, self.topography, self.boundary)
         measure, dim = self.pixel_area, self.topography.dim
         at_pull_off = float(self.contact_area[self.map_steps["pull_off"]])
         fix = "Use a scan with smaller pixels over the contact."
@@ -307,7 +308,16 @@ class AdhesiveResult:
             "iterations": int(self.iterations.sum()),
             "residual": float(self.residual.max()),
             "converged": self.converged,
-        }
+        } | self.shares
+
+    @property
+    def shares(self) -> dict[str, float]:
+        """Shares of the load and the contact at the deepest approach on filled points, specks and an edge.
+
+        :func:`roughcontact.contact.trust.contact_shares` of the compressive pressure of the
+        ``"peak"`` state.
+        """
+        return contact_shares(self.maps["peak"][0], self.topography, self.boundary)
 
     def to_xarray(self):
         """Return the force-approach curve per step and the pressure and gap maps of :data:`MAP_STATES`."""

@@ -46,6 +46,7 @@ from scipy import optimize
 
 from .._deprecation import renamed
 from ..checks import positive
+from ..contact.trust import contact_shares, share_warnings
 from ..errors import InputError
 from ..materials import Material, check_material, composite_modulus, winkler_factor
 from ..topography import Topography
@@ -261,24 +262,41 @@ class WinklerLJResult:
                 "bem_force": force,
                 "bem_load_error": abs(force - self.normal_force) / self.normal_force,
             }
-        return {
-            "normal_force": self.normal_force,
-            "mu": self.mu,
-            "friction": self.friction,
-            "adhesive_friction": self.adhesive_friction,
-            "mechanical_friction": self.mechanical_friction,
-            "separation": self.separation,
-            "approach": self.approach,
-            "mechanical_springs": int(self.mechanical.sum()),
-            "adhesive_springs": int(self.adhesive.sum()),
-            "bonded_springs": int(self.bonded.sum()),
-            "mechanical_force": self.mechanical_force,
-            "adhesive_force": self.adhesive_force,
-            "residual": self.residual,
-            "max_strain": self.max_strain,
-            "negative_energy_springs": self.negative_energy_springs,
-            "pulled_in_springs": self.pulled_in_springs,
-        } | extra
+        return (
+            {
+                "normal_force": self.normal_force,
+                "mu": self.mu,
+                "friction": self.friction,
+                "adhesive_friction": self.adhesive_friction,
+                "mechanical_friction": self.mechanical_friction,
+                "separation": self.separation,
+                "approach": self.approach,
+                "mechanical_springs": int(self.mechanical.sum()),
+                "adhesive_springs": int(self.adhesive.sum()),
+                "bonded_springs": int(self.bonded.sum()),
+                "mechanical_force": self.mechanical_force,
+                "adhesive_force": self.adhesive_force,
+                "residual": self.residual,
+                "max_strain": self.max_strain,
+                "negative_energy_springs": self.negative_energy_springs,
+                "pulled_in_springs": self.pulled_in_springs,
+            }
+            | extra
+            | self.shares
+        )
+
+    @property
+    def shares(self) -> dict[str, float]:
+        """Shares of the compressive load and of the contact on filled points and specks.
+
+        :func:`roughcontact.contact.trust.contact_shares` of the spring stresses (compression); a
+        Winkler layer has no window edge (its springs do not act on one another).
+        """
+        return contact_shares(self.stress, self.topography, "periodic")
+
+    def range_warnings(self) -> list[str]:
+        """Say when the load rests on filled points or specks (:func:`~.contact.trust.share_warnings`)."""
+        return share_warnings(self.shares, self.topography, "periodic")
 
     def to_xarray(self):
         """Return an ``xarray.Dataset``: spring fields on (x, y), scalars and parameters as attributes."""

@@ -392,7 +392,7 @@ def run(parameters: FrictionParameters, inputs) -> CaseOutput:
     scalars["load_capacity"] = model.load_capacity()
     if parameters.crossover:
         scalars["crossover_load"] = model.crossover_load()
-    return CaseOutput(scalars, _cropped(result))
+    return CaseOutput(scalars, _cropped(result), tuple(result.range_warnings()))
 
 
 # --- figures and tables (from stored records) ------------------------------------------------------
