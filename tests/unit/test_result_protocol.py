@@ -221,7 +221,18 @@ def test_dimensional_scalars_are_in_units(named_result):
     """A float scalar that is not a count, ratio, exponent or label has its unit in UNITS."""
     name, result = named_result
     units = units_of(result)
-    dimensionless = ("mu", "fraction", "ratio", "coefficient", "factor", "index", "exponent", "_n", "over_")
+    dimensionless = (
+        "mu",
+        "fraction",
+        "share",
+        "ratio",
+        "coefficient",
+        "factor",
+        "index",
+        "exponent",
+        "_n",
+        "over_",
+    )
     dimensionless += ("m2", "bandwidth", "residual", "iterations", "epsilon", "beta", "poissons_ratio")
     dimensionless += (
         "range_",
