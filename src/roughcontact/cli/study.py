@@ -40,11 +40,21 @@ def _validate(args: argparse.Namespace) -> int:
     return 0
 
 
+def _print_warnings(folder: Path) -> None:
+    """Say the model-range and trust warnings of the study's cases on stderr (the report lists them too)."""
+    from ..study.outputs import read_study, warning_lines
+
+    for analysis in read_study(folder)[1]:
+        for line in warning_lines(analysis):
+            print(f"roughcontact: warning: {analysis.name}: {line}", file=sys.stderr)
+
+
 def finish(folder: Path, summary) -> int:
     """Write figures and the report after a run and print what happened; return the exit status."""
     from ..study.report import write_report
 
     report = write_report(folder)
+    _print_warnings(folder)
     if summary.recomputed_note:
         print(f"roughcontact: note: {summary.recomputed_note}", file=sys.stderr)
     print(
