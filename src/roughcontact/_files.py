@@ -90,6 +90,39 @@ def not_a_folder(path: Path) -> str | None:
     return None
 
 
+def read_text(path: Path, *, holds: str, utf8_only: bool = False) -> str:
+    """Return a text file's content; refuse a binary file (an instrument file given as a table, say).
+
+    UTF-8 (with or without a byte-order mark); else Latin-1, which an old export may use for its
+    ``µ``, unless ``utf8_only`` (TOML is UTF-8 by definition).
+
+    Parameters
+    ----------
+    path : Path
+    holds : str
+        What the file should hold, for the fix (``"a study file (TOML)"``).
+    utf8_only : bool
+
+    Raises
+    ------
+    UnsupportedFormatError
+        A file with NUL bytes or, with ``utf8_only``, one that is not UTF-8; the field is the path.
+    """
+    content = Path(path).read_bytes()
+    if b"\x00" in content:
+        raise UnsupportedFormatError(str(path), "is a binary file, not text.", f"give {holds}.")
+    try:
+        return content.decode("utf-8-sig")
+    except UnicodeDecodeError as error:
+        if utf8_only:
+            raise UnsupportedFormatError(
+                str(path),
+                f"is not UTF-8 text (byte {error.start} is {content[error.start]:#04x}).",
+                f"give {holds}.",
+            ) from None
+        return content.decode("latin-1")
+
+
 def first_line(error: BaseException, limit: int = 160) -> str:
     """Return the first line of an exception's text (its type name if it has none), cut to ``limit``."""
     text = str(error).strip().splitlines()

@@ -17,6 +17,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from ._files import read_text
 from .errors import InputError
 
 HEADER_UNIT = re.compile(r"^\s*(.*?)\s*(?:[\[\(]\s*([^\]\)]*?)\s*[\]\)])?\s*$")
@@ -93,7 +94,7 @@ def read_text_table(path: str | Path, *, expected: str, delimiter: str | None = 
         raise InputError("path", f"{path} does not exist.", f"give the path of a CSV with {expected}.")
     lines = [
         line.strip()
-        for line in path.read_text(encoding="utf-8-sig").splitlines()
+        for line in read_text(path, holds=f"a CSV with {expected}").splitlines()
         if line.strip() and not line.lstrip().startswith("#")
     ]
     if not lines:

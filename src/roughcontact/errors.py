@@ -82,6 +82,11 @@ class UndefinedPointsError(InputError):
         super().__init__(field, problem, fix)
 
 
+ROUND_OFF_FLOOR = 1e-5
+"""Highest stalled residual taken for a floating-point floor (measured floors: 1e-13 to 1e-6, rising
+with the grid); a solve that stalls above it failed, and no looser tolerance is suggested."""
+
+
 class ConvergenceError(RuntimeError):
     """An iterative solver stopped before reaching its tolerance.
 
@@ -119,6 +124,14 @@ class ConvergenceError(RuntimeError):
         self.stalled_at = stalled_at
         if stalled_at is None:
             fix = "raise max_iterations, loosen tolerance knowingly, or refine the grid."
+        elif self.suggested_tolerance is None:
+            fix = (
+                f"the residual stalled at {stalled_at:.3g}, far above round-off: the iteration found no "
+                "answer, and a looser tolerance would accept a wrong one. This happens on surfaces "
+                "whose heights at the pixel scale are noise (a profilometer trace at its sampling "
+                "step): change the load, or resample the scan to a coarser pixel first (in Python: "
+                "roughcontact.topography.process.resample)."
+            )
         else:
             fix = (
                 f"the residual stalled at {stalled_at:.3g} (the floor this problem reaches in floating "
@@ -131,8 +144,12 @@ class ConvergenceError(RuntimeError):
 
     @property
     def suggested_tolerance(self) -> float | None:
-        """A tolerance a stalled solve meets: twice ``stalled_at``, rounded up to one digit (else None)."""
-        if self.stalled_at is None or not self.stalled_at > 0:
+        """A tolerance a stalled solve meets: twice ``stalled_at``, rounded up to one digit.
+
+        None when the solve did not stall, or stalled above :data:`ROUND_OFF_FLOOR` (no floating-point
+        floor lies there: the iteration failed, and no tolerance should be offered that accepts it).
+        """
+        if self.stalled_at is None or not 0 < self.stalled_at <= ROUND_OFF_FLOOR:
             return None
         exponent = math.floor(math.log10(2 * self.stalled_at))
         return float(f"{math.ceil(2 * self.stalled_at / 10**exponent)}e{exponent}")

@@ -697,3 +697,24 @@ def test_every_summary_names_the_channel_used(shared_topographies, tmp_path, cap
     provenance = json.loads((tmp_path / "out" / "provenance.json").read_text())
     assert provenance["topographies"]["surface"]["channel"]["index"] == 0
     assert "channel &#x27;Height&#x27; (index 0" in (tmp_path / "out" / "report.html").read_text()
+
+
+@pytest.mark.parametrize(
+    ("argv", "field", "words"),
+    [
+        (["--max-filled", "2", "--fill-undefined"], "--max-filled", "a fraction from 0 to 1"),
+        (["--approach", "1 m"], "--approach", "its own size or more"),
+        (["--pressure", "20 MPa", "--hardness", "-1 GPa"], "--hardness", "must be positive"),
+        (["--pressure", "20 MPa", "--stress-depths", "-5 nm"], "--stress-depths", "at least 0"),
+    ],
+)
+def test_more_values_no_model_can_take(shared_topographies, capsys, argv, field, words):
+    status, out, err = _run(capsys, ["contact", shared_topographies / "top-1.top", *POLY, *argv])
+    assert status == 2 and field in err and words in err and "Traceback" not in out + err
+
+
+def test_a_binary_file_given_as_a_study_or_a_table(shared_topographies, capsys):
+    top = shared_topographies / "top-1.top"
+    for argv in (["validate", top], ["loop-analysis", top, "--normal-force", "25 mN"]):
+        status, out, err = _run(capsys, argv)
+        assert status == 2 and "binary file" in err and "internal error" not in err

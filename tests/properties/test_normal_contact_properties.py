@@ -95,3 +95,14 @@ def test_a_tolerance_below_the_round_off_floor_stops_early_and_names_the_floor()
     assert 2 * floor <= suggested <= 5 * floor and f"ask for {suggested:g}" in str(error.value)
     result = solve_normal(surface, 1e9, tolerance=suggested, **load)
     assert result.residual <= suggested
+
+
+def test_a_stall_far_above_round_off_offers_no_looser_tolerance():
+    """A solve stalled at a residual of order 1 failed: no tolerance is suggested that would accept it."""
+    from roughcontact.errors import ConvergenceError
+
+    failed = ConvergenceError("solve_normal", 0.697, 223, 1e-8, stalled_at=0.416)
+    assert failed.suggested_tolerance is None
+    assert "far above round-off" in str(failed) and "ask for" not in str(failed)
+    floor = ConvergenceError("solve_normal", 2e-7, 80, 1e-8, stalled_at=1.6e-7)
+    assert floor.suggested_tolerance == 4e-7 and "ask for 4e-07" in str(floor)

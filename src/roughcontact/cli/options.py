@@ -37,6 +37,17 @@ def size_argument(text: str) -> tuple[str, ...]:
     return tuple(parts)
 
 
+def fraction_argument(text: str) -> float:
+    """Return a fraction from 0 to 1 (``--max-filled``)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number. Fix: a fraction, e.g. 0.3.") from None
+    if not 0.0 <= value <= 1.0:
+        raise argparse.ArgumentTypeError(f"{value:g} is not a fraction from 0 to 1. Fix: e.g. 0.3 for 30 %.")
+    return value
+
+
 def channel_argument(text: str) -> int | str:
     """Return a channel by index (digits) or by name."""
     return int(text) if text.isdigit() else text
@@ -80,7 +91,7 @@ def file_options(*, required: bool = True, periodic: bool = True) -> argparse.Ar
     )
     group.add_argument(
         "--max-filled",
-        type=float,
+        type=fraction_argument,
         metavar="FRACTION",
         help=f"largest fraction of the points --fill-undefined may fill (default {MAX_FILLED:g})",
     )
@@ -204,9 +215,9 @@ def read_file(args: argparse.Namespace):
     except InputError as error:
         if error.field in ("crop", "x", "y"):
             raise InputError("--crop", error.problem, error.fix) from None
-        if "cli" not in error.fixes:
-            raise
-        raise InputError(_flag(error.field), error.problem, error.fix_in("cli")) from None
+        if "cli" in error.fixes or error.field in ("size", "height_unit", "channel"):
+            raise InputError(_flag(error.field), error.problem, error.fix_in("cli")) from None
+        raise
     undefined = None
     if not isinstance(scan, Scan):
         topography = scan

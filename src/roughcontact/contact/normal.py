@@ -221,8 +221,6 @@ def solve_normal(
     if int(np.prod(shape)) != topography.heights.size or shape[0] != topography.shape[0]:
         raise InputError("compliance", f"operator grid {shape} does not match {topography.shape}.", None)
     no_string(hardness, "hardness")
-    if hardness is not None and not (np.isfinite(hardness) and hardness > 0):
-        raise InputError("hardness", f"must be positive, got {hardness!r}.", "give it in Pa, or None.")
     heights = topography.heights.reshape(shape)
     separation = heights.max() - heights
     measure = topography.pixel_area if topography.dim == 2 else topography.spacing[0]
@@ -277,8 +275,10 @@ def check_carried(
     """Refuse a load the scan cannot carry, before solving: a nominal pressure of E* or more, or the hardness.
 
     An elastic half-space under a mean pressure of order E* is strained by order one: beyond
-    small-strain elasticity whatever the roughness (:data:`CARRIED_PRESSURE`). An
-    elastic-perfectly-plastic surface carries at most its hardness over the whole nominal area.
+    small-strain elasticity whatever the roughness (:data:`CARRIED_PRESSURE`); so is an
+    ``approach`` of the scan's size or more (the mean pressure of a window pressed by delta is of
+    order E* delta / L). An elastic-perfectly-plastic surface carries at most its hardness over the
+    whole nominal area.
     Such a load is usually a wrong unit or a wrong scan size, so both are shown in engineering
     units. ``size`` is the scan's physical size [m] (one value: a profile, the load per length).
 
@@ -287,25 +287,42 @@ def check_carried(
     InputError
         Naming the load (``force`` or ``mean_pressure``).
     """
+    if hardness is not None and not (np.isfinite(hardness) and hardness > 0):
+        raise InputError(
+            "hardness", f"must be positive, got {format_si(hardness, 'Pa')}.", "e.g. '0.46 GPa'."
+        )
     line = len(size) == 1
+    extent = " x ".join(format_si(side, "m") for side in size)
+    if name == "approach":
+        if value >= CARRIED_PRESSURE * min(size):
+            raise InputError(
+                name,
+                f"an approach of {format_si(value, 'm')} on a scan of {extent} compresses it by its own "
+                "size or more: strains of order one, beyond the small-strain elastic model.",
+                "check the approach's unit (a few times the scan's rms height reaches full contact).",
+            )
+        return
     unit = {"force": "N/m" if line else "N", "mean_pressure": "Pa"}[name]
-    area = " x ".join(format_si(side, "m") for side in size)
-    nominal = f"{format_si(pressure, 'Pa')} over the nominal {'length' if line else 'area'} {area}"
-    asked = f"{name} {format_si(value, unit)}" + (
-        f" is a mean pressure of {nominal}" if name == "force" else ""
+    asked = (
+        f"a force of {format_si(value, unit)} over the nominal {'length' if line else 'area'} {extent} "
+        f"is a mean pressure of {format_si(pressure, 'Pa')}"
+        if name == "force"
+        else f"a mean pressure of {format_si(value, unit)}"
     )
+    joined = " is" if name == "mean_pressure" else ","
     if hardness is not None and pressure >= hardness:
         raise InputError(
             name,
-            f"{asked}: at or above the hardness {format_si(hardness, 'Pa')}, which an "
-            "elastic-perfectly-plastic surface carries at most, over its whole area.",
+            f"{asked}{joined} at or above the hardness {format_si(hardness, 'Pa')}, the most an "
+            "elastic-perfectly-plastic surface carries (over its whole area).",
             "check the load's unit and the scan's size; lower the load or use a larger scan.",
         )
     if hardness is None and pressure >= CARRIED_PRESSURE * modulus:
         raise InputError(
             name,
-            f"{asked}: {pressure / modulus:.3g} times the contact modulus E* = {format_si(modulus, 'Pa')}, "
-            "strains of order one, beyond the small-strain elastic model (whatever the roughness).",
+            f"{asked}{joined} {pressure / modulus:.3g} times the contact modulus E* = "
+            f"{format_si(modulus, 'Pa')}: strains of order one, beyond the small-strain elastic model "
+            "(whatever the roughness).",
             "check the load's unit and the scan's size (the load of a scan is its nominal pressure "
             "times its area); give a hardness for a plastic surface.",
         )

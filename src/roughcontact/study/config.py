@@ -57,6 +57,7 @@ from typing import Any
 
 from pydantic import BaseModel
 
+from .._files import read_text
 from ..errors import InputError, MissingMetadataError, UndefinedPointsError
 from ..materials import MATERIALS, Material, get_material
 from ..topography import Topography
@@ -738,7 +739,10 @@ def load_study(path: str | Path) -> Study:
         raise StudyError(
             str(path), [Problem("STUDY", f"study file {str(path)!r} not found.", "check the path.")]
         )
-    text = path.read_text(encoding="utf-8")
+    try:
+        text = read_text(path, holds="a study file (TOML text)", utf8_only=True)
+    except InputError as error:
+        raise StudyError(str(path), [Problem("STUDY", error.problem, error.fix)]) from None
     try:
         document = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:

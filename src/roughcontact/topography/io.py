@@ -957,8 +957,8 @@ def _user_size(size: SizeLike, dim: int) -> tuple[float, ...]:
     if len(metres) != dim:
         raise InputError(
             "size",
-            f"got {len(metres)} values for a {dim}D topography.",
-            f"give one value or {dim} values, e.g. '5 um'.",
+            f"got {len(metres)} values for a {'profile (a line scan)' if dim == 1 else 'map'}.",
+            "give its length, e.g. '5 um'." if dim == 1 else "give one value or two, e.g. '5 um x 10 um'.",
         )
     return metres
 

@@ -13,7 +13,7 @@ area against load, one line per sample), ``load_approach`` (load against approac
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 import numpy as np
 from pydantic import Field, model_validator
@@ -53,8 +53,8 @@ class NormalParameters(CaseParameters):
     """Rigid base of a film without a substrate."""
     tolerance: float = Field(default=1e-8, gt=0.0, lt=1.0)
     """Scale-free residual of the solver."""
-    stress_depths: list[Length] = Field(default_factory=list)
-    """Depths of von Mises maps below the surface."""
+    stress_depths: list[Annotated[Length, Field(ge=0.0)]] = Field(default_factory=list)
+    """Depths of von Mises maps below the surface (0 or more)."""
 
     @model_validator(mode="after")
     def _one_target(self) -> NormalParameters:
@@ -85,10 +85,10 @@ def check_inputs(parameters: NormalParameters, known) -> None:
         return
     shape, size = grid
     check_line_boundary(len(shape), parameters.boundary)
-    if parameters.approach is not None or parameters.film_thickness is not None:
+    if parameters.film_thickness is not None:
         return
     nominal = size[0] * size[1] if len(shape) == 2 else size[0]
-    name = "force" if parameters.force is not None else "mean_pressure"
+    name = next(key for key in ("force", "mean_pressure", "approach") if getattr(parameters, key) is not None)
     value = getattr(parameters, name)
     pressure = value / nominal if name == "force" else value
     modulus = contact_modulus(known.material(parameters.material), known.material(parameters.counter_body))
