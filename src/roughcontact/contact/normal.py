@@ -21,7 +21,7 @@ import numpy as np
 from scipy import optimize
 
 from .._version import __version__
-from ..checks import no_string
+from ..checks import no_string, positive
 from ..elasticity.halfspace import ElasticLayer, SurfaceCompliance
 from ..errors import InputError
 from ..materials import Material, check_material, contact_modulus
@@ -125,10 +125,8 @@ def _one_target(**targets) -> tuple[str, float]:
             "e.g. mean_pressure=1e6 (Pa), force=1e-3 (N) or approach=1e-8 (m).",
         )
     name, value = next(iter(given.items()))
-    no_string(value, name)
-    if not np.isfinite(value) or value < 0:
-        raise InputError(name, f"must be finite and >= 0, got {value!r}.", "give a non-negative value in SI.")
-    return name, float(value)
+    unit = {"mean_pressure": "Pa", "force": "N", "approach": "m"}.get(name, "")
+    return name, positive(value, name, unit=unit, allow_zero=True)
 
 
 def check_heights(topography: Topography) -> None:

@@ -40,6 +40,7 @@ from typing import Any
 import numpy as np
 
 from .._files import existing_file, first_line
+from ..checks import positive
 from ..errors import (
     InputError,
     MissingMetadataError,
@@ -250,6 +251,10 @@ def read_topography(
     """
     if undefined not in _UNDEFINED_CHOICES:
         raise InputError("undefined", f"unknown choice {undefined!r}.", "choose 'refuse' or 'interpolate'.")
+    if positive(max_filled, "max_filled", example="0.3", allow_zero=True) > 1:
+        raise InputError(
+            "max_filled", f"{max_filled!r} is not a fraction from 0 to 1.", "e.g. max_filled=0.3."
+        )
     scan = read_scan(
         path,
         channel=channel,
@@ -928,6 +933,12 @@ def crop_metres(crop: CropLike, dim: int) -> tuple[tuple[float, float], ...]:
     ``crop`` is ``((x0, x1), (y0, y1))``, ``(x0, x1)`` for a profile, or the flat
     ``(x0, x1, y0, y1)`` the command line gives; each value metres or a string with a unit.
     """
+    if isinstance(crop, str):
+        raise InputError(
+            "crop",
+            f"got the string {crop!r}.",
+            "give the window as pairs, ((x0, x1), (y0, y1)), e.g. crop=(('0 um', '5 um'), ('0 um', '5 um')).",
+        )
     values = list(crop)
     if values and all(isinstance(v, tuple | list) for v in values):
         values = [v for pair in values for v in pair]
