@@ -101,9 +101,10 @@ def test_the_work_of_adhesion_comes_from_the_surface_energies_by_the_combining_r
 
 
 def test_a_rigid_flat_without_a_surface_energy_is_refused_naming_the_key(tmp_path):
-    study = _study(tmp_path, extra="")
-    with pytest.raises(Exception, match="counter_surface_energy"):
-        execute(make_task(study, study.cases[0], raise_errors=True))
+    # known before anything runs: validation refuses it (issue 32)
+    with pytest.raises(StudyError, match=r"\(cycle\)\.counter_surface_energy: no surface energy") as caught:
+        _study(tmp_path, extra="")
+    assert "counter_surface_energy = '72 mJ/m^2'" in str(caught.value)
 
 
 @pytest.mark.parametrize(

@@ -542,8 +542,15 @@ class CommandStudy:
             raise InputError(self.name, f"{len(found)} problems:\n  " + "\n  ".join(lines)) from None
 
     def option_of(self, path: tuple) -> str | None:
-        """Return the option that set the value at ``path`` (or at the nearest place above it)."""
-        for end in range(len(path), 0, -1):
+        """Return the option that set the value at ``path``, else its key's option, else one above it.
+
+        The key's option names a value that was not given (a missing ``--counter-surface-energy``).
+        """
+        if path in self.flags:
+            return self.flags[path]
+        if path and path[0] == "analysis" and str(path[-1]) in self.words:
+            return self.words[str(path[-1])]
+        for end in range(len(path) - 1, 0, -1):
             if path[:end] in self.flags:
                 return self.flags[path[:end]]
         return None

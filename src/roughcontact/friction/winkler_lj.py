@@ -56,7 +56,8 @@ from .readings import Readings
 from .viscoelastic import material_after_hold
 
 
-def _surface_energy(value: float | None, body: Material | None, field_name: str) -> float:
+def surface_energy_of(value: float | None, body: Material | None, field_name: str) -> float:
+    """Return the surface energy [J/m^2] given, else the body's; refuse none and a non-positive one."""
     if value is None and body is not None:
         value = body.surface_energy
     if value is None:
@@ -1183,8 +1184,8 @@ def winkler_lj_model(
             ) from error
     epsilon = positive(epsilon, "epsilon", example="2e-9", unit="m")
     layer_thickness = positive(layer_thickness, "layer_thickness", example="50e-9", unit="m")
-    gamma_1 = _surface_energy(surface_energy, material, "surface_energy")
-    gamma_2 = _surface_energy(counter_surface_energy, counter_body, "counter_surface_energy")
+    gamma_1 = surface_energy_of(surface_energy, material, "surface_energy")
+    gamma_2 = surface_energy_of(counter_surface_energy, counter_body, "counter_surface_energy")
     if relaxation is not None:
         material = material_after_hold(material, relaxation, hold_time)
     nu_1 = material.poissons_ratio

@@ -276,6 +276,29 @@ class KnownInputs:
         """Return the material called ``name`` (None for None: rigid)."""
         return None if name is None else self.materials.get(name)
 
+    def check_pair(self, first: str, second: str | None, resample: bool) -> None:
+        """Refuse two topographies merged without ``resample`` whose grids differ (known ones only).
+
+        Raises
+        ------
+        InputError
+            Field ``counter_topography``, with the fix ``resample = true``.
+        """
+        from ..topography.process import check_same_grid
+
+        grids = (self.grid(first), None if second is None else self.grid(second))
+        if resample or None in grids:
+            return
+        try:
+            check_same_grid(*grids)
+        except InputError as error:
+            raise InputError(
+                "counter_topography",
+                error.problem,
+                "add resample = true to interpolate both onto a common grid, or bring the scans to one grid.",
+                fixes={"cli": "pass --resample to interpolate both onto a common grid."},
+            ) from None
+
     def grid(self, name: str) -> tuple[tuple[int, ...], tuple[float, ...]] | None:
         """Return (shape, size [m]) of topography ``name``; None where it is known only once built."""
         from ..topography.generate import grid_of

@@ -19,6 +19,7 @@ from scipy import ndimage, optimize, sparse
 from scipy.sparse import linalg as sparse_linalg
 
 from ..errors import InputError
+from ..units import format_si
 from .surface import Topography
 
 
@@ -579,6 +580,32 @@ def _check_same_dim(a: Topography, b: Topography) -> None:
         raise InputError("b", f"a is {a.dim}D and b is {b.dim}D.", "combine two maps or two profiles.")
 
 
+def check_same_grid(a: tuple, b: tuple) -> None:
+    """Refuse two grids, each ``(shape, size [m])``, that :func:`combine` cannot merge without resampling.
+
+    Raises
+    ------
+    InputError
+        Field ``b``: another number of axes, points or physical size (relative 1e-9), both shown.
+    """
+    (shape_a, size_a), (shape_b, size_b) = a, b
+    if len(shape_a) != len(shape_b):
+        raise InputError(
+            "b", f"a is {len(shape_a)}D and b is {len(shape_b)}D.", "combine two maps or two profiles."
+        )
+    same_size = all(math.isclose(p, q, rel_tol=1e-9) for p, q in zip(size_a, size_b, strict=True))
+    if tuple(shape_a) != tuple(shape_b) or not same_size:
+        which = "shape" if tuple(shape_a) != tuple(shape_b) else "size"
+        shown = [" x ".join(format_si(side, "m") for side in size) for size in (size_a, size_b)]
+        grids = [" x ".join(map(str, shape)) for shape in (shape_a, shape_b)]
+        raise InputError(
+            "b",
+            f"grid {which} differs: a is {grids[0]} points over {shown[0]}, b is {grids[1]} points over "
+            f"{shown[1]}.",
+            "pass resample=True to interpolate both onto a common grid.",
+        )
+
+
 def combine(a: Topography, b: Topography, *, resample: bool = False) -> Topography:
     r"""Composite topography of two rough surfaces touching face to face.
 
@@ -627,14 +654,7 @@ def combine(a: Topography, b: Topography, *, resample: bool = False) -> Topograp
     _check_same_dim(a, b)
     same_size = all(math.isclose(p, q, rel_tol=1e-9) for p, q in zip(a.size, b.size, strict=True))
     if not resample:
-        if a.shape != b.shape or not same_size:
-            which = "shape" if a.shape != b.shape else "size"
-            raise InputError(
-                "b",
-                f"grid {which} differs: a is {a.shape} points over {a.size} m, "
-                f"b is {b.shape} points over {b.size} m.",
-                "pass resample=True to interpolate both onto a common grid.",
-            )
+        check_same_grid((a.shape, a.size), (b.shape, b.size))
         heights_a, heights_b, size, periodic = a.heights, b.heights, a.size, a.periodic and b.periodic
         masks = [_masks(a), _masks(b)]
     else:

@@ -232,6 +232,17 @@ def _beside_winkler(parameters: AdhesionParameters, inputs) -> tuple[AdhesiveRes
     return both.bem, scalars, curves
 
 
+def check_inputs(parameters: AdhesionParameters, known) -> None:
+    """Refuse at validation what the run would: no work of adhesion, unmerged grids, a free profile."""
+    from ...contact.normal import check_line_boundary
+
+    work_of_adhesion(parameters, known.material(parameters.material), known.material(parameters.counter_body))
+    known.check_pair(parameters.topography, parameters.counter_topography, parameters.resample)
+    grid = known.grid(parameters.topography)
+    if grid is not None:
+        check_line_boundary(len(grid[0]), parameters.boundary)
+
+
 def run(parameters: AdhesionParameters, inputs) -> CaseOutput:
     """Solve one cycle; scalars as :meth:`AdhesiveResult.scalars` (and the Winkler springs' beside)."""
     from ...contact.adhesive import solve_adhesive
@@ -563,6 +574,7 @@ KIND = Kind(
     "load-unload cycle, pull-off and jumps; paper 000's Winkler springs beside",
     parameters=AdhesionParameters,
     run=run,
+    check_inputs=check_inputs,
     units=AdhesiveResult.UNITS
     | {
         "winkler_pull_off_force": "N",

@@ -311,6 +311,36 @@ def readings_of(parameters: FrictionParameters):
     return Readings.from_strings(items, preset=parameters.reading)
 
 
+def _check_relaxed(relaxed: float, material) -> None:
+    if relaxed > material.youngs_modulus:
+        raise InputError(
+            "relaxed_modulus",
+            f"{relaxed:.4g} Pa is above the Young's modulus {material.youngs_modulus:.4g} Pa "
+            f"of {material.name!r}.",
+            "a relaxed (long-time) modulus is at most the instantaneous one.",
+        )
+
+
+def check_inputs(parameters: FrictionParameters, known) -> None:
+    """Refuse at validation what the model would: a profile, grids that do not merge, no surface energy.
+
+    See :func:`roughcontact.friction.winkler_lj_model`.
+    """
+    from ...friction.winkler_lj import surface_energy_of
+
+    material, counter_body = known.material(parameters.material), known.material(parameters.counter_body)
+    if parameters.relaxed_modulus is not None:
+        _check_relaxed(parameters.relaxed_modulus, material)
+    surface_energy_of(parameters.surface_energy, material, "surface_energy")
+    surface_energy_of(parameters.counter_surface_energy, counter_body, "counter_surface_energy")
+    grid = known.grid(parameters.topography)
+    if grid is not None and len(grid[0]) != 2:
+        raise InputError(
+            "topography", "paper 000's Winkler model takes a map, not a profile.", "give a 2D scan."
+        )
+    known.check_pair(parameters.topography, parameters.counter_topography, parameters.resample)
+
+
 def build_model(parameters: FrictionParameters, inputs):
     """Return the :class:`~roughcontact.friction.WinklerLJModel` of a case (topographies merged).
 
@@ -324,16 +354,9 @@ def build_model(parameters: FrictionParameters, inputs):
     material = inputs.material(parameters.material)
     options: dict[str, Any] = {}
     if parameters.relaxed_modulus is not None:
-        relaxed = parameters.relaxed_modulus
-        if relaxed > material.youngs_modulus:
-            raise InputError(
-                "relaxed_modulus",
-                f"{relaxed:.4g} Pa is above the Young's modulus {material.youngs_modulus:.4g} Pa "
-                f"of {material.name!r}.",
-                "a relaxed (long-time) modulus is at most the instantaneous one.",
-            )
+        _check_relaxed(parameters.relaxed_modulus, material)
         options["relaxation"] = standard_linear_solid(
-            material.youngs_modulus, relaxed, parameters.relaxation_time
+            material.youngs_modulus, parameters.relaxed_modulus, parameters.relaxation_time
         )
         options["hold_time"] = parameters.hold_time
     counter_topography = parameters.counter_topography
@@ -660,6 +683,7 @@ KIND = Kind(
     summary="Winkler-layer Lennard-Jones friction at one load: mu, adhesive and mechanical parts (paper 000)",
     parameters=FrictionParameters,
     run=run,
+    check_inputs=check_inputs,
     units=WinklerLJResult.UNITS
     | {
         "bem_force": "N",
