@@ -211,3 +211,18 @@ def test_channels_are_classified_by_name_unit_and_kind(name, unit, length, kind,
     classified = classify_channel(name, unit, length, kind)
     assert classified.is_height is height
     assert words in classified.reason
+
+
+def test_an_adhesive_line_contact_speaks_per_length():
+    from roughcontact.contact import solve_adhesive
+    from roughcontact.contact.adhesive_result import LINE_NAMES
+    from roughcontact.contact.interaction import Exponential
+
+    profile = Topography(self_affine(128, 1e-6, hurst=0.8, rms_height=0.3e-9, seed=2).heights, 1e-6)
+    result = solve_adhesive(profile, POLY, Exponential(0.1, 1e-9), approach=np.linspace(-4e-9, 1e-9, 12))
+    scalars = result.scalars()
+    for area_name, line_name in LINE_NAMES.items():
+        assert area_name not in scalars and line_name in scalars
+        assert line_name in type(result).UNITS
+    assert type(result).UNITS["pull_off_force_per_length"] == "N/m"
+    assert result.to_xarray()["force"].attrs["units"] == "N/m"

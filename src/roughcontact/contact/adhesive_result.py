@@ -24,6 +24,17 @@ wavy surface, tests/validation/test_adhesive_wavy.py)."""
 MAUGIS_DUGDALE_ERROR = 1.2
 """First-order coefficient of the Maugis-Dugdale pull-off's error in pixel / zone."""
 
+LINE_NAMES = {
+    "pull_off_force": "pull_off_force_per_length",
+    "max_force": "max_force_per_length",
+    "dissipated_energy": "dissipated_energy_per_length",
+    "max_contact_area": "max_contact_length",
+    "contact_area_at_pull_off": "contact_length_at_pull_off",
+    "interaction_area_at_pull_off": "interaction_zone_length_at_pull_off",
+}
+"""The scalars of a line contact (a profile in plane strain), named for what they are: per length
+[N/m, J/m] and lengths [m] in place of forces [N], an energy [J] and areas [m^2]."""
+
 MAP_STATES = ("peak", "pull_off", "end")
 """The states whose pressure and gap maps are kept: the largest approach, the pull-off, the last."""
 
@@ -106,6 +117,12 @@ class AdhesiveResult:
         "interaction_length": "m",
         "peak_tension": "Pa",
         "cohesive_zone_length": "m",
+        "pull_off_force_per_length": "N/m",
+        "max_force_per_length": "N/m",
+        "dissipated_energy_per_length": "J/m",
+        "max_contact_length": "m",
+        "contact_length_at_pull_off": "m",
+        "interaction_zone_length_at_pull_off": "m",
     }
 
     @classmethod
@@ -279,12 +296,12 @@ class AdhesiveResult:
         return any(bool(np.any(edge <= threshold)) for edge in edges)
 
     def scalars(self) -> dict[str, Any]:
-        """Return the headline numbers (SI), see ``UNITS``."""
+        """Return the headline numbers (SI), see ``UNITS``; a line contact's named per :data:`LINE_NAMES`."""
         law = self.interaction
         pull_off_approach, pull_off = self._pull_off()
         i = self.map_steps["pull_off"]
         spacing = self._spacing
-        return {
+        scalars = {
             "law": law.name,
             "work_of_adhesion": law.work_of_adhesion,
             "interaction_length": law.length,
@@ -309,6 +326,9 @@ class AdhesiveResult:
             "residual": float(self.residual.max()),
             "converged": self.converged,
         } | self.shares
+        if self.topography.dim == 1:
+            scalars = {LINE_NAMES.get(name, name): value for name, value in scalars.items()}
+        return scalars
 
     @property
     def shares(self) -> dict[str, float]:
@@ -326,9 +346,17 @@ class AdhesiveResult:
         data = {
             "delta": ("step", self.delta, {"units": "m", "long_name": "imposed position of the flat"}),
             "approach": ("step", self.approach, {"units": "m"}),
-            "force": ("step", self.force, {"units": "N"}),
-            "contact_area": ("step", self.contact_area, {"units": "m^2"}),
-            "interaction_area": ("step", self.interaction_area, {"units": "m^2"}),
+            "force": ("step", self.force, {"units": self._force_unit}),
+            "contact_area": (
+                "step",
+                self.contact_area,
+                {"units": "m^2" if self.topography.dim == 2 else "m"},
+            ),
+            "interaction_area": (
+                "step",
+                self.interaction_area,
+                {"units": "m^2" if self.topography.dim == 2 else "m"},
+            ),
             "requested": ("step", self.requested, {"units": "1"}),
             "jump": ("step", self.jump, {"units": "1"}),
             "iterations": ("step", self.iterations, {"units": "1"}),

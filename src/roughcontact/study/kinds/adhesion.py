@@ -44,7 +44,7 @@ import numpy as np
 from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
-from ...contact.adhesive_result import AdhesiveResult
+from ...contact.adhesive_result import LINE_NAMES, AdhesiveResult
 from ...errors import InputError
 from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Length, MaterialName, SurfaceEnergy, TopographyName
@@ -326,6 +326,16 @@ def _scale(values, unit: str) -> tuple[float, str]:
     return prefixed_scale(float(finite.max()) if finite.size else 1.0, unit)
 
 
+def _scalar(scalars, name: str) -> float:
+    """Return a case's scalar ``name`` (a line contact's under its name in ``adhesive_result.LINE_NAMES``)."""
+    return scalars[name] if name in scalars else scalars[LINE_NAMES[name]]
+
+
+def _per_length(records) -> bool:
+    """Whether the cases are line contacts (forces per length, lengths for areas)."""
+    return any(LINE_NAMES["pull_off_force"] in r.scalars for r in records)
+
+
 def _draw_cycle(ax, data, record, colour, scales) -> None:
     """One case's cycle: solved steps joined, a jump dotted, the pull-off marked; Winkler dashed."""
     (a_scale, _), (f_scale, _) = scales
@@ -339,12 +349,14 @@ def _draw_cycle(ax, data, record, colour, scales) -> None:
             ax.plot(approach[end - 1 : end + 1], force[end - 1 : end + 1], ":", color=colour, lw=1.0)
         start = end
     scalars = record.scalars
+    pull_off = _scalar(scalars, "pull_off_force")
+    force_unit = "N/m" if _per_length([record]) else "N"
     ax.plot(
         scalars["pull_off_approach"] / a_scale,
-        -scalars["pull_off_force"] / f_scale,
+        -pull_off / f_scale,
         "v",
         color=colour,
-        label=f"{record.label}: pull-off {_with_unit(scalars['pull_off_force'])}",
+        label=f"{record.label}: pull-off {_with_unit(pull_off, _scale([pull_off], force_unit))}",
     )
     if "winkler_force" in data:
         ax.plot(approach, np.asarray(data["winkler_force"]) / f_scale, "--", color=colour, lw=1.2)
@@ -412,7 +424,7 @@ def _force_approach(records, context):
         ax.set_xlabel(f"approach ({scales[0][1]})")
         ax.set_ylabel(f"normal force ({scales[1][1]})")
     whole.set_xlim(*(limit / scales[0][0] for limit in _approach_limits(datasets)))
-    tension = max(float(r.scalars["pull_off_force"]) for r in chosen) or 1.0
+    tension = max(float(_scalar(r.scalars, "pull_off_force")) for r in chosen) or 1.0
     zoom.set_ylim(-ZOOM * tension / scales[1][0], ZOOM * tension / scales[1][0])
     left, _ = _approach_limits(datasets)
     right = max(
@@ -483,14 +495,17 @@ def _maps(records, context):
                 axes[row][column], data[name], label, unit, cmap=cmap, scale=scale, colorbar=False
             )
         shared_colorbar(image, axes[row], label, unit, scale)
-    force_unit = _scale([r.scalars["pull_off_force"] for r in chosen], "N")
-    area_unit = _scale([r.scalars["interaction_area_at_pull_off"] for r in chosen], "m^2")
+    line = _per_length(chosen)
+    force_unit = _scale([_scalar(r.scalars, "pull_off_force") for r in chosen], "N/m" if line else "N")
+    area_unit = _scale(
+        [_scalar(r.scalars, "interaction_area_at_pull_off") for r in chosen], "m" if line else "m^2"
+    )
     for record, ax in zip(chosen, axes[0], strict=True):
         s = record.scalars
         ax.set_title(
-            f"{record.label}\npull-off {_with_unit(s['pull_off_force'], force_unit)}\ncontact "
-            f"{_with_unit(s['contact_area_at_pull_off'], area_unit)}, interacting "
-            f"{_with_unit(s['interaction_area_at_pull_off'], area_unit)}",
+            f"{record.label}\npull-off {_with_unit(_scalar(s, 'pull_off_force'), force_unit)}\ncontact "
+            f"{_with_unit(_scalar(s, 'contact_area_at_pull_off'), area_unit)}, interacting "
+            f"{_with_unit(_scalar(s, 'interaction_area_at_pull_off'), area_unit)}",
             fontsize="small",
         )
     return figure
@@ -520,11 +535,15 @@ def _pull_off(records, context):
         "Maugis-Dugdale, smooth sphere": ("maugis_dugdale_pull_off", "kx:"),
     }
     x_scale = _scale(x, unit)
-    y_scale = _scale([r.scalars["pull_off_force"] for r in order], "N")
+    y_scale = _scale(
+        [_scalar(r.scalars, "pull_off_force") for r in order], "N/m" if _per_length(order) else "N"
+    )
     figure, axes = new_figure(1, 1)
     ax = axes[0][0]
     for label, (key, style) in series.items():
-        y = np.array([float(r.scalars.get(key, np.nan)) for r in order])
+        y = np.array(
+            [float(r.scalars.get(key, r.scalars.get(LINE_NAMES.get(key, ""), np.nan))) for r in order]
+        )
         ax.plot(x / x_scale[0], y / y_scale[0], style, label=label)
     ax.set_xlabel(f"{words} ({x_scale[1]})")
     ax.set_ylabel(f"pull-off force ({y_scale[1]})")
@@ -538,12 +557,16 @@ _TABLE = {
     "work_of_adhesion": ("work_of_adhesion", "J/m^2"),
     "interaction_length": ("interaction_range", "m"),
     "pull_off_force": ("pull_off_force", "N"),
+    "pull_off_force_per_length": ("pull_off_force_per_length", "N/m"),
     "pull_off_approach": ("pull_off_approach", "m"),
     "jump_in_approach": ("jump_in_approach", "m"),
     "jump_out_approach": ("jump_out_approach", "m"),
     "dissipated_energy": ("dissipated_energy", "J"),
+    "dissipated_energy_per_length": ("dissipated_energy_per_length", "J/m"),
     "max_force": ("max_force", "N"),
+    "max_force_per_length": ("max_force_per_length", "N/m"),
     "max_contact_area": ("max_contact_area", "m^2"),
+    "max_contact_length": ("max_contact_length", "m"),
     "cohesive_zone_pixels": ("cohesive_zone_pixels", None),
     "maugis_parameter": ("maugis_parameter", None),
     "maugis_dugdale_pull_off": ("maugis_dugdale_pull_off", "N"),
@@ -590,11 +613,14 @@ KIND = Kind(
     tables={"adhesion": _table},
     headline=(
         "pull_off_force",
+        "pull_off_force_per_length",
         "pull_off_approach",
         "jump_in_approach",
         "jump_out_approach",
         "dissipated_energy",
+        "dissipated_energy_per_length",
         "max_contact_area",
+        "max_contact_length",
         "cohesive_zone_pixels",
     ),
 )

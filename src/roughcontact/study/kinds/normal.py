@@ -268,6 +268,14 @@ KIND = Kind(
         "load_approach": _load_approach,
         "von_mises": _von_mises,
     },
-    headline=("force", "mean_pressure", "approach", "contact_fraction", "number_of_patches", "max_pressure"),
+    headline=(
+        "force",
+        "force_per_length",
+        "mean_pressure",
+        "approach",
+        "contact_fraction",
+        "number_of_patches",
+        "max_pressure",
+    ),
     renamed={"surface": "topography", "counter": "counter_body"},
 )
