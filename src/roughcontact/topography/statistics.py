@@ -808,7 +808,7 @@ SUMMARY = {
     "m2": ("", "spectral moment m2 (eq. 2)"),
     "m4": ("1/m^2", "spectral moment m4 (eq. 3)"),
     "bandwidth": ("", "bandwidth parameter alpha = m0 m4 / m2^2"),
-    "summit_density": ("1/m^2", "summit density eta (McCool; of a profile: of the isotropic surface it cuts)"),
+    "summit_density": ("1/m^2", "summit density eta (McCool; a profile: of the isotropic surface it cuts)"),
     "summit_radius": ("m", "summit radius R_asp (eq. 4)"),
     "summit_height_std": ("m", "summit height deviation sigma_s (eq. 5)"),
 }
