@@ -7,7 +7,7 @@ Case 1, paper 001's HDPE loop: the generated HDPE ball (``paper001.roughness("HD
 wafer (Dundurs beta = -0.003), F0 = 75 mN, Table 1's stroke and mu, ``--cycles`` cycles of
 ``--steps-per-stroke`` steps (paper: 4 x 2 x 25 = 200 steps; the frictional start adds 10 loading
 steps), through
-:func:`roughcontact.models.paper001.presliding` without step control (the same steps in every run):
+:func:`roughcontact.papers.paper001.presliding` without step control (the same steps in every run):
 
 * ``goodman``: ``coupling=False`` (no normal-tangential coupling, frictionless normal loading);
 * ``coupled, frictionless start``: coupling on, F0 applied without friction (the previous default);
@@ -39,7 +39,7 @@ import numpy as np
 
 from roughcontact.contact import load_path, solve_frictional
 from roughcontact.materials import get_material
-from roughcontact.models import paper001
+from roughcontact.papers import paper001
 
 FORCE = 75e-3
 

@@ -46,7 +46,7 @@ from roughcontact.contact import solve_normal  # noqa: E402
 from roughcontact.contact.paths import stroke_path  # noqa: E402
 from roughcontact.contact.tangential import solve_tangential  # noqa: E402
 from roughcontact.materials import Material, contact_modulus  # noqa: E402
-from roughcontact.models import paper001  # noqa: E402
+from roughcontact.papers import paper001  # noqa: E402
 from roughcontact.topography import generate  # noqa: E402
 from tangential import FORCE, MU, Cattaneo  # noqa: E402
 

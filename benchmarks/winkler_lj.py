@@ -22,9 +22,9 @@ import platform
 import numpy as np
 
 from _timing import best_of
-from roughcontact.friction import winkler_lj_model
 from roughcontact.materials import get_material
-from roughcontact.models.paper000 import paper000_model_options, paper000_scans, paper000_tip
+from roughcontact.papers.paper000 import paper000_model_options, paper000_scans, paper000_tip
+from roughcontact.winkler_lj import winkler_lj_model
 
 
 def surfaces(n: int):

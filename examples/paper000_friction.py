@@ -4,7 +4,7 @@ A 2 um SiO2 sphere on LPCVD polysilicon (Ra 1.45, 1.49, 1.7 nm; seven synthetic 
 256^2 at 20 nm; 10 uN; polysilicon surface energy 50 mJ/m^2 assumed) compared with
 ``paper000_measured_mu.csv`` (SYNTHETIC values, see its header), then friction vs load and the
 adhesive-mechanical crossover for one Ra 1.7 nm scan. Pass scans of your own through
-:func:`roughcontact.models.paper000.paper000_simulation` (``scans=``, ``tip=``) or the CLI
+:func:`roughcontact.papers.paper000.paper000_simulation` (``scans=``, ``tip=``) or the CLI
 (``roughcontact friction-compare MEASURED.csv --sample NAME=a.di,b.di --tip tip.di``).
 
 Run: ``.venv/bin/python examples/paper000_friction.py [OUTPUT_FOLDER]`` (default paper000-output).
@@ -18,9 +18,9 @@ from pathlib import Path
 import numpy as np
 
 from roughcontact.experiment import compare, read_measured
-from roughcontact.friction import winkler_lj_model
+from roughcontact.winkler_lj import winkler_lj_model
 from roughcontact.materials import get_material
-from roughcontact.models.paper000 import (
+from roughcontact.papers.paper000 import (
     paper000_model_options,
     paper000_scans,
     paper000_simulation,

@@ -3,7 +3,7 @@
 Paper 000 does not tabulate its measured friction coefficients (only Figs. 8 and 9); it reports
 seven measurements per sample, two-sample t-test p values of 0.13, 0.12 and 0.79 and a Pearson r of
 0.96 between the means. This script builds seven values per sample from our default simulation
-(:func:`roughcontact.models.paper000.paper000_simulation`, seed 0, default readings): the simulated
+(:func:`roughcontact.papers.paper000.paper000_simulation`, seed 0, default readings): the simulated
 scatter around a mean shifted (upwards) until Welch's t-test against the simulated values gives the
 paper's p value. The result is labelled synthetic in its header and exists only to exercise the
 validation workflow. Rebuilt when the default adhesive range became the Dugdale zone (simulated mu
@@ -20,7 +20,7 @@ import numpy as np
 from scipy import optimize, stats
 
 from roughcontact.experiment import compare
-from roughcontact.models.paper000 import paper000_simulation
+from roughcontact.papers.paper000 import paper000_simulation
 
 PAPER_P_VALUES = {"Ra 1.45 nm": 0.13, "Ra 1.49 nm": 0.12, "Ra 1.7 nm": 0.79}
 OUTPUT = Path(__file__).with_name("paper000_measured_mu.csv")

@@ -24,7 +24,7 @@ import numpy as np
 
 from roughcontact.analytic.mindlin import masing_force
 from roughcontact.materials import Material
-from roughcontact.models.paper001 import paper001_mindlin
+from roughcontact.papers.paper001 import paper001_mindlin
 
 OUTPUT = Path(__file__).with_name("paper001_measured_loop.csv")
 

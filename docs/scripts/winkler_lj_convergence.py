@@ -13,9 +13,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from roughcontact.friction import Readings, winkler_lj_model
+from roughcontact.winkler_lj import Readings, winkler_lj_model
 from roughcontact.materials import get_material
-from roughcontact.models.paper000 import paper000_model_options, paper000_scans
+from roughcontact.papers.paper000 import paper000_model_options, paper000_scans
 from roughcontact.topography import Topography
 from roughcontact.topography.generate import sphere_with_roughness
 

@@ -3,7 +3,7 @@
 Case: paper 000's scenario, one synthetic polysilicon scan (Ra 1.7 nm, 256^2 at 20 nm, seed 200)
 merged with the synthetic 2 um SiO2 tip (a paraboloid of radius 1 um, Rq 0.3 nm), 10 uN, 50 nm
 layer, epsilon 2 nm, polysilicon surface energy 50 mJ/m^2 (assumed), 72 mJ/m^2 for the tip. Rows:
-the preset ``reading = "paper"`` (:data:`~roughcontact.friction.readings.PAPER`), each of its
+the preset ``reading = "paper"`` (:data:`~roughcontact.winkler_lj.readings.PAPER`), each of its
 choices put back to the default one at a time, the printed forms it does not take, the default;
 then the window study (central crops of 2, 2.56 and 5.12 um around the tip's apex).
 
@@ -15,8 +15,8 @@ from __future__ import annotations
 from dataclasses import replace
 
 from roughcontact.errors import InputError
-from roughcontact.friction import PAPER, Readings
-from roughcontact.models.paper000 import paper000_model, paper000_scans, paper000_tip
+from roughcontact.winkler_lj import PAPER, Readings
+from roughcontact.papers.paper000 import paper000_model, paper000_scans, paper000_tip
 from roughcontact.topography import Topography
 from roughcontact.units import format_si
 

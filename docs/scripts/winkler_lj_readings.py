@@ -14,9 +14,9 @@ from __future__ import annotations
 from dataclasses import replace
 
 from roughcontact.errors import InputError
-from roughcontact.friction import PRINTED, Readings
-from roughcontact.friction.readings import CHOICES
-from roughcontact.models.paper000 import paper000_model, paper000_scans, paper000_simulation, paper000_tip
+from roughcontact.winkler_lj import PRINTED, Readings
+from roughcontact.winkler_lj.readings import CHOICES
+from roughcontact.papers.paper000 import paper000_model, paper000_scans, paper000_simulation, paper000_tip
 from roughcontact.units import format_si
 
 

@@ -1,6 +1,7 @@
 """Names of release 0.1 that moved or were renamed: kept one release, with a DeprecationWarning.
 
-:func:`moved` serves a module's ``__getattr__`` (a name now defined elsewhere); :func:`renamed`
+:func:`moved` serves a module's ``__getattr__`` (a name now defined elsewhere), :func:`moved_module`
+stands in for a whole module that moved; :func:`renamed`
 wraps a function whose keyword arguments were respelled (``counter=`` is now ``counter_body=``).
 """
 
@@ -27,6 +28,22 @@ def moved(module: str, name: str, homes: Mapping[str, str]) -> Any:
         stacklevel=3,
     )
     return getattr(import_module(homes[name]), name)
+
+
+def moved_module(module: str, home: str) -> None:
+    """Make the module ``module`` (a kept old place) the module ``home``, with a warning.
+
+    Use as the whole body of the old module: ``moved_module(__name__, "roughcontact.new.place")``;
+    ``import old`` and ``from old import name`` then give the new module's names.
+    """
+    import sys
+
+    warnings.warn(
+        f"{module} has moved to {home}; import it from there (the old place goes in the next release).",
+        DeprecationWarning,
+        stacklevel=3,
+    )
+    sys.modules[module] = import_module(home)
 
 
 def renamed(**spellings: str) -> Callable:

@@ -7,7 +7,7 @@ import pytest
 
 from roughcontact.cli import EXIT_INPUT_ERROR, main
 from roughcontact.materials import get_material
-from roughcontact.models import paper001
+from roughcontact.papers import paper001
 from roughcontact.topography import generate
 from roughcontact.topography.native import save_topography
 

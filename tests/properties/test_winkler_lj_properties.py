@@ -8,10 +8,10 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from roughcontact.errors import InputError
-from roughcontact.friction import Readings, winkler_lj_model
-from roughcontact.friction.readings import CHOICES
 from roughcontact.materials import Material
 from roughcontact.topography import Topography
+from roughcontact.winkler_lj import Readings, winkler_lj_model
+from roughcontact.winkler_lj.readings import CHOICES
 
 readings_strategy = st.builds(
     Readings,

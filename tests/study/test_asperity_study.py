@@ -18,8 +18,8 @@ import pytest
 
 from roughcontact.asperity.parameters import asperity_parameters
 from roughcontact.materials import get_material
-from roughcontact.models.paper002 import paper002_island
-from roughcontact.models.thin_film_island import compress_island
+from roughcontact.papers.paper002 import paper002_island
+from roughcontact.papers.thin_film_island import compress_island
 from roughcontact.study import load_study
 from roughcontact.study.config import StudyError
 from roughcontact.study.inputs import CaseInputs

@@ -20,7 +20,6 @@ import xarray as xr
 from scipy import stats
 
 from roughcontact.experiment.compare import read_measured
-from roughcontact.friction import PAPER, PronySeries, Readings, winkler_lj_model
 from roughcontact.materials import get_material
 from roughcontact.study import load_study, run_study
 from roughcontact.study.config import StudyError
@@ -29,6 +28,7 @@ from roughcontact.study.run import execute, make_task
 from roughcontact.study.store import read_table
 from roughcontact.topography.generate import self_affine, sphere_with_roughness
 from roughcontact.topography.statistics import ra
+from roughcontact.winkler_lj import PAPER, PronySeries, Readings, winkler_lj_model
 
 SAMPLES = ["Ra 1.45 nm", "Ra 1.49 nm", "Ra 1.7 nm"]
 REDUCED = {

@@ -12,7 +12,7 @@ import pytest
 import xarray as xr
 
 from roughcontact.materials import Material
-from roughcontact.models import paper001
+from roughcontact.papers import paper001
 from roughcontact.study import load_study
 from roughcontact.study.config import StudyError
 from roughcontact.study.inputs import build_topography

@@ -18,7 +18,7 @@ from roughcontact.asperity import (
 from roughcontact.asperity.parameters import asperity_parameters
 from roughcontact.errors import InputError
 from roughcontact.materials import get_material
-from roughcontact.models import paper002
+from roughcontact.papers import paper002
 from roughcontact.topography.statistics import mccool_parameters
 
 SCALES = dict(hardness=0.462e9, contact_modulus=8e9, radius=5e-6)

@@ -8,7 +8,7 @@ from scipy import stats
 
 from roughcontact.errors import InputError
 from roughcontact.experiment import compare, read_measured
-from roughcontact.models.paper000 import paper000_scans, paper000_simulation, paper000_tip
+from roughcontact.papers.paper000 import paper000_scans, paper000_simulation, paper000_tip
 from roughcontact.plotting import plot_friction_vs_load, plot_mu_boxes, plot_mu_means
 from roughcontact.topography.statistics import ra
 
@@ -76,9 +76,9 @@ def test_paper000_simulation_and_figures():
     for plot in (plot_mu_boxes, plot_mu_means):
         fig, ax = plot(comparison)
         assert ax.get_ylabel()
-    from roughcontact.friction import winkler_lj_model
     from roughcontact.materials import get_material
-    from roughcontact.models.paper000 import paper000_model_options
+    from roughcontact.papers.paper000 import paper000_model_options
+    from roughcontact.winkler_lj import winkler_lj_model
 
     model = winkler_lj_model(
         paper000_scans(1.7e-9, count=1, shape=48)[0],

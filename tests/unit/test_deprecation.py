@@ -3,7 +3,7 @@
 import pytest
 
 from roughcontact.materials import get_material
-from roughcontact.models.paper001 import paper001_mindlin
+from roughcontact.papers.paper001 import paper001_mindlin
 
 
 def test_an_old_keyword_warns_and_gives_the_same_answer():
@@ -30,9 +30,9 @@ def test_old_and_new_spelling_together_is_an_error():
 @pytest.mark.parametrize(
     ("old", "name", "new"),
     [
-        ("roughcontact.analytic.mindlin", "paper001_mindlin", "roughcontact.models.paper001"),
-        ("roughcontact.experiment", "paper000_simulation", "roughcontact.models.paper000"),
-        ("roughcontact.models.thin_film_island", "paper002_island", "roughcontact.models.paper002"),
+        ("roughcontact.analytic.mindlin", "paper001_mindlin", "roughcontact.papers.paper001"),
+        ("roughcontact.experiment", "paper000_simulation", "roughcontact.papers.paper000"),
+        ("roughcontact.papers.thin_film_island", "paper002_island", "roughcontact.papers.paper002"),
     ],
 )
 def test_a_moved_name_is_found_at_its_old_place_with_a_warning(old, name, new):
@@ -43,3 +43,31 @@ def test_a_moved_name_is_found_at_its_old_place_with_a_warning(old, name, new):
     assert found is getattr(import_module(new), name)
     with pytest.raises(AttributeError):
         _ = import_module(old).no_such_name
+
+
+@pytest.mark.parametrize(
+    ("old", "new"),
+    [
+        ("roughcontact.models.paper001", "roughcontact.papers.paper001"),
+        ("roughcontact.models.thin_film_island", "roughcontact.papers.thin_film_island"),
+        ("roughcontact.friction.lennard_jones", "roughcontact.contact.lennard_jones"),
+        ("roughcontact.friction.winkler_lj", "roughcontact.winkler_lj"),
+        ("roughcontact.friction.readings", "roughcontact.winkler_lj.readings"),
+    ],
+)
+def test_a_moved_module_is_found_at_its_old_place_with_a_warning(old, new):
+    import sys
+    from importlib import import_module
+
+    sys.modules.pop(old, None)
+    with pytest.warns(DeprecationWarning, match=f"{old} has moved to {new}"):
+        found = import_module(old)
+    assert found is import_module(new)
+
+
+def test_a_name_of_the_old_friction_package_is_found_with_a_warning():
+    import roughcontact.friction as old
+    from roughcontact.winkler_lj import winkler_lj_model
+
+    with pytest.warns(DeprecationWarning, match="roughcontact.winkler_lj.winkler_lj_model"):
+        assert old.winkler_lj_model is winkler_lj_model

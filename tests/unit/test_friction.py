@@ -6,7 +6,10 @@ import numpy as np
 import pytest
 
 from roughcontact.errors import InputError
-from roughcontact.friction import (
+from roughcontact.materials import get_material
+from roughcontact.topography import Topography
+from roughcontact.topography.generate import self_affine, sphere_with_roughness
+from roughcontact.winkler_lj import (
     PRINTED,
     PronySeries,
     Readings,
@@ -16,10 +19,7 @@ from roughcontact.friction import (
     winkler_lj_model,
     work_of_adhesion,
 )
-from roughcontact.friction.readings import CHOICES
-from roughcontact.materials import get_material
-from roughcontact.topography import Topography
-from roughcontact.topography.generate import self_affine, sphere_with_roughness
+from roughcontact.winkler_lj.readings import CHOICES
 
 POLY, SIO2 = get_material("polysilicon"), get_material("SiO2")
 

@@ -51,7 +51,7 @@ def _frictional():
 
 
 def _presliding():
-    from roughcontact.models.paper001 import presliding
+    from roughcontact.papers.paper001 import presliding
 
     return presliding(
         _ball(),
@@ -83,22 +83,22 @@ def _volume_load_unload():
 
 
 def _volume_island():
-    from roughcontact.models.paper002 import paper002_island
-    from roughcontact.models.thin_film_island import compress_island
+    from roughcontact.papers.paper002 import paper002_island
+    from roughcontact.papers.thin_film_island import compress_island
 
     return compress_island(paper002_island(16, seed=1), get_material("SU-8"), plasticity="volume", layers=4)
 
 
 def _island():
-    from roughcontact.models.paper002 import paper002_island
-    from roughcontact.models.thin_film_island import compress_island
+    from roughcontact.papers.paper002 import paper002_island
+    from roughcontact.papers.thin_film_island import compress_island
 
     return compress_island(paper002_island(16, seed=1), get_material("SU-8"))
 
 
 def _winkler():
-    from roughcontact.friction import solve_winkler_lj
     from roughcontact.topography.generate import self_affine
+    from roughcontact.winkler_lj import solve_winkler_lj
 
     surface = self_affine((32, 32), 0.64e-6, hurst=0.8, rms_height=1.5e-9, seed=1)
     return solve_winkler_lj(
@@ -112,13 +112,13 @@ def _winkler():
 
 
 def _statistical():
-    from roughcontact.models import paper002
+    from roughcontact.papers import paper002
 
     return paper002.statistical_curve()
 
 
 def _asperity_parameters():
-    from roughcontact.models import paper002
+    from roughcontact.papers import paper002
 
     return paper002.parameters()
 
@@ -148,7 +148,7 @@ def _adhesive():
 
 
 def _winkler_beside_bem():
-    from roughcontact.models.paper000 import winkler_beside_bem
+    from roughcontact.papers.paper000 import winkler_beside_bem
     from roughcontact.topography import Topography
 
     x = (np.arange(16) - 8) * 10e-9

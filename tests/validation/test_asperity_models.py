@@ -23,7 +23,7 @@ from roughcontact.asperity import (
     unloading_load,
 )
 from roughcontact.asperity.elastic_plastic import jackson_green_critical_interference
-from roughcontact.models import paper002
+from roughcontact.papers import paper002
 from roughcontact.topography.generate import gaussian_random
 from roughcontact.topography.statistics import mccool_parameters, summits
 

@@ -23,7 +23,7 @@ from roughcontact.asperity import (
 )
 from roughcontact.asperity.elastic_plastic import KOGUT_ETSION_MAX, unloading_area, unloading_area_exponent
 from roughcontact.errors import InputError
-from roughcontact.models import paper002
+from roughcontact.papers import paper002
 from roughcontact.topography.statistics import mccool_parameters
 
 SU8 = dict(hardness=0.462e9, poissons_ratio=0.22, contact_modulus=7.9727e9, radius=5.08e-6)

@@ -81,7 +81,7 @@ def test_eq9_fit_is_the_masing_branch(clean):
 
 def test_paper001_point_stiffness_matches_loop_analysis():
     from roughcontact.materials import Material
-    from roughcontact.models.paper001 import paper001_mindlin
+    from roughcontact.papers.paper001 import paper001_mindlin
 
     m = paper001_mindlin(
         friction_coefficient=MU,

@@ -26,7 +26,7 @@ from roughcontact.materials import (
     effective_shear_modulus_paper001,
     johnson_shear_modulus,
 )
-from roughcontact.models.paper001 import paper001_mindlin
+from roughcontact.papers.paper001 import paper001_mindlin
 
 HDPE = Material(0.98e9, 0.5, "HDPE")
 SILICON = Material(130e9, 0.28, "silicon")

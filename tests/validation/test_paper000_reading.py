@@ -24,10 +24,10 @@ from dataclasses import replace
 import pytest
 
 from roughcontact.errors import InputError
-from roughcontact.friction import PAPER, Readings, winkler_lj_model
 from roughcontact.materials import get_material
-from roughcontact.models.paper000 import paper000_model_options, paper000_scans, paper000_tip
+from roughcontact.papers.paper000 import paper000_model_options, paper000_scans, paper000_tip
 from roughcontact.topography import Topography
+from roughcontact.winkler_lj import PAPER, Readings, winkler_lj_model
 
 SHAPE = 256
 WINDOWS = (100, 128, 256)  # 2, 2.56 and 5.12 um of 20 nm pixels, centred on the tip's apex

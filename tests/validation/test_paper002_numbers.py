@@ -2,7 +2,7 @@
 
 import pytest
 
-from roughcontact.models.paper002 import PRINTED, comparison
+from roughcontact.papers.paper002 import PRINTED, comparison
 
 ROWS = {row.key: row for row in comparison()}
 

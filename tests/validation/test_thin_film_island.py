@@ -5,9 +5,9 @@ import pytest
 
 from roughcontact.errors import InputError
 from roughcontact.materials import get_material
-from roughcontact.models import paper002
-from roughcontact.models.paper002 import paper002_island
-from roughcontact.models.thin_film_island import compress_island
+from roughcontact.papers import paper002
+from roughcontact.papers.paper002 import paper002_island
+from roughcontact.papers.thin_film_island import compress_island
 
 SU8, SILICON = get_material("SU-8"), get_material("silicon wafer")
 ISLAND = paper002_island(40, seed=3)

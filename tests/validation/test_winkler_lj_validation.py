@@ -13,12 +13,12 @@ import numpy as np
 import pytest
 from scipy import integrate
 
+from roughcontact.contact import lennard_jones as lj
 from roughcontact.errors import InputError
-from roughcontact.friction import Readings, standard_linear_solid, winkler_lj_model
-from roughcontact.friction import lennard_jones as lj
 from roughcontact.materials import Material, get_material
 from roughcontact.topography import Topography
 from roughcontact.topography.generate import self_affine, sphere, sphere_with_roughness
+from roughcontact.winkler_lj import Readings, standard_linear_solid, winkler_lj_model
 
 POLY, SIO2 = get_material("polysilicon"), get_material("SiO2")
 GAMMA, EPS = 0.1, 2e-9

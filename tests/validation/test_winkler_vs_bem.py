@@ -13,11 +13,11 @@ import pytest
 
 from roughcontact.contact.interaction import LennardJones
 from roughcontact.errors import InputError
-from roughcontact.friction import Readings, winkler_lj_model
-from roughcontact.friction.winkler_lj import BEM_LOAD_RTOL
 from roughcontact.materials import Material, get_material
-from roughcontact.models.paper000 import winkler_beside_bem
+from roughcontact.papers.paper000 import winkler_beside_bem
 from roughcontact.topography import Topography
+from roughcontact.winkler_lj import Readings, winkler_lj_model
+from roughcontact.winkler_lj.bem import BEM_LOAD_RTOL
 
 RADIUS, EPS, W = 1e-6, 2e-9, 2.0 * math.sqrt(0.05 * 0.072)  # dgamma = 2 sqrt(g1 g2) = 0.12 J/m^2
 ENERGIES = {"surface_energy": 0.05, "counter_surface_energy": 0.072}

@@ -24,7 +24,7 @@ reversals (a branch that reaches the reversal point before the last one closes t
 and continues on the branch it interrupted).
 
 Paper 001 (eqs. 10-12) prints the same solution with its own shear modulus G_s; its reference,
-in the textbook reading and as printed, is :func:`roughcontact.models.paper001.paper001_mindlin`.
+in the textbook reading and as printed, is :func:`roughcontact.papers.paper001.paper001_mindlin`.
 
 All quantities are SI (N, m, Pa, J). Johnson's equation numbers are given as commonly cited (not
 re-checked against the book); the formulas themselves are verified by
@@ -513,8 +513,8 @@ def dissipated_energy_displacement(
 
 
 def __getattr__(name: str):
-    """Serve paper 001's reference, which moved to :mod:`roughcontact.models.paper001`, with a warning."""
+    """Serve paper 001's reference, which moved to :mod:`roughcontact.papers.paper001`, with a warning."""
     homes = dict.fromkeys(
-        ("NORMALISATIONS", "Paper001Mindlin", "paper001_mindlin"), "roughcontact.models.paper001"
+        ("NORMALISATIONS", "Paper001Mindlin", "paper001_mindlin"), "roughcontact.papers.paper001"
     )
     return moved(__name__, name, homes)

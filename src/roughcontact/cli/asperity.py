@@ -2,7 +2,7 @@
 
 A view of the study models ``asperity`` (:mod:`roughcontact.study.kinds.asperity`) and, with
 ``--bem``, ``load_unload`` (:mod:`roughcontact.study.kinds.load_unload`). ``--paper002`` fills in
-the paper's printed moments, materials and loads (:mod:`roughcontact.models.paper002`) and adds
+the paper's printed moments, materials and loads (:mod:`roughcontact.papers.paper002`) and adds
 the table of section IV (printed values against ours, in both readings of eq. 7).
 """
 
@@ -12,7 +12,7 @@ import argparse
 from pathlib import Path
 
 from ..errors import InputError
-from ..models import paper002
+from ..papers import paper002
 from .options import CommandStudy, add_material_options, add_output_options, new_command, options
 from .output import run_command
 

@@ -4,7 +4,7 @@ Both are views of the study model ``friction`` (:mod:`roughcontact.study.kinds.f
 ``friction`` runs one surface (merged with a counter-surface) at one load or a sweep of loads;
 ``friction-compare`` runs every scan of every sample at one load and compares the simulated mu
 with measured values (paper 000's validation: t-tests and the Pearson r of the means). Without
-scans it runs paper 000's own case on synthetic scans (:mod:`roughcontact.models.paper000`).
+scans it runs paper 000's own case on synthetic scans (:mod:`roughcontact.papers.paper000`).
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ import argparse
 from pathlib import Path
 
 from ..errors import InputError
-from ..models import paper000
+from ..papers import paper000
 from .options import (
     CommandStudy,
     add_material_options,
@@ -88,7 +88,7 @@ def _sample_argument(text: str) -> tuple[str, list[Path]]:
 
 
 def _paper000_scans(command: CommandStudy, args: argparse.Namespace) -> dict:
-    """Paper 000's synthetic scans and tip (:mod:`roughcontact.models.paper000`): the keys they set."""
+    """Paper 000's synthetic scans and tip (:mod:`roughcontact.papers.paper000`): the keys they set."""
     side = f"{args.grid * paper000.PIXEL * 1e9:g} nm"
     command.topography(
         "scan",

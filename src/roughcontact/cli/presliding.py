@@ -3,7 +3,7 @@
 ``presliding`` is a view of the study model ``presliding`` (:mod:`roughcontact.study.kinds.presliding`):
 a ball FILE under paper 001's programme (``--stroke``) or your own (``--path`` CSV), or the paper's
 own cases with ``--paper001`` (generated balls, Table 1 loads, strokes and mu,
-:mod:`roughcontact.models.paper001`). ``loop-analysis`` is a view of the model ``loop_analysis``:
+:mod:`roughcontact.papers.paper001`). ``loop-analysis`` is a view of the model ``loop_analysis``:
 a measured loop's stroke, mu, eq. 9 fit and K_L at A, B, C.
 """
 
@@ -13,7 +13,7 @@ import argparse
 from pathlib import Path
 
 from ..errors import InputError
-from ..models import paper001
+from ..papers import paper001
 from ..units import quantity
 from .options import CommandStudy, add_material_options, add_output_options, new_command, options
 from .output import run_command

@@ -13,7 +13,7 @@ Lennard-Jones 9-3  -(8 w / 3) [eps^2 / (2 l^2) - eps^8 / (8 l^8)]  l = g + eps; 
 =================  ============================================  ======================================
 
 The Lennard-Jones law is paper 000's eq. 7 (the n = 2, m = 8 energy of two half-spaces,
-:mod:`roughcontact.friction.lennard_jones`); its gap g is counted from the equilibrium distance
+:mod:`roughcontact.contact.lennard_jones`); its gap g is counted from the equilibrium distance
 eps, so that g = 0 is contact for every law. It has no hard wall: the repulsion of its 1/l^9 term
 keeps the surfaces apart, and the solver bounds l >= eps / 2 (a compression of 1344 w / eps;
 reaching it is reported as an error, see :mod:`roughcontact.contact.adhesive`).
@@ -42,7 +42,7 @@ from typing import ClassVar
 import numpy as np
 
 from ..checks import positive
-from ..friction import lennard_jones as lj
+from . import lennard_jones as lj
 
 INTERACTION_FRACTION = 0.01
 """Pixels under a tension of at least this fraction of the law's peak tension count as interacting
@@ -161,7 +161,7 @@ class LennardJones(_Law):
               - \frac{\varepsilon^8}{8l^8}\right], \qquad l = g + \varepsilon,
 
     traction p = -f(l) with f the attractive stress of eq. 7
-    (:func:`roughcontact.friction.lennard_jones.attractive_stress`); phi(0) = -w.
+    (:func:`roughcontact.contact.lennard_jones.attractive_stress`); phi(0) = -w.
 
     Parameters
     ----------

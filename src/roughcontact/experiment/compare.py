@@ -3,8 +3,9 @@
 Paper 000 validates its model by scanning each sample at several spots (seven), simulating mu for
 each scan against the AFM tip, measuring mu at as many spots, and comparing per sample with a
 two-sample t-test (p > 0.1 taken as agreement) and across samples with the Pearson correlation of
-the means (r = 0.96 in the paper). :func:`simulate_mu` makes the simulated distributions,
-:func:`read_measured` reads the measured ones from a CSV, :func:`compare` does the statistics.
+the means (r = 0.96 in the paper). :func:`read_measured` reads the measured distributions from a
+CSV and :func:`compare` does the statistics; the simulated ones are paper 000's scenario
+(:func:`roughcontact.papers.paper000.simulate_mu`).
 
 References
 ----------
@@ -23,12 +24,9 @@ from pathlib import Path
 import numpy as np
 from scipy import stats
 
-from .._deprecation import renamed
+from .._deprecation import moved
 from .._text_table import read_text_table
 from ..errors import InputError
-from ..friction.winkler_lj import winkler_lj_model
-from ..materials import Material
-from ..topography import Topography
 
 
 @dataclass(frozen=True)
@@ -231,47 +229,6 @@ def read_measured(path: str | Path) -> dict[str, np.ndarray]:
     return {name: np.array(v) for name, v in values.items()}
 
 
-@renamed(counter="counter_body", load="normal_force", counter_surface="counter_topography")
-def simulate_mu(
-    scans: Mapping[str, Sequence[Topography]],
-    material: Material,
-    counter_body: Material | None = None,
-    *,
-    normal_force: float,
-    counter_topography: Topography | None = None,
-    **options,
-) -> dict[str, np.ndarray]:
-    """Simulate mu for every scan of every sample with the Winkler-Lennard-Jones model.
-
-    Parameters
-    ----------
-    scans : mapping of str to sequence of Topography
-        Scans per sample (paper 000: seven 5 um x 5 um polysilicon scans per sample).
-    material, counter_body : Material
-        Sample and counter-body (tip).
-    normal_force : float
-        Normal load [N] (paper 000: 10 uN).
-    counter_topography : Topography, optional
-        Tip topography merged with each scan.
-    **options
-        Keyword arguments of :func:`roughcontact.friction.winkler_lj_model`
-        (``layer_thickness`` is required).
-
-    Returns
-    -------
-    dict of str to ndarray
-        mu per scan, per sample.
-    """
-    return {
-        name: np.array(
-            [
-                winkler_lj_model(
-                    scan, material, counter_body, counter_topography=counter_topography, **options
-                )
-                .solve(normal_force)
-                .mu
-                for scan in sample_scans
-            ]
-        )
-        for name, sample_scans in scans.items()
-    }
+def __getattr__(name: str):
+    """Serve :func:`simulate_mu`, which moved to :mod:`roughcontact.papers.paper000`, with a warning."""
+    return moved(__name__, name, {"simulate_mu": "roughcontact.papers.paper000"})

@@ -1,27 +1,30 @@
-"""Friction models: the Winkler-layer + Lennard-Jones adhesive friction model of paper 000."""
+"""Paper 000's model under its release-0.1 name: moved to :mod:`roughcontact.winkler_lj` (one release).
 
-from .readings import PAPER, PRINTED, Readings
-from .viscoelastic import PronySeries, material_after_hold, standard_linear_solid
-from .winkler_lj import (
-    FrictionSweep,
-    WinklerLJModel,
-    WinklerLJResult,
-    solve_winkler_lj,
-    winkler_lj_model,
-    work_of_adhesion,
-)
+``roughcontact.friction.X`` still finds what it held, with a DeprecationWarning;
+``roughcontact.friction.lennard_jones`` is :mod:`roughcontact.contact.lennard_jones`.
+"""
 
-__all__ = [
-    "PAPER",
-    "PRINTED",
-    "FrictionSweep",
-    "PronySeries",
-    "Readings",
-    "WinklerLJModel",
-    "WinklerLJResult",
-    "material_after_hold",
-    "solve_winkler_lj",
-    "standard_linear_solid",
-    "winkler_lj_model",
-    "work_of_adhesion",
-]
+from .._deprecation import moved
+
+_HOMES = {
+    name: "roughcontact.winkler_lj"
+    for name in (
+        "PAPER",
+        "PRINTED",
+        "FrictionSweep",
+        "PronySeries",
+        "Readings",
+        "WinklerLJModel",
+        "WinklerLJResult",
+        "material_after_hold",
+        "solve_winkler_lj",
+        "standard_linear_solid",
+        "winkler_lj_model",
+        "work_of_adhesion",
+    )
+}
+
+
+def __getattr__(name: str):
+    """Serve a name that moved to :mod:`roughcontact.winkler_lj`, with a warning."""
+    return moved(__name__, name, _HOMES)

@@ -94,7 +94,7 @@ def plot_von_mises_maps(compression, indices: list[int], *, depth: float = 0.0) 
     Parameters
     ----------
     compression : IslandCompression
-        From :func:`roughcontact.models.thin_film_island.compress_island`.
+        From :func:`roughcontact.papers.thin_film_island.compress_island`.
     indices : list of int
         Steps to draw (e.g. those at 0, 200, ..., 1000 uN).
     depth : float

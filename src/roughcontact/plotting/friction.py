@@ -85,7 +85,7 @@ def plot_friction_vs_load(sweep, ax: Axes | None = None, *, crossover: float | N
     Parameters
     ----------
     sweep : FrictionSweep
-        From :meth:`roughcontact.friction.WinklerLJModel.sweep`.
+        From :meth:`roughcontact.winkler_lj.WinklerLJModel.sweep`.
     ax : matplotlib Axes, optional
         Axes to draw on.
     crossover : float, optional

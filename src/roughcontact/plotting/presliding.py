@@ -361,7 +361,7 @@ def plot_lateral_stiffness(
     Simulated values are markers, measured ones solid lines, Mindlin's dashed lines, one colour
     per point (A red, B blue, C black). Mindlin curves may be given for both normalisations of
     paper 001 eqs. 10-12 (``"johnson"``: dashed; ``"printed"``, 4x Johnson's: dash-dotted), each
-    labelled; see :func:`roughcontact.models.paper001.paper001_mindlin` and its
+    labelled; see :func:`roughcontact.papers.paper001.paper001_mindlin` and its
     ``point_stiffness``.
 
     Parameters

@@ -34,7 +34,7 @@ def build_topography(spec: Strict, resolve) -> Topography:
     if isinstance(spec, FileTopography):
         raise TypeError("file topographies are read during validation and passed in")
     if isinstance(spec, Paper002Island):
-        from ..models.paper002 import paper002_island
+        from ..papers.paper002 import paper002_island
 
         return paper002_island(spec.shape, seed=spec.seed, margin=spec.margin)
     options = {k: v for k, v in spec.model_dump().items() if k not in _GENERATOR_ONLY}

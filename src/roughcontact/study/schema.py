@@ -330,7 +330,7 @@ class RaisedIsland(_Seeded):
 
 
 class Paper002Island(Strict):
-    """:func:`~roughcontact.models.paper002.paper002_island`: paper 002's island stand-in."""
+    """:func:`~roughcontact.papers.paper002.paper002_island`: paper 002's island stand-in."""
 
     generate: Literal["paper002_island"]
     shape: GridShape = (64, 64)

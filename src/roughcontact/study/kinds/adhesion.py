@@ -18,7 +18,7 @@ apart; jumps in and out of contact are bracketed to ``jump_resolution`` and repo
   is that of ``material`` and ``counter_body``. The body is a half-space, or a film of
   ``film_thickness`` on a rigid base or bonded to a ``substrate`` (as model ``normal``).
 * ``winkler = true``: paper 000's Winkler-layer Lennard-Jones springs beside it, on the same
-  composite surface and approaches (:func:`~roughcontact.models.paper000.winkler_beside_bem`; the
+  composite surface and approaches (:func:`~roughcontact.papers.paper000.winkler_beside_bem`; the
   law must be ``lennard_jones`` with eps = ``interaction_range``, the springs' height
   ``layer_thickness``, dgamma and the spring constant by the ``reading`` preset of the friction
   model; ``combining_rule`` overrides the preset's dgamma rule).
@@ -167,7 +167,7 @@ def work_of_adhesion(parameters: AdhesionParameters, material, counter_body) -> 
     InputError
         A surface energy that neither the analysis nor the material gives.
     """
-    from ...friction.winkler_lj import work_of_adhesion as combined
+    from ...winkler_lj import work_of_adhesion as combined
 
     if parameters.work_of_adhesion is not None:
         return parameters.work_of_adhesion
@@ -202,8 +202,8 @@ def _layer(parameters: AdhesionParameters, material, inputs):
 
 def _beside_winkler(parameters: AdhesionParameters, inputs) -> tuple[AdhesiveResult, dict, dict]:
     """Solve the BEM and paper 000's springs on one composite surface: (BEM result, scalars, curves)."""
-    from ...friction.readings import Readings
-    from ...models.paper000 import winkler_beside_bem
+    from ...papers.paper000 import winkler_beside_bem
+    from ...winkler_lj.readings import Readings
 
     counter = parameters.counter_topography
     items = [f"work_of_adhesion={parameters.combining_rule}"] if parameters.combining_rule else []

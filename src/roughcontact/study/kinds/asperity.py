@@ -328,11 +328,11 @@ def _paper002_table(records, context):
     ``this_case`` is the stored value of the case (its moments, materials and ``modulus_form``);
     ``printed_inputs_standard`` and ``printed_inputs_eq7_printed`` recompute section IV from the
     printed moments and Table I in both readings of eq. 7
-    (:func:`roughcontact.models.paper002.comparison`). The rough-tip row adds the flat's 10 nm to
+    (:func:`roughcontact.papers.paper002.comparison`). The rough-tip row adds the flat's 10 nm to
     sigma_s in quadrature (``this_case`` and ``printed_inputs_standard``) or linearly (the paper's
     2.06, ``printed_inputs_eq7_printed`` column).
     """
-    from ...models import paper002
+    from ...papers import paper002
 
     chosen = [r for r in records if r.parameters.get("paper002")]
     if not chosen:

@@ -1,6 +1,6 @@
 r"""Study kind ``friction``: the Winkler-layer Lennard-Jones friction of paper 000 at one load per case.
 
-Wraps :func:`roughcontact.friction.winkler_lj_model` and its ``solve(load)`` (details and the
+Wraps :func:`roughcontact.winkler_lj_model` and its ``solve(load)`` (details and the
 derivations in ``docs/winkler_lj.md``). The two topographies (``topography``, e.g. a polysilicon
 scan, and ``counter_topography``, e.g. the AFM tip) are merged into one composite surface z_i facing a rigid
 flat (paper 000, Fig. 1); each pixel is a spring, a cuboid of top area S (the pixel area) and
@@ -22,14 +22,14 @@ height h (``layer_thickness``, the Winkler layer):
 * friction F = sum Q_i, split into its adhesive and mechanical parts, and mu = F / N.
 
 Paper 000's equations have unit and sign problems and gaps; every disputed choice is a named
-reading (:class:`~roughcontact.friction.readings.Readings`), given in the study file as a table of
+reading (:class:`~roughcontact.winkler_lj.readings.Readings`), given in the study file as a table of
 name = value strings, e.g. ``readings = {contact = "zero_gap", adhesive_cutoff = "20 nm"}``
 (``adhesive_cutoff`` takes a length with its unit, or ``inf``). A reading not
 named keeps its default, the physically consistent one, or the value of the preset named by
 ``reading``: ``"default"``, ``"paper"`` (the paper's own reading,
-:data:`~roughcontact.friction.readings.PAPER`: printed eqs. 4, 12, 15 and 17 and dgamma, the
+:data:`~roughcontact.winkler_lj.readings.PAPER`: printed eqs. 4, 12, 15 and 17 and dgamma, the
 half-sphere tip of section 3.1, which gives the paper's headline results) or ``"printed"``
-(every equation as printed, :data:`~roughcontact.friction.readings.PRINTED`); the entries of the
+(every equation as printed, :data:`~roughcontact.winkler_lj.readings.PRINTED`); the entries of the
 ``readings`` table change the preset's fields, e.g. ``reading = "paper"`` with ``readings =
 {adhesive_range = "maugis_dugdale"}``. The half-sphere tip (``base = "half_sphere"``, in the
 ``"paper"`` preset) needs the tip's radius: ``tip_radius``, default the ``radius`` the counter
@@ -45,7 +45,7 @@ sums use the gap and pressure of the adhesive boundary-element solution at the s
 paper 000's law ``LennardJones(dgamma, epsilon)``, free boundary; its state on the loading branch
 whose force equals ``normal_force`` within 1e-6 of it): pixels in repulsion are the mechanical
 springs with the BEM pressure, the others bond at l = g + epsilon
-(:meth:`~roughcontact.friction.WinklerLJModel.solve`). Eq. 2's readings (``balance_terms``,
+(:meth:`~roughcontact.winkler_lj.WinklerLJModel.solve`). Eq. 2's readings (``balance_terms``,
 ``adhesion_sign``, ``contact``) must keep their defaults there, and ``crossover`` is refused (a
 search over loads of boundary-element solves). The scalar ``gap_model`` says which was used; with
 ``"bem"`` also ``bem_force`` and ``bem_load_error``.
@@ -55,13 +55,13 @@ Hold time (paper 000, end of section 2: "a time-dependent elastic modulus"): wit
 ``relaxed_modulus`` with ``relaxation_time`` tau, and E(hold_time) = E_inf + (E0 - E_inf)
 exp(-t / tau) replaces E0 in eq. 1 (as ``roughcontact friction --relaxed-modulus``).
 
-Scalars: those of :meth:`~roughcontact.friction.WinklerLJResult.scalars` (mu, friction, its
+Scalars: those of :meth:`~roughcontact.winkler_lj.WinklerLJResult.scalars` (mu, friction, its
 adhesive and mechanical parts, separation, springs in each state, ...), the readings that differ
 from the defaults (``readings``, e.g. ``contact=zero_gap``, or ``defaults``), the ratio of adhesive to
 mechanical friction, the model's constants (contact modulus, Winkler factor, shear modulus, work
 of adhesion, spring stiffness and area), the load the layer can carry and, with ``crossover =
 true``, the load where mechanical friction overtakes adhesive friction (paper 000, section 6:
-about 600 uN for Ra 1.7 nm). Fields: :meth:`~roughcontact.friction.WinklerLJResult.to_xarray`
+about 600 uN for Ra 1.7 nm). Fields: :meth:`~roughcontact.winkler_lj.WinklerLJResult.to_xarray`
 cropped to the springs that carry friction (mechanical or bonded) and a margin of
 :data:`FIELD_MARGIN` pixels (outside them Q_i = 0 by construction); none when that window exceeds
 :data:`FIELD_POINTS` points.
@@ -94,7 +94,7 @@ from pydantic import Field, field_validator, model_serializer, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...errors import InputError
-from ...friction.winkler_lj import WinklerLJResult
+from ...winkler_lj import WinklerLJResult
 from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind, caption
 from ..schema import Force, Length, MaterialName, Pressure, Strict, SurfaceEnergy, Time, TopographyName
 from .common import box_around, grouped
@@ -177,7 +177,7 @@ class FrictionParameters(CaseParameters):
     @field_validator("reading")
     @classmethod
     def _check_preset(cls, value: str) -> str:
-        from ...friction.readings import PRESETS
+        from ...winkler_lj.readings import PRESETS
 
         if value not in PRESETS:
             close = difflib.get_close_matches(value, list(PRESETS), n=1)
@@ -238,8 +238,8 @@ _EXAMPLES = {"normal_force": "10 uN", "layer_thickness": "50 nm", "epsilon": "2 
 def normalized_readings(value: dict[str, Any]) -> dict[str, str]:
     """Check a study's ``readings`` table and return it as ``{name: value}`` strings.
 
-    Every name and value is checked by :class:`~roughcontact.friction.readings.Readings`
-    (through :meth:`~roughcontact.friction.readings.Readings.from_strings`);
+    Every name and value is checked by :class:`~roughcontact.winkler_lj.readings.Readings`
+    (through :meth:`~roughcontact.winkler_lj.readings.Readings.from_strings`);
     ``adhesive_cutoff`` may be a length with a unit (``"20 nm"``) and is returned in metres.
 
     Parameters
@@ -257,8 +257,8 @@ def normalized_readings(value: dict[str, Any]) -> dict[str, str]:
     pydantic_core.PydanticCustomError
         An unknown name or value; the message names the reading and lists the allowed values.
     """
-    from ...friction.readings import Readings
     from ...units import quantity
+    from ...winkler_lj.readings import Readings
 
     known = [f.name for f in fields(Readings)]
     result: dict[str, str] = {}
@@ -304,8 +304,8 @@ def normalized_readings(value: dict[str, Any]) -> dict[str, str]:
 
 
 def readings_of(parameters: FrictionParameters):
-    """Return the :class:`~roughcontact.friction.readings.Readings` of a case."""
-    from ...friction.readings import Readings
+    """Return the :class:`~roughcontact.winkler_lj.readings.Readings` of a case."""
+    from ...winkler_lj.readings import Readings
 
     items = (f"{name}={text}" for name, text in parameters.readings.items())
     return Readings.from_strings(items, preset=parameters.reading)
@@ -324,9 +324,9 @@ def _check_relaxed(relaxed: float, material) -> None:
 def check_inputs(parameters: FrictionParameters, known) -> None:
     """Refuse at validation what the model would: a profile, grids that do not merge, no surface energy.
 
-    See :func:`roughcontact.friction.winkler_lj_model`.
+    See :func:`roughcontact.winkler_lj_model`.
     """
-    from ...friction.winkler_lj import surface_energy_of
+    from ...winkler_lj import surface_energy_of
 
     material, counter_body = known.material(parameters.material), known.material(parameters.counter_body)
     if parameters.relaxed_modulus is not None:
@@ -342,14 +342,14 @@ def check_inputs(parameters: FrictionParameters, known) -> None:
 
 
 def build_model(parameters: FrictionParameters, inputs):
-    """Return the :class:`~roughcontact.friction.WinklerLJModel` of a case (topographies merged).
+    """Return the :class:`~roughcontact.winkler_lj.WinklerLJModel` of a case (topographies merged).
 
     ``inputs`` holds the case's topographies and materials. Raises InputError for a relaxed modulus
     above the surface material's Young's modulus, or any refusal of
-    :func:`~roughcontact.friction.winkler_lj_model`.
+    :func:`~roughcontact.winkler_lj_model`.
     """
-    from ...friction import winkler_lj_model
-    from ...friction.viscoelastic import standard_linear_solid
+    from ...winkler_lj import winkler_lj_model
+    from ...winkler_lj.viscoelastic import standard_linear_solid
 
     material = inputs.material(parameters.material)
     options: dict[str, Any] = {}

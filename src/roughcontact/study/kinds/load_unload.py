@@ -1,6 +1,6 @@
 r"""Study kind ``load_unload``: elastic-perfectly-plastic load-unload of a surface against a rigid flat punch.
 
-One case wraps :func:`roughcontact.models.thin_film_island.compress_island` (seed paper 002,
+One case wraps :func:`roughcontact.papers.thin_film_island.compress_island` (seed paper 002,
 sections III and VI, Figs. 7-9): the surface is pressed by a rigid flat to ``peak_force`` and
 unloaded, force-controlled, through the targets
 
@@ -26,7 +26,7 @@ one is given. Its maps are of the total stress (pressure plus residual) of the c
 that carries the most load at the peak shows the
 stress in depth; at zero load after unloading they show the residual stress (paper 002 Fig. 9e).
 
-Assumptions (those of the model; see :mod:`roughcontact.models.thin_film_island`): with
+Assumptions (those of the model; see :mod:`roughcontact.papers.thin_film_island`): with
 ``plasticity = "surface"`` plasticity is confined to the surface (no subsurface plastic zone, no
 hardening, no residual stress after unloading, so a map at 0 N on unloading is empty where the
 paper's FEM shows residual stress); the film is laterally infinite (the island's free side walls
@@ -56,7 +56,7 @@ from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...contact.volume_plastic import VOLUME_UNITS
-from ...models.thin_film_island import IslandCompression
+from ...papers.thin_film_island import IslandCompression
 from ...units import format_si
 from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
@@ -170,7 +170,7 @@ def load_targets(peak_force: float, reference_force: float, steps: int) -> tuple
     """Return the loading targets 0, W/n, ..., W with ``reference_force`` added, and unloading ones [N].
 
     With ``steps = 10`` these are the default targets of
-    :func:`~roughcontact.models.thin_film_island.compress_island` (the same floats).
+    :func:`~roughcontact.papers.thin_film_island.compress_island` (the same floats).
     """
     loading = np.unique(np.concatenate([np.linspace(0.0, peak_force, steps + 1), [reference_force]]))
     return loading, loading[::-1][1:]
@@ -210,7 +210,7 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
     """Load and unload the surface; scalars, the curve and the von Mises maps."""
     import xarray as xr
 
-    from ...models.thin_film_island import compress_island
+    from ...papers.thin_film_island import compress_island
 
     surface = inputs.topography(parameters.topography)
     material = inputs.material(parameters.material)

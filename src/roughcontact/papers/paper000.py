@@ -1,0 +1,370 @@
+"""The validation case of paper 000: a 2 um SiO2 sphere sliding on LPCVD polysilicon at 10 uN.
+
+Inputs from the paper (section 3-4): tip diameter 2 um (SiO2, E = 70 GPa, nu = 0.17, surface energy
+72 mJ/m^2), polysilicon (E = 110 GPa, nu = 0.22) of Ra about 1.45, 1.49 and 1.7 nm, 50 nm layer
+(the Winkler layer height), 20 nm pixels, epsilon = 2 nm, load 10 uN, seven scans per sample.
+
+Not given in the paper, so stated inputs here: the polysilicon surface energy (measured by the
+authors by wettability but not reported; default 50 mJ/m^2, an assumption), the scans themselves
+(synthetic self-affine scans by default: Hurst exponent 0.8, scaled to the exact Ra, seeded) and
+the tip roughness (default Rq 0.3 nm on a paraboloid of radius 1 um). Measured scans can be passed
+instead of the synthetic ones.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+import numpy as np
+
+from .._deprecation import renamed
+from ..contact.adhesive import solve_adhesive
+from ..contact.interaction import LennardJones
+from ..materials import Material, get_material
+from ..topography import Topography
+from ..topography.generate import self_affine, sphere_with_roughness
+from ..topography.process import scale_to_ra
+from ..winkler_lj import WinklerNormalCurve, winkler_lj_model
+from ..winkler_lj.readings import Readings
+
+PAPER000_SAMPLES: Mapping[str, float] = {"Ra 1.45 nm": 1.45e-9, "Ra 1.49 nm": 1.49e-9, "Ra 1.7 nm": 1.7e-9}
+"""Sample name -> Ra [m] of the three polysilicon samples of paper 000."""
+
+PIXEL = 20e-9
+"""Scan step of paper 000 [m] (the spring size S = PIXEL^2)."""
+
+
+def paper000_model_options(*, surface_energy: float = 0.05, readings: Readings | None = None) -> dict:
+    """Return the keyword arguments of :func:`~roughcontact.winkler_lj_model` for paper 000.
+
+    Parameters
+    ----------
+    surface_energy : float
+        Polysilicon surface energy [J/m^2] (not reported by the paper; 0.05 is an assumption).
+    readings : Readings, optional
+        Readings of the disputed equations.
+
+    Returns
+    -------
+    dict
+        layer_thickness 50 nm, epsilon 2 nm, the surface energy, the tip's 72 mJ/m^2 and the readings.
+    """
+    return {
+        "layer_thickness": 50e-9,
+        "epsilon": 2e-9,
+        "surface_energy": surface_energy,
+        "counter_surface_energy": 72e-3,
+        "readings": readings,
+    }
+
+
+def paper000_model(
+    scan: Topography, tip: Topography, *, surface_energy: float = 0.05, readings: Readings | None = None
+):
+    """Return paper 000's Winkler-Lennard-Jones model of ``scan`` (polysilicon) against ``tip`` (SiO2).
+
+    :func:`~roughcontact.winkler_lj_model` with the materials of sec. 3 and
+    :func:`paper000_model_options`; ``model.solve(10e-6)`` is the paper's load.
+    """
+    return winkler_lj_model(
+        scan,
+        get_material("polysilicon"),
+        get_material("SiO2"),
+        counter_topography=tip,
+        model_options=paper000_model_options(surface_energy=surface_energy, readings=readings),
+    )
+
+
+def paper000_tip(*, shape: int = 256, rms_height: float = 0.3e-9, seed: int = 0) -> Topography:
+    """Return a synthetic AFM tip of paper 000: a paraboloid of radius 1 um with roughness, 20 nm pixels.
+
+    Parameters
+    ----------
+    shape : int
+        Grid points per side (256: 5.12 um, close to the paper's 5 um scans).
+    rms_height : float
+        Rq of the tip roughness [m].
+    seed : int
+        Seed of the roughness.
+
+    Returns
+    -------
+    Topography
+    """
+    size = shape * PIXEL
+    return sphere_with_roughness((shape, shape), size, radius=1e-6, rms_height=rms_height, seed=seed)
+
+
+def paper000_scans(roughness: float, *, count: int = 7, shape: int = 256, seed: int = 0) -> list[Topography]:
+    """Return ``count`` synthetic polysilicon scans of exact Ra ``roughness``, 20 nm pixels.
+
+    Parameters
+    ----------
+    roughness : float
+        Ra [m].
+    count : int
+        Number of scans (paper 000: seven spots per sample).
+    shape : int
+        Grid points per side.
+    seed : int
+        Seed of the first scan; scan i uses ``seed + i``.
+
+    Returns
+    -------
+    list of Topography
+        Self-affine (Hurst 0.8) scans, each scaled to Ra = ``roughness``.
+    """
+    scans = []
+    for i in range(count):
+        scan = self_affine((shape, shape), shape * PIXEL, hurst=0.8, rms_height=roughness, seed=seed + i)
+        scans.append(scale_to_ra(scan, roughness))
+    return scans
+
+
+@renamed(load="normal_force")
+def paper000_simulation(
+    *,
+    normal_force: float = 10e-6,
+    surface_energy: float = 0.05,
+    readings: Readings | None = None,
+    scans: Mapping[str, Sequence[Topography]] | None = None,
+    tip: Topography | None = None,
+    count: int = 7,
+    shape: int = 256,
+    seed: int = 0,
+) -> dict[str, np.ndarray]:
+    """Return the simulated mu per scan for the three polysilicon samples of paper 000 against the SiO2 tip.
+
+    Parameters
+    ----------
+    normal_force : float
+        Normal load [N] (paper: 10 uN).
+    surface_energy : float
+        Polysilicon surface energy [J/m^2] (a stated assumption, see the module).
+    readings : Readings, optional
+        Readings of the disputed equations.
+    scans : mapping of str to sequence of Topography, optional
+        Measured scans per sample; default synthetic ones (:func:`paper000_scans`).
+    tip : Topography, optional
+        Measured tip topography on the scans' grid; default :func:`paper000_tip`.
+    count, shape, seed : int
+        Size of the synthetic data set: scans per sample, grid points per side, first seed.
+
+    Returns
+    -------
+    dict of str to ndarray
+        mu per scan, per sample.
+    """
+    if scans is None:
+        scans = {
+            name: paper000_scans(roughness, count=count, shape=shape, seed=seed + 100 * k)
+            for k, (name, roughness) in enumerate(PAPER000_SAMPLES.items())
+        }
+    if tip is None:
+        tip = paper000_tip(shape=next(iter(scans.values()))[0].shape[0], seed=seed)
+    return simulate_mu(
+        scans,
+        get_material("polysilicon"),
+        get_material("SiO2"),
+        normal_force=normal_force,
+        counter_topography=tip,
+        model_options=paper000_model_options(surface_energy=surface_energy, readings=readings),
+    )
+
+
+@dataclass(frozen=True, eq=False)
+class WinklerBesideBEM:
+    """Paper 000's Winkler-Lennard-Jones model beside the adhesive BEM on one surface (SI).
+
+    Both are evaluated over the same approach programme, counted from the first touch of the
+    undeformed composite surface: the BEM follows it with its hysteresis and jumps (and continues
+    to detachment), the Winkler springs, which have none, are evaluated at every approach the BEM
+    visited (``winkler.approach`` equals ``bem.approach``).
+
+    Attributes
+    ----------
+    winkler : WinklerNormalCurve
+        Normal force, contact and interaction areas of eq. 2, and its pull-off.
+    bem : AdhesiveResult
+        The boundary-element programme (half-space of contact modulus E of eq. 1, the same
+        composite surface, ``LennardJones(dgamma, epsilon)``).
+    """
+
+    winkler: WinklerNormalCurve
+    bem: Any
+
+    UNITS: ClassVar[dict[str, str]] = {
+        "winkler_pull_off_force": "N",
+        "bem_pull_off_force": "N",
+        "winkler_pull_off_approach": "m",
+        "bem_pull_off_approach": "m",
+        "winkler_max_contact_area": "m^2",
+        "bem_max_contact_area": "m^2",
+        "winkler_max_force": "N",
+        "bem_max_force": "N",
+        "max_approach": "m",
+        "bem_dissipated_energy": "J",
+        "work_of_adhesion": "J/m^2",
+        "epsilon": "m",
+        "contact_modulus": "Pa",
+    }
+
+    def scalars(self) -> dict[str, Any]:
+        """Return both pull-offs and their ratio, the areas and forces at the largest approach (SI)."""
+        bem = self.bem.scalars()
+        peak = int(np.argmax(self.bem.approach))
+        winkler_pull, bem_pull = self.winkler.pull_off_force, bem["pull_off_force"]
+        bem_area, winkler_area = float(self.bem.contact_area[peak]), float(self.winkler.contact_area[peak])
+        return {
+            "winkler_pull_off_force": winkler_pull,
+            "bem_pull_off_force": bem_pull,
+            "pull_off_ratio": winkler_pull / bem_pull if bem_pull > 0 else None,
+            "winkler_pull_off_approach": self.winkler.pull_off_approach,
+            "bem_pull_off_approach": bem["pull_off_approach"],
+            "winkler_max_contact_area": winkler_area,
+            "bem_max_contact_area": bem_area,
+            "contact_area_ratio": winkler_area / bem_area if bem_area > 0 else None,
+            "winkler_max_force": float(self.winkler.force[peak]),
+            "bem_max_force": float(self.bem.force[peak]),
+            "max_approach": float(self.bem.approach[peak]),
+            "bem_dissipated_energy": bem["dissipated_energy"],
+            "bem_jumps": bem["jumps"],
+            "work_of_adhesion": bem["work_of_adhesion"],
+            "epsilon": bem["interaction_length"],
+            "contact_modulus": self.bem.contact_modulus,
+            "converged": self.bem.converged,
+        }
+
+    def to_xarray(self):
+        """Return both curves against the BEM's steps (dimension ``step``) and the BEM's gap maps."""
+        import xarray as xr
+
+        data = {
+            "approach": ("step", self.bem.approach, {"units": "m"}),
+            "bem_force": ("step", self.bem.force, {"units": "N"}),
+            "winkler_force": ("step", self.winkler.force, {"units": "N"}),
+            "bem_contact_area": ("step", self.bem.contact_area, {"units": "m^2"}),
+            "winkler_contact_area": ("step", self.winkler.contact_area, {"units": "m^2"}),
+            "bem_interaction_area": ("step", self.bem.interaction_area, {"units": "m^2"}),
+            "winkler_interaction_area": ("step", self.winkler.interaction_area, {"units": "m^2"}),
+            "bem_jump": ("step", self.bem.jump),
+        }
+        attributes = {k: v for k, v in self.scalars().items() if v is not None}
+        return xr.Dataset(data, attrs=attributes)
+
+
+def winkler_beside_bem(
+    topography: Topography,
+    material: Material,
+    counter_body: Material | None = None,
+    *,
+    approach: Sequence[float],
+    counter_topography: Topography | None = None,
+    layer_thickness: float = 50e-9,
+    epsilon: float = 2e-9,
+    surface_energy: float | None = None,
+    counter_surface_energy: float | None = None,
+    readings: Readings | None = None,
+    resample: bool = False,
+    boundary: str = "free",
+    tolerance: float = 1e-6,
+) -> WinklerBesideBEM:
+    """Run paper 000's Winkler-Lennard-Jones model and the adhesive BEM on one surface and programme.
+
+    The Winkler model is built as the friction model builds it
+    (:func:`~roughcontact.winkler_lj_model`: composite surface, E of eq. 1, dgamma from
+    the surface energies by ``readings.work_of_adhesion``); the BEM solves that composite surface
+    on an elastic half-space of contact modulus E with ``LennardJones(dgamma, epsilon)``, the law
+    of eq. 7 with the gap counted from epsilon (:func:`~roughcontact.contact.solve_adhesive`).
+
+    Parameters
+    ----------
+    topography, material, counter_body, counter_topography, layer_thickness, epsilon,
+    surface_energy, counter_surface_energy, readings, resample :
+        As :func:`~roughcontact.winkler_lj_model` (defaults: paper 000's 50 nm, 2 nm).
+    approach : sequence of float
+        The flat's approach [m] from the first touch, e.g. loading then unloading
+        ``[-4e-9, ..., 4e-9, ..., -4e-9]``; the BEM continues the last stroke to detachment.
+    boundary : {"free", "periodic"}
+        The BEM window's boundary (default free: a tip is not periodic).
+    tolerance : float
+        The BEM's tolerance (force imbalance of a pixel relative to the peak tension).
+
+    Returns
+    -------
+    WinklerBesideBEM
+    """
+    model = winkler_lj_model(
+        topography,
+        material,
+        counter_body,
+        layer_thickness=layer_thickness,
+        counter_topography=counter_topography,
+        epsilon=epsilon,
+        surface_energy=surface_energy,
+        counter_surface_energy=counter_surface_energy,
+        readings=readings,
+        resample=resample,
+    )
+    law = LennardJones(model.work_of_adhesion, model.epsilon)
+    bem = solve_adhesive(
+        model.topography,
+        model.contact_modulus,
+        law,
+        approach=approach,
+        boundary=boundary,
+        tolerance=tolerance,
+    )
+    return WinklerBesideBEM(winkler=model.normal_curve(bem.approach), bem=bem)
+
+
+@renamed(counter="counter_body", load="normal_force", counter_surface="counter_topography")
+def simulate_mu(
+    scans: Mapping[str, Sequence[Topography]],
+    material: Material,
+    counter_body: Material | None = None,
+    *,
+    normal_force: float,
+    counter_topography: Topography | None = None,
+    model_options: Mapping[str, Any] | None = None,
+) -> dict[str, np.ndarray]:
+    """Simulate mu for every scan of every sample with the Winkler-Lennard-Jones model.
+
+    Parameters
+    ----------
+    scans : mapping of str to sequence of Topography
+        Scans per sample (paper 000: seven 5 um x 5 um polysilicon scans per sample).
+    material, counter_body : Material
+        Sample and counter-body (tip).
+    normal_force : float
+        Normal load [N] (paper 000: 10 uN).
+    counter_topography : Topography, optional
+        Tip topography merged with each scan.
+    model_options : mapping
+        Keyword arguments of :func:`roughcontact.winkler_lj.winkler_lj_model` (``layer_thickness``
+        is required; :func:`paper000_model_options` gives the paper's).
+
+    Returns
+    -------
+    dict of str to ndarray
+        mu per scan, per sample.
+    """
+    return {
+        name: np.array(
+            [
+                winkler_lj_model(
+                    scan,
+                    material,
+                    counter_body,
+                    counter_topography=counter_topography,
+                    **dict(model_options or {}),
+                )
+                .solve(normal_force)
+                .mu
+                for scan in sample_scans
+            ]
+        )
+        for name, sample_scans in scans.items()
+    }

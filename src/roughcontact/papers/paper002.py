@@ -1,0 +1,229 @@
+"""Seed paper 002's printed inputs and numbers, and the paper-vs-ours table.
+
+The printed spectral moments (eqs. 1-3) and Table I reproduce R_asp, sigma_s, omega_c and psi with
+the standard composite modulus 1/E' = sum (1 - nu^2)/E; eq. 7 as printed, with (1 - nu), does not,
+and the printed E' = 8.31 GPa matches neither form (``docs/asperity.md``).
+
+References
+----------
+Seed paper 002, "Contact stress analysis of lightly compressed thin films: modeling and
+experimentation", eqs. 1-9, Table I and section IV (DOI not given in the seed text).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..asperity.greenwood_williamson import gaussian_summits
+from ..asperity.load_unload import StatisticalLoadUnload, statistical_load_unload
+from ..asperity.parameters import AsperityParameters, asperity_parameters
+from ..errors import InputError
+from ..materials import get_material
+from ..topography import Topography
+from ..topography.generate import gaussian_random, raised_island
+from ..topography.statistics import mccool_parameters
+
+MOMENTS = {"m0": 0.00213279e-12, "m2": 0.00230023, "m4": 0.0171036e12}
+"""Printed spectral moments (eqs. 1-3) in SI: m0 [m^2], m2 [-], m4 [1/m^2]."""
+
+ISLAND_SIDE = 25e-6
+"""Side of the raised square [m] (section II)."""
+
+FILM_THICKNESS = 6.3e-6
+"""Measured island thickness [m] (section II)."""
+
+PEAK_FORCE = 1000e-6
+"""Peak load of the compression test [N] (section III)."""
+
+REFERENCE_FORCE = 25e-6
+"""Load at which the interference is taken as zero [N] (section III)."""
+
+TIP_ROUGHNESS = 10e-9
+"""Upper bound of the flat tip's roughness [m] (section III), used for the psi = 2.06 remark."""
+
+PRINTED = {
+    "summit_radius": 5.08e-6,
+    "summit_height_std": 0.0431e-6,
+    "contact_modulus": 8.31e9,
+    "contact_pressure_factor": 0.544,
+    "critical_interference": 0.0125e-6,
+    "plasticity_index": 1.86,
+    "plasticity_index_rough_tip": 2.06,
+}
+"""The values printed in section IV (SI)."""
+
+
+@dataclass(frozen=True)
+class ComparisonRow:
+    """One row of the paper-vs-ours table (SI).
+
+    Attributes
+    ----------
+    key : str
+        Name of the quantity.
+    symbol : str
+        Its symbol in the paper, with the equation.
+    unit : str
+        SI unit ("" for dimensionless).
+    paper : float or None
+        Printed value (None where the paper prints none).
+    standard : float
+        Ours with the standard composite modulus (1 - nu^2).
+    printed_eq7 : float
+        Ours with eq. 7 as printed (1 - nu).
+    """
+
+    key: str
+    symbol: str
+    unit: str
+    paper: float | None
+    standard: float
+    printed_eq7: float
+
+    @property
+    def deviation(self) -> float | None:
+        """Relative deviation of the standard value from the paper's [-] (None without a printed value)."""
+        return None if self.paper is None else self.standard / self.paper - 1.0
+
+
+def comparison() -> list[ComparisonRow]:
+    """Recompute section IV of paper 002 from its printed moments and Table I, in both readings of eq. 7.
+
+    The last row is the plasticity index for a 10 nm rough tip: the paper's 2.06 follows from adding
+    the roughnesses linearly (sigma_s + 10 nm); the "standard" column adds them in quadrature (the
+    sound combination of independent roughnesses), the "printed_eq7" column linearly with the
+    standard modulus, which reproduces 2.06.
+
+    Returns
+    -------
+    list of ComparisonRow
+    """
+    sample, tip = get_material("SU-8"), get_material("diamond flat tip")
+    ours = {
+        form: asperity_parameters(**MOMENTS, sample=sample, counter_body=tip, modulus_form=form)
+        for form in ("standard", "paper002_eq7_printed")
+    }
+    standard, printed = ours["standard"], ours["paper002_eq7_printed"]
+    rows = [
+        ComparisonRow("bandwidth", "alpha = m0 m4 / m2^2", "", None, standard.bandwidth, printed.bandwidth),
+        ComparisonRow(
+            "summit_density", "eta (McCool)", "1/m^2", None, standard.summit_density, printed.summit_density
+        ),
+    ]
+    symbols = {
+        "summit_radius": ("R_asp (eq. 4)", "m"),
+        "summit_height_std": ("sigma_s (eq. 5)", "m"),
+        "contact_modulus": ("E' (eq. 7)", "Pa"),
+        "contact_pressure_factor": ("K (eq. 8)", ""),
+        "critical_interference": ("omega_c (eq. 6)", "m"),
+        "plasticity_index": ("psi (eq. 9)", ""),
+    }
+    for key, (symbol, unit) in symbols.items():
+        rows.append(
+            ComparisonRow(key, symbol, unit, PRINTED[key], getattr(standard, key), getattr(printed, key))
+        )
+    rows.append(
+        ComparisonRow(
+            "critical_load",
+            "W_c = P_c (Hertz at omega_c)",
+            "N",
+            None,
+            standard.critical_load,
+            printed.critical_load,
+        )
+    )
+    sigma, omega_c = standard.summit_height_std, standard.critical_interference
+    rows.append(
+        ComparisonRow(
+            "plasticity_index_rough_tip",
+            "psi, 10 nm tip (quadrature | linear)",
+            "",
+            PRINTED["plasticity_index_rough_tip"],
+            math.sqrt(math.hypot(sigma, TIP_ROUGHNESS) / omega_c),
+            math.sqrt((sigma + TIP_ROUGHNESS) / omega_c),
+        )
+    )
+    return rows
+
+
+def parameters() -> AsperityParameters:
+    """Return the asperity parameters of SU-8 against the diamond flat tip from the printed moments (SI)."""
+    return asperity_parameters(
+        **MOMENTS, sample=get_material("SU-8"), counter_body=get_material("diamond flat tip")
+    )
+
+
+def statistical_curve(law: str = "kogut_etsion") -> StatisticalLoadUnload:
+    """Return the statistical load-unload of the paper's island (Gaussian summits of the printed moments).
+
+    Table I's SU-8 against the diamond flat tip, 1000 uN on the 25 x 25 um square, interference zero at
+    25 uN, as in the paper's Fig. 7.
+
+    Parameters
+    ----------
+    law : str
+        Loading law of one summit (:data:`roughcontact.asperity.load_unload.LOADING_LAWS`).
+
+    Returns
+    -------
+    StatisticalLoadUnload
+    """
+    su8 = get_material("SU-8")
+    return statistical_load_unload(
+        gaussian_summits(mccool_parameters(**MOMENTS)),
+        contact_modulus=parameters().contact_modulus,
+        hardness=su8.hardness,
+        poissons_ratio=su8.poissons_ratio,
+        yield_strength=su8.yield_strength,
+        max_force=PEAK_FORCE,
+        nominal_area=ISLAND_SIDE**2,
+        reference_force=REFERENCE_FORCE,
+        law=law,
+    )
+
+
+def paper002_island(
+    shape: int | tuple[int, int] = 64, *, seed: int = 1, margin: float = 2.5e-6
+) -> Topography:
+    """Return a synthetic stand-in for paper 002's measured island (the scan itself is not published).
+
+    A raised square of side 25 um and thickness 6.3 um
+    (:func:`~roughcontact.topography.generate.raised_island`) in a window ``margin`` wider on each
+    side. Its top carries Gaussian-correlated roughness with the paper's m0 exactly (Rq = 46.2 nm)
+    and the correlation length xi = sqrt(2 m0 / m2) = 1.36 um, which gives the paper's m2 for a
+    Gaussian autocorrelation (m2 = 2 m0 / xi^2). A Gaussian ACF has the bandwidth alpha = 3 (the
+    paper's surface: 6.9), so m4 and R_asp differ from the printed ones.
+
+    Parameters
+    ----------
+    shape : int or (int, int)
+        Grid points (64 runs in about a second per step; 128 resolves xi with 4 pixels).
+    seed : int
+        Seed of the roughness.
+    margin : float
+        Substrate margin around the island [m].
+
+    Returns
+    -------
+    Topography
+        Non-periodic heights [m], island top about 6.3 um above the substrate.
+    """
+    if not margin >= 0:
+        raise InputError("margin", f"must be >= 0, got {margin!r}.", "give a margin in m.")
+    shape = (shape, shape) if isinstance(shape, int) else tuple(shape)
+    size = ISLAND_SIDE + 2.0 * margin
+    flat = raised_island(shape, size, island_size=ISLAND_SIDE, thickness=FILM_THICKNESS)
+    moments = MOMENTS
+    correlation = math.sqrt(2.0 * moments["m0"] / moments["m2"])
+    roughness = gaussian_random(
+        shape, size, rms_height=1.0, correlation_length=correlation, seed=seed
+    ).heights
+    on_island = flat.heights > 0.5 * FILM_THICKNESS
+    top = roughness[on_island] - roughness[on_island].mean()
+    heights = flat.heights.copy()
+    heights[on_island] += top * math.sqrt(moments["m0"] / np.mean(top**2))
+    info = dict(flat.info, name="paper 002 island (synthetic)", correlation_length=correlation, seed=seed)
+    return flat.with_heights(heights, step="Gaussian-correlated roughness with paper 002's m0, m2", info=info)
