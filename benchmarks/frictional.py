@@ -7,7 +7,7 @@ Case 1, paper 001's HDPE loop: the generated HDPE ball (``paper001.roughness("HD
 wafer (Dundurs beta = -0.003), F0 = 75 mN, Table 1's stroke and mu, ``--cycles`` cycles of
 ``--steps-per-stroke`` steps (paper: 4 x 2 x 25 = 200 steps; the frictional start adds 10 loading
 steps), through
-:func:`roughcontact.papers.paper001.presliding` without step control (the same steps in every run):
+:func:`roughcontact.contact.presliding.presliding` without step control (the same steps in every run):
 
 * ``goodman``: ``coupling=False`` (no normal-tangential coupling, frictionless normal loading);
 * ``coupled, frictionless start``: coupling on, F0 applied without friction (the previous default);
@@ -38,6 +38,7 @@ import time
 import numpy as np
 
 from roughcontact.contact import load_path, solve_frictional
+from roughcontact.contact.presliding import POINT_NAMES, presliding
 from roughcontact.materials import get_material
 from roughcontact.papers import paper001
 
@@ -51,7 +52,7 @@ def _window(size: int, pixels: int):
 def _loop(window, cycles, steps_per_stroke, **variant):
     stroke, mu = paper001.table1("HDPE", FORCE)
     start = time.perf_counter()
-    case = paper001.presliding(
+    case = presliding(
         window,
         get_material("HDPE"),
         get_material("silicon wafer"),
@@ -60,6 +61,7 @@ def _loop(window, cycles, steps_per_stroke, **variant):
         stroke=stroke,
         cycles=cycles,
         steps_per_stroke=steps_per_stroke,
+        radius=paper001.RADIUS,
         max_stick_change=None,
         **variant,
     )
@@ -73,7 +75,7 @@ def _loop(window, cycles, steps_per_stroke, **variant):
         "loading_steps": 0 if loading is None else loading.steps,
         "iterations_per_step": float(result.iterations.mean()),
         "passes_per_step": float(result.coupling_iterations.mean()),
-        "K_L": [scalars[f"K_L_{p}"] for p in paper001.POINT_NAMES],
+        "K_L": [scalars[f"K_L_{p}"] for p in POINT_NAMES],
         "locked_in_stick_fraction": scalars["locked_in_stick_fraction"],
     }
 

@@ -46,7 +46,7 @@ _HOMES = {
     "load_unload": "roughcontact.contact",
     "solve_winkler_lj": "roughcontact.winkler_lj",
     "statistical_load_unload": "roughcontact.asperity",
-    "presliding": "roughcontact.papers.paper001",
+    "presliding": "roughcontact.contact",
     "analyse_loop": "roughcontact.experiment.friction_loop",
     "oliver_pharr": "roughcontact.experiment.nanoindentation",
     "load_study": "roughcontact.study",

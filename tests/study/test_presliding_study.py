@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
+from roughcontact.contact.presliding import presliding
 from roughcontact.materials import Material
 from roughcontact.papers import paper001
 from roughcontact.study import load_study
@@ -121,7 +122,7 @@ def test_scalars_equal_a_direct_paper001_call(shrunk, tmp_path):
 
     ball = build_topography(spec, None)
     assert ball.shape == (128, 128) and spec.seed == case.seeds["hdpe_ball"]
-    direct = paper001.presliding(
+    direct = presliding(
         paper001.central_window(ball, 40),
         Material(0.98e9, 0.5, "HDPE"),
         Material(130e9, 0.28, "silicon wafer"),

@@ -51,7 +51,7 @@ def _frictional():
 
 
 def _presliding():
-    from roughcontact.papers.paper001 import presliding
+    from roughcontact.contact.presliding import presliding
 
     return presliding(
         _ball(),
@@ -60,6 +60,7 @@ def _presliding():
         normal_force=2e-3,
         friction_coefficient=0.1,
         stroke=0.3e-6,
+        radius=5e-3,
         cycles=2,
         steps_per_stroke=10,
     )

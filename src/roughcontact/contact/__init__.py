@@ -7,7 +7,9 @@ from the unloaded state),
 ``adhesive`` (:func:`solve_adhesive`: adhesive contact through an approach programme, with the
 interaction laws of ``interaction``: :class:`MaugisDugdale`, :class:`Exponential`,
 :class:`LennardJones`),
-``plastic`` (:func:`load_unload`: elastic-perfectly-plastic load-unload), ``sweep``
+``plastic`` (:func:`load_unload`: elastic-perfectly-plastic load-unload), ``presliding``
+(:func:`presliding`: a rough ball under a tangential programme, its last loop and Mindlin's smooth
+ball, paper 001's model), ``sweep``
 (:func:`load_path`: warm-started sequences of normal solves), ``paths`` (tangential programmes:
 paper 001's stroke path, symmetric cycles, a CSV) and their results, each with ``scalars()``,
 ``UNITS`` and ``to_xarray()`` (:mod:`roughcontact.results`).
@@ -20,6 +22,7 @@ from .interaction import Exponential, LennardJones, MaugisDugdale
 from .normal import compliance_for, solve_normal
 from .paths import read_path_csv, read_programme_csv, stroke_path, symmetric_path
 from .plastic import LoadUnloadResult, load_unload
+from .presliding import PreslidingResult, presliding
 from .result import NormalContactResult
 from .sweep import load_path
 from .tangential import solve_tangential
@@ -32,11 +35,13 @@ __all__ = [
     "LoadUnloadResult",
     "MaugisDugdale",
     "NormalContactResult",
+    "PreslidingResult",
     "TangentialPathResult",
     "TangentialState",
     "compliance_for",
     "load_path",
     "load_unload",
+    "presliding",
     "solve_frictional",
     "read_path_csv",
     "read_programme_csv",

@@ -3,7 +3,7 @@
 * :mod:`.paper000`: the SiO2 tip on LPCVD polysilicon of paper 000 (samples, synthetic scans and
   tip, the model's inputs; :func:`~.paper000.paper000_simulation`);
 * :mod:`.paper001`: the rough polymer ball on a wafer of paper 001 (Tables 1-2, the generated
-  balls, :func:`~.paper001.presliding` with its :class:`~.paper001.PreslidingResult`, and the
+  balls, :func:`~.paper001.run_case` on the model of :mod:`roughcontact.contact.presliding`, and the
   Mindlin reference of eqs. 10-12 in both readings, :func:`~.paper001.paper001_mindlin`);
 * :mod:`.paper002`: the SU-8 island of paper 002 (printed moments, Table I, section IV's numbers
   and the paper-vs-ours table, the synthetic island :func:`~.paper002.paper002_island`);

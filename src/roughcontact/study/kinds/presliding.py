@@ -3,7 +3,7 @@ r"""Study kind ``presliding``: a rough ball on a flat under a tangential program
 One case is one rough ball (heights *with* its spherical shape, as paper 001 Fig. 4) pressed on a
 flat with a constant normal force F0 and taken through a tangential programme: paper 001's (give
 ``stroke``) or your own (give ``path``, a CSV file). It wraps
-:func:`roughcontact.papers.paper001.presliding`:
+:func:`roughcontact.contact.presliding.presliding`:
 
 1. Normal contact (paper 001 eq. 4): FFT boundary elements on a free (non-periodic) grid, load
    control, complementarity p = 0 where g > 0 and p > 0 where g = 0, with the integral of p equal
@@ -34,7 +34,7 @@ flat with a constant normal force F0 and taken through a tangential programme: p
    those scalars are NaN and ``analysis_note`` says why.
 4. Mindlin's smooth-ball reference for a ball of ``radius`` (eqs. 10-12): a^3 = 3 F0 R / (4 E_s)
    with 1/E_s = sum (1 - nu^2)/E (eq. 11), and K_L = 8 a G (1 - F_x/(mu_f F0))^(1/3) (eq. 12)
-   at the same points, in two readings (:func:`roughcontact.papers.paper001.paper001_mindlin`):
+   at the same points, in two readings (:func:`roughcontact.contact.presliding.mindlin_reference`):
    ``johnson``, the textbook one, 1/G = 1/G* = sum (2 - nu)/G_i, to which eq. 12's prefactor 8
    belongs; ``printed``, the paper's 1/G_s = sum (2 - nu)(1 + nu)/(2E) = sum (2 - nu)/(4 G_i),
    which makes K_L exactly 4 times Johnson's (a known typo of the paper, kept to reproduce its
@@ -48,8 +48,8 @@ paper argues the polymer balls stay elastic) without visco-elasticity (so the me
 curved corners are absent); static and kinetic friction coefficients are equal; the counter-face
 (paper: a silicon wafer) is smooth; no ``counter_body`` means a rigid flat.
 
-Scalars: :meth:`roughcontact.papers.paper001.PreslidingResult.scalars` (units in its ``UNITS``).
-Dataset: :meth:`~roughcontact.papers.paper001.PreslidingResult.to_xarray` (every step from the
+Scalars: :meth:`roughcontact.contact.presliding.PreslidingResult.scalars` (units in its ``UNITS``).
+Dataset: :meth:`~roughcontact.contact.presliding.PreslidingResult.to_xarray` (every step from the
 unloaded start, the pressure map, the normalised shear sqrt(q_x^2 + q_y^2)/(mu_f p) at the points
 A, B, C of the last loop, or at the last reversals and step of your programme, in single
 precision). With few steps in the pre-sliding part two points can share a step, which the
@@ -83,9 +83,9 @@ import numpy as np
 from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
-from ...papers.paper001 import MINDLIN_READINGS as READINGS
-from ...papers.paper001 import POINT_NAMES as POINTS
-from ...papers.paper001 import PreslidingResult
+from ...contact.presliding import MINDLIN_READINGS as READINGS
+from ...contact.presliding import POINT_NAMES as POINTS
+from ...contact.presliding import PreslidingResult
 from ...units import format_si
 from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Force, ForceUnit, Length, LengthUnit, MaterialName, Strict, TopographyName
@@ -222,7 +222,8 @@ def check(parameters: PreslidingParameters) -> None:
 
 def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
     """Run the programme on one ball at one load; scalars and dataset of :class:`PreslidingResult`."""
-    from ...papers.paper001 import central_window, presliding
+    from ...contact.presliding import presliding
+    from ...papers.paper001 import central_window
 
     surface = inputs.topography(parameters.topography)
     if parameters.window is not None:
@@ -279,7 +280,7 @@ def _measured(context):
     machine) leaves the measured overlay out rather than failing the figure.
     """
     from ...experiment.friction_loop import analyse_loop, read_loop_csv
-    from ...papers.paper001 import POINTS as FRACTIONS
+    from ...contact.presliding import POINTS as FRACTIONS
 
     compare = context.compare
     if compare is None or not Path(compare.measured_loop).is_file():
