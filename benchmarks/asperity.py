@@ -23,8 +23,7 @@ from _timing import best_of
 from roughcontact.asperity import LOADING_LAWS
 from roughcontact.materials import get_material
 from roughcontact.papers import paper002
-from roughcontact.papers.paper002 import paper002_island
-from roughcontact.papers.thin_film_island import compress_island
+from roughcontact.papers.paper002 import compress_island, paper002_island
 
 SU8, SILICON = get_material("SU-8"), get_material("silicon wafer")
 PARAMETERS = paper002.parameters()

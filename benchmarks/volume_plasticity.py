@@ -31,8 +31,7 @@ import peers
 from roughcontact.asperity.elastic_plastic import critical_interference, critical_load
 from roughcontact.contact.volume_plastic import solve_elastic_plastic
 from roughcontact.materials import Material, get_material
-from roughcontact.papers.paper002 import paper002_island
-from roughcontact.papers.thin_film_island import compress_island
+from roughcontact.papers.paper002 import compress_island, paper002_island
 from roughcontact.topography.generate import sphere
 
 E, NU, Y, R = 210e9, 0.3, 1e9, 10e-3

@@ -1,7 +1,8 @@
 """Names of release 0.1 that moved or were renamed: kept one release, with a DeprecationWarning.
 
 :func:`moved` serves a module's ``__getattr__`` (a name now defined elsewhere), :func:`moved_module`
-stands in for a whole module that moved; :func:`renamed`
+stands in for a whole module that moved, :func:`folded` takes keywords that became one option object;
+:func:`renamed`
 wraps a function whose keyword arguments were respelled (``counter=`` is now ``counter_body=``).
 """
 
@@ -63,6 +64,32 @@ def renamed(**spellings: str) -> Callable:
                         stacklevel=2,
                     )
                     kwargs[new] = kwargs.pop(old)
+            return function(*args, **kwargs)
+
+        return wrapper
+
+    return decorate
+
+
+def folded(target: str, names: tuple[str, ...], fold: Callable[..., Any]) -> Callable:
+    """Decorate a function whose keywords ``names`` became one option object, the keyword ``target``.
+
+    A call with any of the old keywords warns and gets ``target=fold(old_target, **old_keywords)``
+    (``old_target`` is what the call gave for ``target``, or None).
+    """
+
+    def decorate(function: Callable) -> Callable:
+        @functools.wraps(function)
+        def wrapper(*args, **kwargs):
+            old = {name: kwargs.pop(name) for name in names if name in kwargs}
+            if old:
+                warnings.warn(
+                    f"{function.__name__}({', '.join(f'{n}=...' for n in old)}) is now given as "
+                    f"{target}=...; the old spelling goes in the next release.",
+                    DeprecationWarning,
+                    stacklevel=2,
+                )
+                kwargs[target] = fold(kwargs.get(target), **old)
             return function(*args, **kwargs)
 
         return wrapper

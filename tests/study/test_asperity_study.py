@@ -18,8 +18,7 @@ import pytest
 
 from roughcontact.asperity.parameters import asperity_parameters
 from roughcontact.materials import get_material
-from roughcontact.papers.paper002 import paper002_island
-from roughcontact.papers.thin_film_island import compress_island
+from roughcontact.papers.paper002 import compress_island, paper002_island
 from roughcontact.study import load_study
 from roughcontact.study.config import StudyError
 from roughcontact.study.inputs import CaseInputs
@@ -271,7 +270,7 @@ def test_load_unload_with_volume_plasticity_equals_compress_island_and_keeps_res
     assert float(maps.isel(map=0).max()) == 0.0 and float(maps.isel(map=-1).max()) > 0.0
     section = output.dataset["von_mises_section"]
     assert section.sizes["map"] == maps.sizes["map"] and section.sizes["z"] == 8
-    assert output.dataset.attrs["stress_depth"] == pytest.approx(direct.path.depths[0])
+    assert output.dataset.attrs["stress_depth"] == pytest.approx(direct.volume.depths[0])
 
 
 def test_load_unload_refuses_an_unknown_plasticity(tmp_path):

@@ -32,7 +32,8 @@ def test_old_and_new_spelling_together_is_an_error():
     [
         ("roughcontact.analytic.mindlin", "paper001_mindlin", "roughcontact.papers.paper001"),
         ("roughcontact.experiment", "paper000_simulation", "roughcontact.papers.paper000"),
-        ("roughcontact.papers.thin_film_island", "paper002_island", "roughcontact.papers.paper002"),
+        ("roughcontact.papers.paper001", "presliding", "roughcontact.contact.presliding"),
+        ("roughcontact.experiment.compare", "simulate_mu", "roughcontact.papers.paper000"),
     ],
 )
 def test_a_moved_name_is_found_at_its_old_place_with_a_warning(old, name, new):
@@ -49,7 +50,9 @@ def test_a_moved_name_is_found_at_its_old_place_with_a_warning(old, name, new):
     ("old", "new"),
     [
         ("roughcontact.models.paper001", "roughcontact.papers.paper001"),
-        ("roughcontact.models.thin_film_island", "roughcontact.papers.thin_film_island"),
+        ("roughcontact.models.thin_film_island", "roughcontact.papers.paper002"),
+        ("roughcontact.papers.thin_film_island", "roughcontact.papers.paper002"),
+        ("roughcontact.contact.plastic", "roughcontact.contact.load_unload"),
         ("roughcontact.friction.lennard_jones", "roughcontact.contact.lennard_jones"),
         ("roughcontact.friction.winkler_lj", "roughcontact.winkler_lj"),
         ("roughcontact.friction.readings", "roughcontact.winkler_lj.readings"),
@@ -71,3 +74,17 @@ def test_a_name_of_the_old_friction_package_is_found_with_a_warning():
 
     with pytest.warns(DeprecationWarning, match="roughcontact.winkler_lj.winkler_lj_model"):
         assert old.winkler_lj_model is winkler_lj_model
+
+
+def test_load_unload_takes_release_0_1_keywords_with_a_warning():
+    from roughcontact.contact.load_unload import SurfacePlasticity, load_unload
+    from roughcontact.topography.generate import sphere
+
+    ball = sphere((16, 16), (4e-6, 4e-6), radius=1e-5, kind="paraboloid")
+    material = get_material("SU-8")
+    new = load_unload(ball, material, max_force=1e-5, steps=3, plasticity=SurfacePlasticity(2e8))
+    with pytest.warns(
+        DeprecationWarning, match=r"load_unload\(hardness=\.\.\.\) is now given as plasticity="
+    ):
+        old = load_unload(ball, material, max_force=1e-5, steps=3, hardness=2e8)
+    assert old.scalars() == new.scalars()

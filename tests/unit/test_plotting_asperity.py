@@ -4,8 +4,7 @@ import numpy as np
 import pytest
 
 from roughcontact.materials import get_material
-from roughcontact.papers.paper002 import paper002_island
-from roughcontact.papers.thin_film_island import compress_island
+from roughcontact.papers.paper002 import compress_island, paper002_island
 from roughcontact.plotting import plot_area_load, plot_load_interference, plot_von_mises_maps
 
 CURVE = {

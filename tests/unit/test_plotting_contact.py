@@ -3,7 +3,7 @@
 import numpy as np
 
 from roughcontact.contact import solve_normal
-from roughcontact.contact.plastic import load_unload
+from roughcontact.contact.load_unload import load_unload
 from roughcontact.elasticity.stress import subsurface_stress
 from roughcontact.materials import Material
 from roughcontact.plotting import (

@@ -75,24 +75,24 @@ def _load_unload():
 
 
 def _volume_load_unload():
-    from roughcontact.contact import load_unload
+    from roughcontact.contact import VolumePlasticity, load_unload
     from roughcontact.topography.generate import sphere
 
     ball = sphere((16, 16), (1e-4, 1e-4), radius=1e-3, kind="paraboloid")
     steel = get_material("SU-8")
-    return load_unload(ball, steel, max_force=2e-3, steps=2, plasticity="volume", depth=5e-5, layers=6)
+    return load_unload(
+        ball, steel, max_force=2e-3, steps=2, plasticity=VolumePlasticity(depth=5e-5, layers=6)
+    )
 
 
 def _volume_island():
-    from roughcontact.papers.paper002 import paper002_island
-    from roughcontact.papers.thin_film_island import compress_island
+    from roughcontact.papers.paper002 import compress_island, paper002_island
 
     return compress_island(paper002_island(16, seed=1), get_material("SU-8"), plasticity="volume", layers=4)
 
 
 def _island():
-    from roughcontact.papers.paper002 import paper002_island
-    from roughcontact.papers.thin_film_island import compress_island
+    from roughcontact.papers.paper002 import compress_island, paper002_island
 
     return compress_island(paper002_island(16, seed=1), get_material("SU-8"))
 

@@ -7,7 +7,7 @@ import pytest
 
 from roughcontact.analytic import hertz
 from roughcontact.contact import solve_normal
-from roughcontact.contact.plastic import load_unload
+from roughcontact.contact.load_unload import SurfacePlasticity, load_unload
 from roughcontact.errors import InputError
 from roughcontact.materials import Material
 from roughcontact.topography.generate import sphere
@@ -22,7 +22,9 @@ def _ball(n=64, extent=4):
 
 
 def test_hardness_above_hertz_peak_is_elastic_and_reversible():
-    result = load_unload(_ball(), MATERIAL, max_force=FORCE, hardness=2 * HERTZ.peak_pressure, steps=4)
+    result = load_unload(
+        _ball(), MATERIAL, max_force=FORCE, plasticity=SurfacePlasticity(2 * HERTZ.peak_pressure), steps=4
+    )
     assert result.residual_interference == 0.0
     assert not result.plastic_deformation.any()
     peak = result.loading[-1]
@@ -36,7 +38,7 @@ def test_hardness_above_hertz_peak_is_elastic_and_reversible():
 
 def test_plastic_load_unload_caps_pressure_and_leaves_residual_interference():
     hardness = 0.7 * HERTZ.peak_pressure
-    result = load_unload(_ball(), MATERIAL, max_force=FORCE, hardness=hardness, steps=6)
+    result = load_unload(_ball(), MATERIAL, max_force=FORCE, plasticity=SurfacePlasticity(hardness), steps=6)
     peak = result.loading[-1]
     assert peak.force == pytest.approx(FORCE, rel=1e-6, abs=0)
     for step in result.loading + result.unloading:
@@ -59,7 +61,7 @@ def test_plastic_load_unload_caps_pressure_and_leaves_residual_interference():
 def test_fully_plastic_contact_carries_hardness_times_area():
     hardness = 0.2 * HERTZ.peak_pressure
     ball = _ball(96, extent=8)
-    result = load_unload(ball, MATERIAL, max_force=FORCE, hardness=hardness, steps=2)
+    result = load_unload(ball, MATERIAL, max_force=FORCE, plasticity=SurfacePlasticity(hardness), steps=2)
     peak = result.loading[-1]
     plastic_force = hardness * np.count_nonzero(peak.plastic_mask) * ball.pixel_area
     assert plastic_force / peak.force > 0.9  # nearly all the load sits at the cap

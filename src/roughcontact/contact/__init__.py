@@ -7,7 +7,8 @@ from the unloaded state),
 ``adhesive`` (:func:`solve_adhesive`: adhesive contact through an approach programme, with the
 interaction laws of ``interaction``: :class:`MaugisDugdale`, :class:`Exponential`,
 :class:`LennardJones`),
-``plastic`` (:func:`load_unload`: elastic-perfectly-plastic load-unload), ``presliding``
+``load_unload`` (:func:`load_unload`: elastic-plastic load-unload, the pressure capped at the
+hardness or J2 plasticity in the volume), ``presliding``
 (:func:`presliding`: a rough ball under a tangential programme, its last loop and Mindlin's smooth
 ball, paper 001's model), ``sweep``
 (:func:`load_path`: warm-started sequences of normal solves), ``paths`` (tangential programmes:
@@ -19,9 +20,9 @@ from .adhesive import solve_adhesive
 from .adhesive_result import AdhesiveResult
 from .frictional import solve_frictional
 from .interaction import Exponential, LennardJones, MaugisDugdale
+from .load_unload import LoadUnloadResult, SurfacePlasticity, VolumePlasticity, load_unload
 from .normal import compliance_for, solve_normal
 from .paths import read_path_csv, read_programme_csv, stroke_path, symmetric_path
-from .plastic import LoadUnloadResult, load_unload
 from .presliding import PreslidingResult, presliding
 from .result import NormalContactResult
 from .sweep import load_path
@@ -34,6 +35,8 @@ __all__ = [
     "LennardJones",
     "LoadUnloadResult",
     "MaugisDugdale",
+    "SurfacePlasticity",
+    "VolumePlasticity",
     "NormalContactResult",
     "PreslidingResult",
     "TangentialPathResult",

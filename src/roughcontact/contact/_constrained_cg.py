@@ -49,7 +49,7 @@ projected on the feasible set, with the box constraint of Almqvist et al. (2007)
 5. Load control: rescale the pressure to the target force (Polonsky-Keer; lazily, as a factor
    that the next iteration's passes apply while they read p and u). A cap is only
    supported under displacement control (the caller finds the approach of a force by root
-   finding, :mod:`roughcontact.contact.plastic`).
+   finding, :mod:`roughcontact.contact.load_unload`).
 
 Residual (scale-free: the same number in nm or m, at any load):
 

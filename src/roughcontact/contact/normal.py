@@ -10,7 +10,7 @@ ignored (Johnson 1985 sec. 13.1; with the Dundurs beta != 0 coupling see the tan
 
 The contact conditions are paper 001 eq. 4 (complementarity of gap and pressure); with a
 hardness the pressure is capped and the overlap becomes plastic deformation (paper 002's
-elastic-perfectly-plastic surface model, see :mod:`roughcontact.contact.plastic`).
+elastic-perfectly-plastic surface model, see :mod:`roughcontact.contact.load_unload`).
 """
 
 from __future__ import annotations

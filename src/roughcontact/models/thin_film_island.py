@@ -1,5 +1,5 @@
-"""Moved to :mod:`roughcontact.papers.thin_film_island` (kept one release, with a DeprecationWarning)."""
+"""Moved to :mod:`roughcontact.papers.paper002` (kept one release, with a DeprecationWarning)."""
 
 from .._deprecation import moved_module
 
-moved_module(__name__, "roughcontact.papers.thin_film_island")
+moved_module(__name__, "roughcontact.papers.paper002")

@@ -7,8 +7,8 @@
   Mindlin reference of eqs. 10-12 in both readings, :func:`~.paper001.paper001_mindlin`);
 * :mod:`.paper002`: the SU-8 island of paper 002 (printed moments, Table I, section IV's numbers
   and the paper-vs-ours table, the synthetic island :func:`~.paper002.paper002_island`);
-* :mod:`.thin_film_island`: paper 002's deterministic model, the BEM elastic-plastic flat-punch
-  compression of the island.
+  and its deterministic model, the island under a flat punch (:func:`~.paper002.compress_island`
+  on :func:`roughcontact.contact.load_unload.load_unload`).
 
 A scenario lives here, not in ``contact/``, ``asperity/`` or ``friction/``, because it combines a
 topography, materials, a contact model and its analysis. Nothing here reads or writes files,

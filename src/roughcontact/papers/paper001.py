@@ -28,7 +28,8 @@ paper's or a user's); :func:`run_case` runs one ball and load of Table 1 with it
 from __future__ import annotations
 
 from .._deprecation import moved, renamed
-from ..contact.presliding import MindlinReference, PreslidingResult, mindlin_reference, presliding
+from ..contact.presliding import MindlinReference, PreslidingResult, mindlin_reference
+from ..contact.presliding import presliding as _presliding
 from ..errors import InputError
 from ..materials import get_material
 from ..topography import Topography, generate
@@ -134,7 +135,7 @@ def run_case(
         stroke = table[0] if stroke is None else stroke
         friction_coefficient = table[1] if friction_coefficient is None else friction_coefficient
     surface = central_window(scan if scan is not None else roughness(name, seed=seed, pixels=pixels), window)
-    return presliding(
+    return _presliding(
         surface,
         get_material(name),
         get_material("silicon wafer"),
@@ -161,7 +162,6 @@ _MOVED = dict.fromkeys(
         "NORMALISATIONS",
         "POINTS",
         "POINT_NAMES",
-        "PreslidingResult",
         "loop_from_start",
         "presliding",
     ),

@@ -20,8 +20,15 @@ import numpy as np
 from ..asperity.greenwood_williamson import gaussian_summits
 from ..asperity.load_unload import StatisticalLoadUnload, statistical_load_unload
 from ..asperity.parameters import AsperityParameters, asperity_parameters
+from ..contact.load_unload import (
+    LoadUnloadResult,
+    SurfacePlasticity,
+    VolumePlasticity,
+    force_targets,
+    load_unload,
+)
 from ..errors import InputError
-from ..materials import get_material
+from ..materials import Material, get_material
 from ..topography import Topography
 from ..topography.generate import gaussian_random, raised_island
 from ..topography.statistics import mccool_parameters
@@ -227,3 +234,100 @@ def paper002_island(
     heights[on_island] += top * math.sqrt(moments["m0"] / np.mean(top**2))
     info = dict(flat.info, name="paper 002 island (synthetic)", correlation_length=correlation, seed=seed)
     return flat.with_heights(heights, step="Gaussian-correlated roughness with paper 002's m0, m2", info=info)
+
+
+IslandCompression = LoadUnloadResult
+"""What :func:`compress_island` returns, with either plastic model: the one load-unload result."""
+
+IslandVolumeCompression = LoadUnloadResult
+"""The same result with volume plasticity (release 0.1 had two classes)."""
+
+
+def compress_island(
+    topography: Topography,
+    material: Material,
+    *,
+    peak_force: float = PEAK_FORCE,
+    substrate: Material | None = None,
+    film_thickness: float = FILM_THICKNESS,
+    hardness: float | None = None,
+    loading_forces=None,
+    unloading_forces=None,
+    reference_force: float = REFERENCE_FORCE,
+    tolerance: float = 1e-8,
+    plasticity: str = "surface",
+    yield_strength: float | None = None,
+    hardening_modulus: float = 0.0,
+    depth: float | None = None,
+    layers: int = 16,
+) -> LoadUnloadResult:
+    """Load paper 002's island to ``peak_force`` with a rigid flat punch and unload it (Figs. 7-9).
+
+    Paper 002's scenario on :func:`roughcontact.contact.load_unload.load_unload`: force control at
+    the paper's loads (0, 100, ..., 1000 uN and 25 uN, unloading back through them), interference zero at
+    ``reference_force`` (25 uN, the smallest load the paper's nanoindenter resolves), the film of
+    ``film_thickness`` (6.3 um) bonded to ``substrate`` where one is given, a free boundary.
+
+    Parameters
+    ----------
+    topography : Topography
+        Non-periodic heights [m] towards the punch (:func:`paper002_island` or a measured scan).
+    material : Material
+        The film (``get_material("SU-8")``); its hardness caps the pressure unless ``hardness``.
+    peak_force, reference_force : float
+        [N] (1000 uN and 25 uN).
+    substrate : Material, optional
+        The substrate (``get_material("silicon wafer")``); default: the film is a half-space.
+    film_thickness : float
+        [m], with ``substrate``.
+    hardness : float, optional
+        Pressure cap [Pa] of the surface model.
+    loading_forces, unloading_forces : array_like, optional
+        Target loads [N]; default the paper's and back down. The loading list must end at
+        ``peak_force``.
+    tolerance : float
+        Of the contact solves.
+    plasticity : {"surface", "volume"}
+        The cap at the hardness, or J2 in the volume with ``yield_strength``, ``hardening_modulus``,
+        ``depth`` and ``layers`` (:class:`~roughcontact.contact.load_unload.VolumePlasticity`).
+
+    Returns
+    -------
+    LoadUnloadResult
+    """
+    if loading_forces is None:
+        loading = force_targets(peak_force, 10, reference_force)
+    else:
+        loading = np.asarray(loading_forces, dtype=float)
+    if loading[-1] != peak_force:
+        raise InputError("loading_forces", "must rise strictly to peak_force.", "e.g. [0, 25e-6, ..., 1e-3].")
+    if plasticity == "volume":
+        model = VolumePlasticity(yield_strength, hardening_modulus, depth, layers)
+    elif plasticity == "surface":
+        model = SurfacePlasticity(hardness)
+    else:
+        raise InputError("plasticity", f"unknown plasticity {plasticity!r}.", "use 'surface' or 'volume'.")
+    try:
+        return _compress(topography, material, loading, unloading_forces, reference_force, model, substrate,
+                         film_thickness, tolerance)  # fmt: skip
+    except InputError as error:
+        if error.field != "forces":
+            raise
+        raise InputError("loading_forces", error.problem, error.fix) from None
+
+
+def _compress(
+    topography, material, loading, unloading, reference_force, model, substrate, film_thickness, tolerance
+):
+    return load_unload(
+        topography,
+        material,
+        forces=loading,
+        unloading_forces=unloading,
+        reference_force=reference_force,
+        plasticity=model,
+        substrate=substrate,
+        film_thickness=film_thickness if substrate is not None else None,
+        boundary="free",
+        tolerance=tolerance,
+    )

@@ -93,8 +93,8 @@ def plot_von_mises_maps(compression, indices: list[int], *, depth: float = 0.0) 
 
     Parameters
     ----------
-    compression : IslandCompression
-        From :func:`roughcontact.papers.thin_film_island.compress_island`.
+    compression : LoadUnloadResult
+        From :func:`roughcontact.papers.paper002.compress_island`.
     indices : list of int
         Steps to draw (e.g. those at 0, 200, ..., 1000 uN).
     depth : float

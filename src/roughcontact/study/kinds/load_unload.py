@@ -1,8 +1,8 @@
 r"""Study kind ``load_unload``: elastic-perfectly-plastic load-unload of a surface against a rigid flat punch.
 
-One case wraps :func:`roughcontact.papers.thin_film_island.compress_island` (seed paper 002,
-sections III and VI, Figs. 7-9): the surface is pressed by a rigid flat to ``peak_force`` and
-unloaded, force-controlled, through the targets
+One case is :func:`roughcontact.contact.load_unload.load_unload` (seed paper 002, sections III and
+VI, Figs. 7-9): the surface is pressed by a rigid flat to ``peak_force`` and unloaded,
+force-controlled, through the targets
 
 .. math:: W_k = \frac{k}{n} W_{max}, \quad k = 0 \dots n \quad (n = \text{load\_steps}),
 
@@ -26,7 +26,7 @@ one is given. Its maps are of the total stress (pressure plus residual) of the c
 that carries the most load at the peak shows the
 stress in depth; at zero load after unloading they show the residual stress (paper 002 Fig. 9e).
 
-Assumptions (those of the model; see :mod:`roughcontact.papers.thin_film_island`): with
+Assumptions (those of the model; see :mod:`roughcontact.contact.load_unload`): with
 ``plasticity = "surface"`` plasticity is confined to the surface (no subsurface plastic zone, no
 hardening, no residual stress after unloading, so a map at 0 N on unloading is empty where the
 paper's FEM shows residual stress); the film is laterally infinite (the island's free side walls
@@ -55,8 +55,7 @@ import numpy as np
 from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
-from ...contact.volume_plastic import VOLUME_UNITS
-from ...papers.thin_film_island import IslandCompression
+from ...contact.load_unload import LoadUnloadResult
 from ...units import format_si
 from ..kind import CaseOutput, CaseParameters, Kind, caption
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
@@ -169,10 +168,12 @@ class LoadUnloadParameters(CaseParameters):
 def load_targets(peak_force: float, reference_force: float, steps: int) -> tuple[np.ndarray, np.ndarray]:
     """Return the loading targets 0, W/n, ..., W with ``reference_force`` added, and unloading ones [N].
 
-    With ``steps = 10`` these are the default targets of
-    :func:`~roughcontact.papers.thin_film_island.compress_island` (the same floats).
+    :func:`roughcontact.contact.load_unload.force_targets` and back down (with ``steps = 10``
+    paper 002's, :func:`roughcontact.papers.paper002.compress_island`).
     """
-    loading = np.unique(np.concatenate([np.linspace(0.0, peak_force, steps + 1), [reference_force]]))
+    from ...contact.load_unload import force_targets
+
+    loading = force_targets(peak_force, steps, reference_force)
     return loading, loading[::-1][1:]
 
 
@@ -210,38 +211,35 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
     """Load and unload the surface; scalars, the curve and the von Mises maps."""
     import xarray as xr
 
-    from ...papers.thin_film_island import compress_island
+    from ...contact.load_unload import SurfacePlasticity, VolumePlasticity, load_unload
 
     surface = inputs.topography(parameters.topography)
     material = inputs.material(parameters.material)
     loading, unloading = load_targets(
         parameters.peak_force, parameters.reference_force, parameters.load_steps
     )
-    options = {} if parameters.film_thickness is None else {"film_thickness": parameters.film_thickness}
     if parameters.plasticity == "volume":
-        options |= {
-            "yield_strength": parameters.yield_strength,
-            "hardening_modulus": parameters.hardening_modulus,
-            "depth": parameters.depth,
-            "layers": parameters.layers,
-        }
-    compression = compress_island(
+        plasticity = VolumePlasticity(
+            parameters.yield_strength, parameters.hardening_modulus, parameters.depth, parameters.layers
+        )
+    else:
+        plasticity = SurfacePlasticity(parameters.hardness)
+    compression = load_unload(
         surface,
         material,
-        peak_force=parameters.peak_force,
-        substrate=inputs.material(parameters.substrate),
-        hardness=parameters.hardness,
-        loading_forces=loading,
+        forces=loading,
         unloading_forces=unloading,
         reference_force=parameters.reference_force,
+        plasticity=plasticity,
+        substrate=inputs.material(parameters.substrate),
+        film_thickness=parameters.film_thickness,
+        boundary="free",
         tolerance=parameters.tolerance,
-        plasticity=parameters.plasticity,
-        **options,
     )
     peak_index = compression.peak
     chosen = _map_steps(parameters, loading, unloading)
     if parameters.plasticity == "volume":
-        path = compression.path
+        path = compression.volume
         layer = int(np.argmin(np.abs(path.depths - parameters.stress_depth)))
         stress_depth = float(path.depths[layer])
         maps = {i: path.von_mises[i, layer].astype(float) for i in sorted({*chosen, peak_index})}
@@ -275,9 +273,9 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
     warnings: tuple[str, ...] = ()
     if parameters.plasticity == "volume":
         dataset["von_mises_section"] = _section(
-            compression.path, chosen, peak_index, surface, parameters.map_points
+            compression.volume, chosen, peak_index, surface, parameters.map_points
         )
-        warnings = tuple(compression.path.range_warnings())
+        warnings = tuple(compression.range_warnings())
     return CaseOutput(scalars, dataset, warnings)
 
 
@@ -448,7 +446,7 @@ KIND = Kind(
     "(FFT-BEM, force control, paper 002 Figs. 7-9)",
     parameters=LoadUnloadParameters,
     run=run,
-    units=IslandCompression.UNITS | VOLUME_UNITS | {"max_von_mises_at_peak": "Pa"},
+    units=LoadUnloadResult.UNITS | {"max_von_mises_at_peak": "Pa"},
     figures={
         "load_interference": _load_interference,
         "von_mises": _von_mises,

@@ -279,8 +279,8 @@ def _measured(context):
     A file that was there when the study ran but is missing now (a report drawn on another
     machine) leaves the measured overlay out rather than failing the figure.
     """
-    from ...experiment.friction_loop import analyse_loop, read_loop_csv
     from ...contact.presliding import POINTS as FRACTIONS
+    from ...experiment.friction_loop import analyse_loop, read_loop_csv
 
     compare = context.compare
     if compare is None or not Path(compare.measured_loop).is_file():
