@@ -73,7 +73,7 @@ def paper000_model(
         get_material("polysilicon"),
         get_material("SiO2"),
         counter_topography=tip,
-        model_options=paper000_model_options(surface_energy=surface_energy, readings=readings),
+        **paper000_model_options(surface_energy=surface_energy, readings=readings),
     )
 
 
