@@ -418,6 +418,23 @@ def prefixed_scale(value: float, unit: str) -> tuple[float, str]:
     return scale, _label(terms, prefix, index)
 
 
+def written(value: float, unit: str) -> str:
+    """Write an SI value as a study file or an option takes it, exactly (``2.805e-6 m`` as ``"2.805 um"``).
+
+    The prefix of :func:`prefixed_scale` (in ASCII: ``u`` for micro, ``^2`` for a square) and the
+    number to 15 significant digits, so that :func:`quantity` reads back the float that was
+    written wherever the value is a short decimal (as the papers' numbers are).
+
+    Examples
+    --------
+    >>> written(10e-6, "N"), written(6.25e-10, "m^2"), written(0.05, "J/m^2")
+    ('10 uN', '625 um^2', '50 mJ/m^2')
+    """
+    scale, label = prefixed_scale(value, unit)
+    ascii_label = label.replace("µ", "u").replace("²", "^2").replace("³", "^3").replace("·", "*")
+    return f"{value / scale:.15g} {ascii_label}".strip()
+
+
 def format_si(value: float, unit: str, *, digits: int = 4) -> str:
     """Format an SI value with the SI prefix that puts it between 1 and 1000 (see :func:`prefixed_scale`).
 

@@ -18,7 +18,7 @@ from .output import run_command
 
 
 def _surface(command: CommandStudy, args: argparse.Namespace) -> dict:
-    """Return the keys that say which surface: a FILE, --moments, or paper 002's printed moments."""
+    """Return the keys that say which surface: a FILE or --moments (else --paper002 fills the moments in)."""
     if args.file is not None and args.moments is not None:
         raise InputError("--moments", "both a FILE and --moments were given.", "give one of them.")
     if args.file is not None:
@@ -29,48 +29,37 @@ def _surface(command: CommandStudy, args: argparse.Namespace) -> dict:
             for name, value in zip(("m0", "m2", "m4"), args.moments, strict=True)
         }
     if args.paper002:
-        moments = paper002.MOMENTS
-        return {
-            "m0": (f"{moments['m0'] * 1e12:.9g} um^2", "--paper002"),
-            "m2": (moments["m2"], "--paper002"),
-            "m4": (f"{moments['m4'] * 1e-12:.9g} 1/um^2", "--paper002"),
-        }
+        return {}
     raise InputError("FILE", "no surface given.", "pass a topography FILE, --moments M0 M2 M4 or --paper002.")
 
 
 def _asperity(args: argparse.Namespace) -> int:
+    """Build the ``asperity`` analysis; ``paper002 = true`` fills in what the options leave out."""
     paper = args.paper002
     command = CommandStudy("roughcontact asperity", "asperity parameters and the statistical load-unload")
-    surface = _surface(command, args)
-    material = command.material("material", args, required=not paper) or "SU-8"
-    counter = command.material("counter_body", args) or ("diamond flat tip" if paper else None)
-    max_force = args.max_force or (f"{paper002.PEAK_FORCE * 1e6:g} uN" if paper else None)
-    reference = args.reference_force or (f"{paper002.REFERENCE_FORCE * 1e6:g} uN" if paper else None)
-    area = args.area or (
-        f"{paper002.ISLAND_SIDE * 1e6:g} um x {paper002.ISLAND_SIDE * 1e6:g} um" if paper else None
-    )
+    material = command.material("material", args, required=not paper)
     index = command.analysis(
         "asperity",
         "asperity",
-        surface
+        _surface(command, args)
         | {
-            "material": (material, "--material"),
-            "counter_body": (counter, "--counter-body"),
-            "max_force": (max_force, "--max-force"),
-            "nominal_area": (area if max_force is not None else None, "--area"),
-            "reference_force": (reference if max_force is not None else None, "--reference-force"),
             "paper002": (paper or None, "--paper002"),
+            "material": (material, "--material"),
+            "counter_body": (command.material("counter_body", args), "--counter-body"),
+            "max_force": (args.max_force, "--max-force"),
+            "nominal_area": (args.area if paper or args.max_force is not None else None, "--area"),
+            "reference_force": (args.reference_force, "--reference-force"),
         }
         | options(args, "hardness", "yield_strength", "modulus_form", "law", "distribution", "steps"),
     )
     if args.bem:
-        index = _island(command, args, material, max_force, reference)
+        index = _island(command, args, material)
     if args.measured is not None:
         command.compare(index, {"measured_curve": (str(args.measured.resolve()), "--measured")})
     return run_command(command, args)
 
 
-def _island(command: CommandStudy, args: argparse.Namespace, material, max_force, reference) -> int:
+def _island(command: CommandStudy, args: argparse.Namespace, material: str | None) -> int:
     """Add the BEM compression of the island (FILE, or paper 002's synthetic one): model ``load_unload``."""
     if args.file is not None:
         topography = "surface"
@@ -80,19 +69,19 @@ def _island(command: CommandStudy, args: argparse.Namespace, material, max_force
         )
     else:
         raise InputError("--bem", "needs a topography FILE or --paper002.", "add one, or leave out --bem.")
-    if max_force is None:
+    if args.max_force is None and not args.paper002:
         raise InputError("--bem", "needs --max-force (and --reference-force).", "add them (or --paper002).")
-    substrate = args.substrate or ("silicon wafer" if args.paper002 else None)
     return command.analysis(
         "bem",
         "load_unload",
         {
             "topography": (topography, "FILE"),
+            "paper002": (args.paper002 or None, "--paper002"),
             "material": (material, "--material"),
-            "substrate": (substrate, "--substrate"),
-            "film_thickness": (args.film_thickness if substrate else None, "--film-thickness"),
-            "peak_force": (max_force, "--max-force"),
-            "reference_force": (reference, "--reference-force"),
+            "substrate": (args.substrate, "--substrate"),
+            "film_thickness": (args.film_thickness, "--film-thickness"),
+            "peak_force": (args.max_force, "--max-force"),
+            "reference_force": (args.reference_force, "--reference-force"),
             "hardness": (args.hardness, "--hardness"),
             "plasticity": (args.plasticity, "--plasticity"),
         }
@@ -164,9 +153,13 @@ def add_commands(commands) -> None:
     asperity.add_argument("--steps", type=int, default=40, help="points per branch of the statistical curve")
     asperity.add_argument("--bem", action="store_true", help="also run the BEM island compression")
     asperity.add_argument("--grid", type=int, default=128, help="grid of paper 002's synthetic island")
-    asperity.add_argument("--substrate", help="substrate of the film for --bem (paper 002: silicon wafer)")
+    paper = paper002.load_unload_keys()
     asperity.add_argument(
-        "--film-thickness", default="6.3 um", help="film thickness for --bem with --substrate"
+        "--substrate", help=f"substrate of the film for --bem (paper 002: {paper['substrate']})"
+    )
+    asperity.add_argument(
+        "--film-thickness",
+        help=f"film thickness for --bem with --substrate (paper 002: {paper['film_thickness']})",
     )
     asperity.add_argument(
         "--plasticity",

@@ -88,25 +88,10 @@ def _sample_argument(text: str) -> tuple[str, list[Path]]:
 
 
 def _paper000_scans(command: CommandStudy, args: argparse.Namespace) -> dict:
-    """Paper 000's synthetic scans and tip (:mod:`roughcontact.papers.paper000`): the keys they set."""
-    side = f"{args.grid * paper000.PIXEL * 1e9:g} nm"
-    command.topography(
-        "scan",
-        {"generate": "self_affine", "shape": args.grid, "size": side, "hurst": 0.8, "rms_height": "1.5 nm"},
-        "--grid",
-    )
-    command.topography(
-        "tip",
-        {
-            "generate": "sphere_with_roughness",
-            "shape": args.grid,
-            "size": side,
-            "radius": "1 um",
-            "rms_height": "0.3 nm",
-            "seed": args.seed,
-        },
-        "--grid",
-    )
+    """Paper 000's synthetic scans and tip (generators ``paper000_scan``, ``paper000_tip``): their keys."""
+    first = next(iter(paper000.PAPER000_SAMPLES))
+    command.topography("scan", {"generate": "paper000_scan", "shape": args.grid, "sample": first}, "--grid")
+    command.topography("tip", {"generate": "paper000_tip", "shape": args.grid, "seed": args.seed}, "--grid")
     command.set(("study", "seed"), args.seed, "--seed")
     return {"topography": ("scan", None), "counter_topography": ("tip", None)}
 
@@ -131,6 +116,7 @@ def _friction_compare(args: argparse.Namespace) -> int:
         "friction",
         surfaces
         | {
+            "paper000": (True, None),  # paper 000's bodies, load, layer and energies unless given
             "material": (args.material, "--material"),
             "counter_body": (args.counter_body, "--counter-body"),
             "normal_force": (args.normal_force, "--normal-force"),
@@ -147,17 +133,10 @@ def _friction_compare(args: argparse.Namespace) -> int:
             },
         )
     else:
-        command.sweep(index, "replicate", list(range(7)), "--seed")
+        command.sweep(index, "replicate", list(range(paper000.SCANS_PER_SAMPLE)), "--seed")
         samples = list(paper000.PAPER000_SAMPLES)
         command.zipped(
-            index,
-            {
-                "sample": (samples, "--seed"),
-                "topographies.scan.ra": (
-                    [f"{ra * 1e9:g} nm" for ra in paper000.PAPER000_SAMPLES.values()],
-                    "--seed",
-                ),
-            },
+            index, {"sample": (samples, "--seed"), "topographies.scan.sample": (samples, "--seed")}
         )
     command.compare(
         index,
@@ -170,18 +149,25 @@ def _friction_compare(args: argparse.Namespace) -> int:
     return run_command(command, args)
 
 
-def _shared_options(parser: argparse.ArgumentParser, *, surface_energy: str | None) -> None:
+def _shared_options(parser: argparse.ArgumentParser, *, paper: bool) -> None:
+    """Add the model's options; ``paper``: their defaults are paper 000's (``friction-compare``)."""
+    keys = paper000.friction_keys()
     parser.add_argument(
         "--surface-energy",
-        default=surface_energy,
         help="surface energy of the surface, e.g. '50 mJ/m^2'"
-        + (f" (paper 000 does not give it; default {surface_energy})" if surface_energy else ""),
+        + (f" (paper 000 does not give it; default {keys['surface_energy']})" if paper else ""),
     )
     parser.add_argument(
-        "--counter-surface-energy", help="surface energy of the counter-body (default: the library's)"
+        "--counter-surface-energy",
+        help="surface energy of the counter-body (default: "
+        + (f"{keys['counter_surface_energy']}, paper 000's SiO2)" if paper else "the library's)"),
     )
-    parser.add_argument("--layer-thickness", default="50 nm", help="Winkler layer height h (default 50 nm)")
-    parser.add_argument("--epsilon", default="2 nm", help="Lennard-Jones equilibrium distance (default 2 nm)")
+    parser.add_argument(
+        "--layer-thickness", help=f"Winkler layer height h (default {keys['layer_thickness']}, paper 000's)"
+    )
+    parser.add_argument(
+        "--epsilon", help=f"Lennard-Jones equilibrium distance (default {keys['epsilon']}, paper 000's)"
+    )
     parser.add_argument(
         "--reading",
         action="append",
@@ -220,7 +206,11 @@ def add_commands(commands) -> None:
     add_material_options(friction, "material", "the surface's body", "polysilicon, SiO2")
     add_material_options(friction, "counter_body", "the counter-body (default: rigid)", "SiO2")
     friction.add_argument(
-        "--normal-force", "--load", dest="normal_force", default="10 uN", help="normal load (default 10 uN)"
+        "--normal-force",
+        "--load",
+        dest="normal_force",
+        default=paper000.friction_keys()["normal_force"],
+        help="normal load (default: paper 000's %(default)s)",
     )
     friction.add_argument(
         "--normal-forces",
@@ -250,7 +240,7 @@ def add_commands(commands) -> None:
     friction.add_argument(
         "--relaxation-time", default="1 s", help="relaxation time of the standard linear solid"
     )
-    _shared_options(friction, surface_energy=None)
+    _shared_options(friction, paper=False)
 
     comparison = new_command(
         commands,
@@ -272,12 +262,20 @@ def add_commands(commands) -> None:
     comparison.add_argument("--tip", type=Path, help="topography of the tip, on the scans' grid")
     comparison.add_argument("--size", type=size_argument, help="scan size if the files lack it, e.g. '5 um'")
     comparison.add_argument("--height-unit", help="height unit if the files lack it")
-    comparison.add_argument("--material", default="polysilicon", help="library material of the samples")
     comparison.add_argument(
-        "--counter-body", "--counter", dest="counter_body", default="SiO2", help="library material of the tip"
+        "--material", help=f"library material of the samples (default: paper 000's {paper000.MATERIAL})"
     )
     comparison.add_argument(
-        "--normal-force", "--load", dest="normal_force", default="10 uN", help="normal load (default 10 uN)"
+        "--counter-body",
+        "--counter",
+        dest="counter_body",
+        help=f"library material of the tip (default: paper 000's {paper000.TIP_MATERIAL})",
+    )
+    comparison.add_argument(
+        "--normal-force",
+        "--load",
+        dest="normal_force",
+        help=f"normal load (default: paper 000's {paper000.friction_keys()['normal_force']})",
     )
     comparison.add_argument("--alpha", type=float, default=0.1, help="t-test threshold (paper: 0.1)")
     comparison.add_argument(
@@ -289,4 +287,4 @@ def add_commands(commands) -> None:
     comparison.add_argument(
         "--grid", type=int, default=256, help="without --sample: points per side of the 20 nm-pixel scans"
     )
-    _shared_options(comparison, surface_energy="50 mJ/m^2")
+    _shared_options(comparison, paper=True)

@@ -14,61 +14,44 @@ from pathlib import Path
 
 from ..errors import InputError
 from ..papers import paper001
-from ..units import quantity
+from ..units import quantity, written
 from .options import CommandStudy, add_material_options, add_output_options, new_command, options
 from .output import run_command
 
 
 def _paper001(command: CommandStudy, args: argparse.Namespace) -> tuple[dict, dict]:
-    """Paper 001's balls (generated, Table 2 roughness) and their cases (Table 1): keys and zipped axes."""
+    """Paper 001's balls (generator ``paper001_ball``) at Table 1's loads: keys and zipped axes.
+
+    ``paper001 = true`` fills in each case's material, flat, radius, stroke and mu
+    (:func:`roughcontact.papers.paper001.presliding_keys`).
+    """
     if args.file is not None:
         raise InputError("FILE", "--paper001 generates the balls.", "drop FILE, or drop --paper001.")
-    loads = args.normal_forces or ["25 mN", "50 mN", "75 mN"]
-    size = f"{paper001.FIELD * 1e3:g} mm"
-    zipped: dict[str, list] = {key: [] for key in ("sample", "topography", "material", "normal_force")}
-    zipped |= {"stroke": [], "friction_coefficient": []}
+    zipped: dict[str, list] = {"sample": [], "topography": [], "normal_force": []}
     for ball in args.ball:
         try:
             name = paper001.ball_name(ball)
         except InputError as error:
             raise InputError("--ball", error.problem, error.fix) from None
-        command.topography(
-            name.lower(),
-            {
-                "generate": "sphere_with_roughness",
-                "shape": args.pixels,
-                "size": size,
-                "radius": f"{paper001.RADIUS * 1e3:g} mm",
-                "rms_height": f"{paper001.ROUGHNESS[name] * 1e6:g} um",
-                "hurst": 0.8,
-                "seed": args.seed,
-            },
-            "--ball",
-        )
-        for load in loads:
+        spec = {"generate": "paper001_ball", "ball": name, "shape": args.pixels, "seed": args.seed}
+        command.topography(name.lower(), spec, "--ball")
+        for load in args.normal_forces or [written(force, "N") for force in paper001.TABLE1[name]]:
             try:
-                stroke, mu = paper001.table1(
-                    name, quantity(load, "force", field="--normal-forces", require_unit=True)
-                )
+                paper001.table1(name, quantity(load, "force", field="--normal-forces", require_unit=True))
             except InputError as error:
                 raise InputError("--normal-forces", error.problem, error.fix) from None
             zipped["sample"].append(name)
             zipped["topography"].append(name.lower())
-            zipped["material"].append(name)
             zipped["normal_force"].append(load)
-            zipped["stroke"].append(f"{stroke * 1e6:g} um")
-            zipped["friction_coefficient"].append(mu)
     keys = {
+        "paper001": (True, "--paper001"),
         "topography": (zipped["topography"][0], None),
-        "material": (zipped["material"][0], None),
-        "counter_body": ("silicon wafer", None),
+        "sample": (zipped["sample"][0], None),
         "normal_force": (zipped["normal_force"][0], None),
-        "stroke": (zipped["stroke"][0], None),
-        "friction_coefficient": (zipped["friction_coefficient"][0], None),
         "window": (args.window or 160, "--window"),
     }
-    flags = {"normal_force": "--normal-forces", "sample": "--ball", "topography": "--ball"}
-    return keys, {key: (values, flags.get(key, "--paper001")) for key, values in zipped.items()}
+    flags = {"normal_force": "--normal-forces"}
+    return keys, {key: (values, flags.get(key, "--ball")) for key, values in zipped.items()}
 
 
 def _ball(command: CommandStudy, args: argparse.Namespace) -> dict:
@@ -170,7 +153,9 @@ def add_commands(commands) -> None:
         "--loads",
         dest="normal_forces",
         nargs="+",
-        help="with --paper001: loads (default 25 mN 50 mN 75 mN)",
+        help="with --paper001: loads (default: Table 1's, "
+        + ", ".join(written(force, "N") for force in paper001.TABLE1["HDPE"])
+        + ")",
     )
     presliding.add_argument(
         "--normal-force", "--force", dest="normal_force", help="normal force F0, e.g. '25 mN'"
@@ -192,7 +177,10 @@ def add_commands(commands) -> None:
         "from the unloaded state (then no --normal-force)",
     )
     presliding.add_argument("--maps", type=int, help="with --path: shear maps kept (last reversals and step)")
-    presliding.add_argument("--radius", default="5 mm", help="ball radius for Mindlin's K_L (default 5 mm)")
+    presliding.add_argument(
+        "--radius",
+        help=f"ball radius for Mindlin's K_L (default: paper 001's {written(paper001.RADIUS, 'm')})",
+    )
     presliding.add_argument(
         "--cycles", type=int, default=4, help="with --stroke: cycles of the path (default 4, as Fig. 6)"
     )

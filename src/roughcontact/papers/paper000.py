@@ -26,6 +26,7 @@ from ..materials import Material, get_material
 from ..topography import Topography
 from ..topography.generate import self_affine, sphere_with_roughness
 from ..topography.process import scale_to_ra
+from ..units import written
 from ..winkler_lj import WinklerNormalCurve, winkler_lj_model
 from ..winkler_lj.readings import Readings
 
@@ -35,8 +36,78 @@ PAPER000_SAMPLES: Mapping[str, float] = {"Ra 1.45 nm": 1.45e-9, "Ra 1.49 nm": 1.
 PIXEL = 20e-9
 """Scan step of paper 000 [m] (the spring size S = PIXEL^2)."""
 
+MATERIAL, TIP_MATERIAL = "polysilicon", "SiO2"
+"""The library materials of the samples and of the tip (sec. 4)."""
 
-def paper000_model_options(*, surface_energy: float = 0.05, readings: Readings | None = None) -> dict:
+NORMAL_FORCE = 10e-6
+"""The validation load [N] (sec. 5: 10 uN, chosen to stay elastic)."""
+
+LAYER_THICKNESS = 50e-9
+"""The Winkler layer height h [m] (the polysilicon layer thickness)."""
+
+EPSILON = 2e-9
+"""The Lennard-Jones equilibrium distance [m] (sec. 3)."""
+
+SURFACE_ENERGY = 0.05
+"""Polysilicon surface energy [J/m^2]: measured by the authors but not reported; ASSUMED."""
+
+TIP_SURFACE_ENERGY = get_material(TIP_MATERIAL).surface_energy
+"""SiO2 surface energy [J/m^2] (the paper's literature value, 72 mJ/m^2: the library's SiO2)."""
+
+TIP_RADIUS = 1e-6
+"""Radius of the SiO2 sphere [m] (a 2 um tip)."""
+
+TIP_ROUGHNESS = 0.3e-9
+"""Rq of the synthetic tip's roughness [m]; ASSUMED (the tip was not scanned)."""
+
+HURST = 0.8
+"""Hurst exponent of the synthetic scans and tip; ASSUMED."""
+
+SCANS_PER_SAMPLE = 7
+"""Spots scanned (and measured) per sample (sec. 5)."""
+
+
+def friction_keys(given: Mapping[str, Any] | None = None) -> dict[str, Any]:
+    """Return the keys of paper 000's ``friction`` analysis as a study file writes them (with units).
+
+    What ``paper000 = true`` fills in where an analysis leaves a key out, and what
+    ``roughcontact friction-compare`` uses by default: the materials, the load, the Winkler layer,
+    epsilon and the two surface energies (the polysilicon one assumed). A surface energy belongs to
+    its body: where ``given`` names another ``material`` (``counter_body``), the paper's energy of
+    that body is left out, so the other body's own (its library value) applies.
+    """
+    given = given or {}
+    keys = {
+        "material": MATERIAL,
+        "counter_body": TIP_MATERIAL,
+        "normal_force": written(NORMAL_FORCE, "N"),
+        "layer_thickness": written(LAYER_THICKNESS, "m"),
+        "epsilon": written(EPSILON, "m"),
+        "surface_energy": written(SURFACE_ENERGY, "J/m^2"),
+        "counter_surface_energy": written(TIP_SURFACE_ENERGY, "J/m^2"),
+    }
+    if given.get("material", MATERIAL) != MATERIAL:
+        del keys["surface_energy"]
+    if given.get("counter_body", TIP_MATERIAL) != TIP_MATERIAL:
+        del keys["counter_surface_energy"]
+    return keys
+
+
+def adhesion_keys(given: Mapping[str, Any] | None = None) -> dict[str, Any]:
+    """Return the keys of an ``adhesion`` analysis of paper 000's bodies and law, with units.
+
+    The materials, the two surface energies, the Lennard-Jones law of eq. 7 with its range epsilon
+    and the Winkler layer (for ``winkler = true``): what ``paper000 = true`` fills in where an
+    ``adhesion`` analysis leaves a key out; the approach is the analysis' own.
+    """
+    keys = friction_keys(given)
+    del keys["normal_force"], keys["epsilon"]
+    return keys | {"law": "lennard_jones", "interaction_range": written(EPSILON, "m")}
+
+
+def paper000_model_options(
+    *, surface_energy: float = SURFACE_ENERGY, readings: Readings | None = None
+) -> dict:
     """Return the keyword arguments of :func:`~roughcontact.winkler_lj_model` for paper 000.
 
     Parameters
@@ -52,32 +123,36 @@ def paper000_model_options(*, surface_energy: float = 0.05, readings: Readings |
         layer_thickness 50 nm, epsilon 2 nm, the surface energy, the tip's 72 mJ/m^2 and the readings.
     """
     return {
-        "layer_thickness": 50e-9,
-        "epsilon": 2e-9,
+        "layer_thickness": LAYER_THICKNESS,
+        "epsilon": EPSILON,
         "surface_energy": surface_energy,
-        "counter_surface_energy": 72e-3,
+        "counter_surface_energy": TIP_SURFACE_ENERGY,
         "readings": readings,
     }
 
 
 def paper000_model(
-    scan: Topography, tip: Topography, *, surface_energy: float = 0.05, readings: Readings | None = None
+    scan: Topography,
+    tip: Topography,
+    *,
+    surface_energy: float = SURFACE_ENERGY,
+    readings: Readings | None = None,
 ):
     """Return paper 000's Winkler-Lennard-Jones model of ``scan`` (polysilicon) against ``tip`` (SiO2).
 
     :func:`~roughcontact.winkler_lj_model` with the materials of sec. 3 and
-    :func:`paper000_model_options`; ``model.solve(10e-6)`` is the paper's load.
+    :func:`paper000_model_options`; ``model.solve(NORMAL_FORCE)`` is the paper's load.
     """
     return winkler_lj_model(
         scan,
-        get_material("polysilicon"),
-        get_material("SiO2"),
+        get_material(MATERIAL),
+        get_material(TIP_MATERIAL),
         counter_topography=tip,
         **paper000_model_options(surface_energy=surface_energy, readings=readings),
     )
 
 
-def paper000_tip(*, shape: int = 256, rms_height: float = 0.3e-9, seed: int = 0) -> Topography:
+def paper000_tip(*, shape: int = 256, rms_height: float = TIP_ROUGHNESS, seed: int = 0) -> Topography:
     """Return a synthetic AFM tip of paper 000: a paraboloid of radius 1 um with roughness, 20 nm pixels.
 
     Parameters
@@ -94,7 +169,9 @@ def paper000_tip(*, shape: int = 256, rms_height: float = 0.3e-9, seed: int = 0)
     Topography
     """
     size = shape * PIXEL
-    return sphere_with_roughness((shape, shape), size, radius=1e-6, rms_height=rms_height, seed=seed)
+    return sphere_with_roughness(
+        (shape, shape), size, radius=TIP_RADIUS, rms_height=rms_height, hurst=HURST, seed=seed
+    )
 
 
 def paper000_scans(roughness: float, *, count: int = 7, shape: int = 256, seed: int = 0) -> list[Topography]:
@@ -116,22 +193,28 @@ def paper000_scans(roughness: float, *, count: int = 7, shape: int = 256, seed: 
     list of Topography
         Self-affine (Hurst 0.8) scans, each scaled to Ra = ``roughness``.
     """
-    scans = []
-    for i in range(count):
-        scan = self_affine((shape, shape), shape * PIXEL, hurst=0.8, rms_height=roughness, seed=seed + i)
-        scans.append(scale_to_ra(scan, roughness))
-    return scans
+    return [paper000_scan(roughness, shape=shape, seed=seed + i) for i in range(count)]
+
+
+def paper000_scan(roughness: float, *, shape: int = 256, seed: int = 0) -> Topography:
+    """Return one synthetic polysilicon scan of exact Ra ``roughness`` [m], 20 nm pixels, ``shape`` per side.
+
+    A periodic self-affine surface (Hurst :data:`HURST`, assumed) scaled to the sample's Ra: the
+    scans of paper 000 are not published.
+    """
+    scan = self_affine((shape, shape), shape * PIXEL, hurst=HURST, rms_height=roughness, seed=seed)
+    return scale_to_ra(scan, roughness)
 
 
 @renamed(load="normal_force")
 def paper000_simulation(
     *,
-    normal_force: float = 10e-6,
-    surface_energy: float = 0.05,
+    normal_force: float = NORMAL_FORCE,
+    surface_energy: float = SURFACE_ENERGY,
     readings: Readings | None = None,
     scans: Mapping[str, Sequence[Topography]] | None = None,
     tip: Topography | None = None,
-    count: int = 7,
+    count: int = SCANS_PER_SAMPLE,
     shape: int = 256,
     seed: int = 0,
 ) -> dict[str, np.ndarray]:
@@ -166,8 +249,8 @@ def paper000_simulation(
         tip = paper000_tip(shape=next(iter(scans.values()))[0].shape[0], seed=seed)
     return simulate_mu(
         scans,
-        get_material("polysilicon"),
-        get_material("SiO2"),
+        get_material(MATERIAL),
+        get_material(TIP_MATERIAL),
         normal_force=normal_force,
         counter_topography=tip,
         model_options=paper000_model_options(surface_energy=surface_energy, readings=readings),
@@ -262,8 +345,8 @@ def winkler_beside_bem(
     *,
     approach: Sequence[float],
     counter_topography: Topography | None = None,
-    layer_thickness: float = 50e-9,
-    epsilon: float = 2e-9,
+    layer_thickness: float = LAYER_THICKNESS,
+    epsilon: float = EPSILON,
     surface_energy: float | None = None,
     counter_surface_energy: float | None = None,
     readings: Readings | None = None,

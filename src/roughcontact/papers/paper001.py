@@ -27,6 +27,8 @@ paper's or a user's); :func:`run_case` runs one ball and load of Table 1 with it
 
 from __future__ import annotations
 
+from typing import Any
+
 from .._deprecation import moved, renamed
 from ..contact.presliding import MindlinReference, PreslidingResult, mindlin_reference
 from ..contact.presliding import presliding as _presliding
@@ -34,11 +36,18 @@ from ..errors import InputError
 from ..materials import get_material
 from ..topography import Topography, generate
 from ..topography.process import crop
+from ..units import written
 
 RADIUS = 5e-3
+"""Ball radius [m] (10 mm balls, sec. 3)."""
 FIELD = 1.1e-3
+"""Side of the scanned field [m] (sec. 4, Fig. 4)."""
 SCAN_PIXELS = 1024
+"""Pixels across the paper's scans."""
 ROUGHNESS = {"HDPE": 3.17e-6, "POM": 0.67e-6}
+"""RMS roughness of each ball after removing the sphere [m] (Table 2)."""
+FLAT = "silicon wafer"
+"""The library material of the flat (Table 2; smooth, sec. 4)."""
 # Table 1: F0 [N] -> (stroke [m], mu) per ball
 TABLE1 = {
     "HDPE": {0.025: (2.805e-6, 0.153), 0.050: (2.943e-6, 0.146), 0.075: (3.697e-6, 0.129)},
@@ -64,6 +73,21 @@ def table1(ball: str, normal_force: float) -> tuple[float, float]:
             "use one of Table 1's loads, or give the stroke and friction coefficient of another load.",
         )
     return values
+
+
+def presliding_keys(ball: str, normal_force: float | None) -> dict[str, Any]:
+    """Return the keys of paper 001's ``presliding`` analysis for one ball and load (with units).
+
+    The ball's library material (Table 2), the flat, the radius of Mindlin's reference and, at a
+    load of Table 1 (None: none), its stroke and friction coefficient: what ``paper001 = true``
+    fills in where an analysis leaves a key out.
+    """
+    name = ball_name(ball)
+    keys = {"material": name, "counter_body": FLAT, "radius": written(RADIUS, "m")}
+    if normal_force is not None and round(float(normal_force), 6) in TABLE1[name]:
+        stroke, mu = table1(name, normal_force)
+        keys |= {"stroke": written(stroke, "m"), "friction_coefficient": mu}
+    return keys
 
 
 def roughness(ball: str, *, seed: int = 1, pixels: int = SCAN_PIXELS) -> Topography:
@@ -138,7 +162,7 @@ def run_case(
     return _presliding(
         surface,
         get_material(name),
-        get_material("silicon wafer"),
+        get_material(FLAT),
         normal_force=normal_force,
         stroke=stroke,
         friction_coefficient=friction_coefficient,

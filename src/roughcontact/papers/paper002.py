@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -32,6 +33,7 @@ from ..materials import Material, get_material
 from ..topography import Topography
 from ..topography.generate import gaussian_random, raised_island
 from ..topography.statistics import mccool_parameters
+from ..units import written
 
 MOMENTS = {"m0": 0.00213279e-12, "m2": 0.00230023, "m4": 0.0171036e12}
 """Printed spectral moments (eqs. 1-3) in SI: m0 [m^2], m2 [-], m4 [1/m^2]."""
@@ -50,6 +52,44 @@ REFERENCE_FORCE = 25e-6
 
 TIP_ROUGHNESS = 10e-9
 """Upper bound of the flat tip's roughness [m] (section III), used for the psi = 2.06 remark."""
+
+MATERIAL, SUBSTRATE, PUNCH = "SU-8", "silicon wafer", "diamond flat tip"
+"""The library materials of the film, its substrate and the flat punch (Table I)."""
+
+
+def asperity_keys() -> dict[str, Any]:
+    """Return the keys of paper 002's ``asperity`` analysis as a study file writes them (with units).
+
+    The printed moments (eqs. 1-3), the film and the punch (Table I), the peak load, the nominal
+    area of the island and the reference load: what ``paper002 = true`` fills in where an analysis
+    leaves a key out.
+    """
+    return {
+        "m0": written(MOMENTS["m0"], "m^2"),
+        "m2": MOMENTS["m2"],
+        "m4": written(MOMENTS["m4"], "1/m^2"),
+        "material": MATERIAL,
+        "counter_body": PUNCH,
+        "max_force": written(PEAK_FORCE, "N"),
+        "nominal_area": written(ISLAND_SIDE**2, "m^2"),
+        "reference_force": written(REFERENCE_FORCE, "N"),
+    }
+
+
+def load_unload_keys() -> dict[str, Any]:
+    """Return the keys of paper 002's ``load_unload`` analysis (the island under the punch), with units.
+
+    The film on its substrate (Table I, section II), the peak and reference loads (section III):
+    what ``paper002 = true`` fills in where an analysis leaves a key out.
+    """
+    return {
+        "material": MATERIAL,
+        "substrate": SUBSTRATE,
+        "film_thickness": written(FILM_THICKNESS, "m"),
+        "peak_force": written(PEAK_FORCE, "N"),
+        "reference_force": written(REFERENCE_FORCE, "N"),
+    }
+
 
 PRINTED = {
     "summit_radius": 5.08e-6,
@@ -108,7 +148,7 @@ def comparison() -> list[ComparisonRow]:
     -------
     list of ComparisonRow
     """
-    sample, tip = get_material("SU-8"), get_material("diamond flat tip")
+    sample, tip = get_material(MATERIAL), get_material(PUNCH)
     ours = {
         form: asperity_parameters(**MOMENTS, sample=sample, counter_body=tip, modulus_form=form)
         for form in ("standard", "paper002_eq7_printed")
@@ -158,9 +198,7 @@ def comparison() -> list[ComparisonRow]:
 
 def parameters() -> AsperityParameters:
     """Return the asperity parameters of SU-8 against the diamond flat tip from the printed moments (SI)."""
-    return asperity_parameters(
-        **MOMENTS, sample=get_material("SU-8"), counter_body=get_material("diamond flat tip")
-    )
+    return asperity_parameters(**MOMENTS, sample=get_material(MATERIAL), counter_body=get_material(PUNCH))
 
 
 def statistical_curve(law: str = "kogut_etsion") -> StatisticalLoadUnload:
@@ -178,7 +216,7 @@ def statistical_curve(law: str = "kogut_etsion") -> StatisticalLoadUnload:
     -------
     StatisticalLoadUnload
     """
-    su8 = get_material("SU-8")
+    su8 = get_material(MATERIAL)
     return statistical_load_unload(
         gaussian_summits(mccool_parameters(**MOMENTS)),
         contact_modulus=parameters().contact_modulus,

@@ -307,6 +307,8 @@ class KnownInputs:
         if isinstance(spec, FileTopography):
             topography = self.loaded.get(spec.model_dump_json())
             return None if topography is None else (topography.shape, topography.size)
+        if hasattr(spec, "grid"):  # a paper's generator
+            return spec.grid
         if hasattr(spec, "shape") and hasattr(spec, "size"):
             return grid_of(spec.shape, spec.size)
         return None

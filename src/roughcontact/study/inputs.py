@@ -13,7 +13,16 @@ from dataclasses import dataclass
 
 from ..materials import Material
 from ..topography import Topography
-from .schema import Combined, FileTopography, Paper002Island, SelfAffine, Strict
+from .schema import (
+    Combined,
+    FileTopography,
+    Paper000Scan,
+    Paper000Tip,
+    Paper001Ball,
+    Paper002Island,
+    SelfAffine,
+    Strict,
+)
 
 _GENERATOR_ONLY = {"generate", "ra"}
 
@@ -37,6 +46,16 @@ def build_topography(spec: Strict, resolve) -> Topography:
         from ..papers.paper002 import paper002_island
 
         return paper002_island(spec.shape, seed=spec.seed, margin=spec.margin)
+    if isinstance(spec, Paper000Scan | Paper000Tip):
+        from ..papers import paper000
+
+        if isinstance(spec, Paper000Tip):
+            return paper000.paper000_tip(shape=spec.shape, seed=spec.seed)
+        return paper000.paper000_scan(spec.roughness, shape=spec.shape, seed=spec.seed)
+    if isinstance(spec, Paper001Ball):
+        from ..papers.paper001 import roughness
+
+        return roughness(spec.ball, seed=spec.seed, pixels=spec.shape)
     options = {k: v for k, v in spec.model_dump().items() if k not in _GENERATOR_ONLY}
     shape, size = options.pop("shape"), options.pop("size")
     surface = getattr(generate, spec.generate)(shape, size, **options)

@@ -45,6 +45,20 @@ class CaseParameters(Strict):
     """Index of a repeated case; selects the derived seeds of generated surfaces."""
 
 
+def fill_from_paper(data: Any, flag: str, keys: Callable[[Mapping[str, Any]], Mapping[str, Any]]) -> Any:
+    """Fill in a paper's scenario where an analysis with ``flag = true`` leaves a key out.
+
+    For a ``model_validator(mode="before")`` of a kind's parameters: ``keys(given)`` returns the
+    paper's keys as a study file writes them (with units, from :mod:`roughcontact.papers`), so the
+    filled values are validated, stored and shown like typed ones; a key the analysis gives (not
+    None) wins. Any other ``data`` is returned unchanged.
+    """
+    if not isinstance(data, Mapping) or data.get(flag) is not True:
+        return data
+    given = {key: value for key, value in data.items() if value is not None}
+    return {**keys(given), **given}
+
+
 @dataclass(frozen=True)
 class CaseOutput:
     """What a kind's ``run`` returns: scalars (SI, JSON-ready), optional fields and curves, and warnings.

@@ -338,6 +338,82 @@ class Paper002Island(Strict):
     margin: Length = 2.5e-6
 
 
+class Paper000Scan(Strict):
+    """A synthetic polysilicon scan of paper 000 (:func:`~roughcontact.papers.paper000.paper000_scan`).
+
+    The sample's Ra as ``ra``, or ``sample``, one of paper 000's (``"Ra 1.45 nm"``, ``"Ra 1.49 nm"``,
+    ``"Ra 1.7 nm"``: :data:`~roughcontact.papers.paper000.PAPER000_SAMPLES`); 20 nm pixels,
+    ``shape`` per side. Without ``seed`` each case derives its own.
+    """
+
+    generate: Literal["paper000_scan"]
+    ra: Length | None = None
+    sample: str | None = None
+    shape: int = Field(default=256, ge=2)
+    seed: int | None = None
+
+    @model_validator(mode="after")
+    def _one_roughness(self) -> Paper000Scan:
+        from ..papers.paper000 import PAPER000_SAMPLES
+
+        if (self.ra is None) == (self.sample is None):
+            raise PydanticCustomError(
+                "quantity",
+                "give the scan's ra or paper 000's sample, exactly one",
+                {"fix": "e.g. sample = 'Ra 1.45 nm', or ra = '1.45 nm'"},
+            )
+        if self.sample is not None and self.sample not in PAPER000_SAMPLES:
+            raise PydanticCustomError(
+                "quantity",
+                "sample {sample!r} is not one of paper 000's",
+                {"sample": self.sample, "fix": f"sample is one of {list(PAPER000_SAMPLES)}"},
+            )
+        if self.ra is not None and not self.ra > 0:
+            raise PydanticCustomError("quantity", "ra must be positive", {"fix": "e.g. ra = '1.45 nm'"})
+        return self
+
+    @property
+    def roughness(self) -> float:
+        """The scan's Ra [m]: ``ra``, or the sample's."""
+        from ..papers.paper000 import PAPER000_SAMPLES
+
+        return self.ra if self.ra is not None else PAPER000_SAMPLES[self.sample]
+
+    @property
+    def grid(self) -> tuple[tuple[int, int], tuple[float, float]]:
+        """(shape, size [m]) of the scan: square, 20 nm pixels."""
+        from ..papers.paper000 import PIXEL
+
+        return (self.shape, self.shape), (self.shape * PIXEL, self.shape * PIXEL)
+
+
+class Paper000Tip(Strict):
+    """Paper 000's rough SiO2 sphere, 20 nm pixels (:func:`~roughcontact.papers.paper000.paper000_tip`)."""
+
+    generate: Literal["paper000_tip"]
+    shape: int = Field(default=256, ge=2)
+    seed: int | None = None
+
+    grid = Paper000Scan.grid
+
+
+class Paper001Ball(Strict):
+    """Paper 001's rough ball over its 1.1 mm field (:func:`~roughcontact.papers.paper001.roughness`)."""
+
+    generate: Literal["paper001_ball"]
+    ball: Literal["HDPE", "POM"]
+    shape: int = Field(default=1024, ge=2)
+    """Pixels across the field (the paper's scans: 1024)."""
+    seed: int | None = None
+
+    @property
+    def grid(self) -> tuple[tuple[int, int], tuple[float, float]]:
+        """(shape, size [m]) of the ball's scan: square, over the 1.1 mm field."""
+        from ..papers.paper001 import FIELD
+
+        return (self.shape, self.shape), (FIELD, FIELD)
+
+
 class Combined(Strict):
     """The composite of two named topographies (:func:`~roughcontact.topography.process.combine`)."""
 
@@ -354,6 +430,9 @@ GENERATED = (
     Bisinusoid,
     FlatPunch,
     RaisedIsland,
+    Paper000Scan,
+    Paper000Tip,
+    Paper001Ball,
     Paper002Island,
 )
 GENERATORS = {model.model_fields["generate"].annotation.__args__[0]: model for model in GENERATED}

@@ -46,7 +46,7 @@ from pydantic_core import PydanticCustomError
 
 from ...contact.adhesive_result import LINE_NAMES, AdhesiveResult
 from ...errors import InputError
-from ..kind import CaseOutput, CaseParameters, Kind, caption
+from ..kind import CaseOutput, CaseParameters, Kind, caption, fill_from_paper
 from ..schema import Length, MaterialName, SurfaceEnergy, TopographyName
 from .common import box_around, evenly_chosen
 
@@ -107,6 +107,16 @@ class AdhesionParameters(CaseParameters):
     """Height h of paper 000's Winkler layer (winkler = true)."""
     reading: Literal["default", "paper", "printed"] = "default"
     """Preset of paper 000's readings for the Winkler springs (winkler = true)."""
+    paper000: bool = Field(default=False, exclude=True)
+    """Fill in paper 000's bodies, surface energies, law and layer
+    (:func:`roughcontact.papers.paper000.adhesion_keys`) where the analysis leaves them out."""
+
+    @model_validator(mode="before")
+    @classmethod
+    def _paper000_scenario(cls, data: Any) -> Any:
+        from ...papers.paper000 import adhesion_keys
+
+        return fill_from_paper(data, "paper000", adhesion_keys)
 
     @property
     def first_approach(self) -> float:

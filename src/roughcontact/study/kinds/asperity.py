@@ -41,8 +41,9 @@ this study's, for the cases with ``paper002 = true``).
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from pathlib import Path
-from typing import Annotated, Literal
+from typing import Annotated, Any, Literal
 
 import numpy as np
 from pydantic import AfterValidator, Field, model_validator
@@ -50,7 +51,7 @@ from pydantic_core import PydanticCustomError
 
 from ...asperity.load_unload import LOADING_LAWS, StatisticalLoadUnload
 from ...asperity.parameters import AsperityParameters
-from ..kind import CaseOutput, CaseParameters, Kind, caption
+from ..kind import CaseOutput, CaseParameters, Kind, caption, fill_from_paper
 from ..schema import Area, Force, InverseArea, MaterialName, Pressure, Strict, TopographyName
 from .common import evenly_chosen
 
@@ -99,7 +100,10 @@ class AsperityKeys(CaseParameters):
     steps : int
         Points per branch of the curve.
     paper002 : bool
-        Add this case to the ``paper002`` table (section IV's printed values against ours).
+        Fill in paper 002's printed moments (unless ``topography``), the film and punch, the loads
+        and the island's area (:func:`roughcontact.papers.paper002.asperity_keys`) where the
+        analysis leaves them out, and add the case to the ``paper002`` table (section IV's printed
+        values against ours).
     """
 
     topography: TopographyName | None = None
@@ -118,6 +122,19 @@ class AsperityKeys(CaseParameters):
     reference_force: Force | None = None
     steps: int = Field(default=40, ge=2)
     paper002: bool = False
+
+    @model_validator(mode="before")
+    @classmethod
+    def _paper002_scenario(cls, data: Any) -> Any:
+        from ...papers.paper002 import asperity_keys
+
+        def keys(given: Mapping[str, Any]) -> dict[str, Any]:
+            keys = asperity_keys()
+            if "topography" in given:  # the moments are the surface's own
+                keys = {k: v for k, v in keys.items() if k not in ("m0", "m2", "m4")}
+            return keys
+
+        return fill_from_paper(data, "paper002", keys)
 
     @model_validator(mode="after")
     def _consistent(self) -> AsperityKeys:

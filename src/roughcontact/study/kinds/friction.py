@@ -94,8 +94,9 @@ from pydantic import Field, field_validator, model_serializer, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...errors import InputError
+from ...papers import paper000
 from ...winkler_lj import WinklerLJResult
-from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind, caption
+from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind, caption, fill_from_paper
 from ..schema import Force, Length, MaterialName, Pressure, Strict, SurfaceEnergy, Time, TopographyName
 from .common import box_around, grouped
 
@@ -141,6 +142,9 @@ class FrictionParameters(CaseParameters):
         Also find the load where mechanical friction overtakes adhesive friction.
     gap_model : str
         ``"winkler"`` (the springs' gaps of eq. 2) or ``"bem"`` (the adhesive BEM's gap field).
+    paper000 : bool
+        Fill in paper 000's materials, load, layer, epsilon and surface energies
+        (:func:`roughcontact.papers.paper000.friction_keys`) where the analysis leaves them out.
     """
 
     topography: TopographyName
@@ -148,8 +152,8 @@ class FrictionParameters(CaseParameters):
     material: MaterialName
     counter_body: MaterialName | None = None
     normal_force: Force
-    layer_thickness: Length = 50e-9
-    epsilon: Length = 2e-9
+    layer_thickness: Length = paper000.LAYER_THICKNESS
+    epsilon: Length = paper000.EPSILON
     surface_energy: SurfaceEnergy | None = None
     counter_surface_energy: SurfaceEnergy | None = None
     reading: str = "default"
@@ -161,6 +165,13 @@ class FrictionParameters(CaseParameters):
     hold_time: Time = 0.0
     crossover: bool = False
     gap_model: Literal["winkler", "bem"] = "winkler"
+    paper000: bool = Field(default=False, exclude=True)
+    """Fill in paper 000's scenario (stored as the keys it fills, not as the flag)."""
+
+    @model_validator(mode="before")
+    @classmethod
+    def _paper000_scenario(cls, data: Any) -> Any:
+        return fill_from_paper(data, "paper000", paper000.friction_keys)
 
     @model_serializer(mode="wrap")
     def _without_unset_newer_keys(self, handler):

@@ -49,7 +49,7 @@ omega / omega_c where the asperity analyses give one omega_c), ``von_mises`` (Fi
 from __future__ import annotations
 
 import math
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 from pydantic import Field, model_validator
@@ -57,7 +57,7 @@ from pydantic_core import PydanticCustomError
 
 from ...contact.load_unload import LoadUnloadResult
 from ...units import format_si
-from ..kind import CaseOutput, CaseParameters, Kind, caption
+from ..kind import CaseOutput, CaseParameters, Kind, caption, fill_from_paper
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
 from .asperity import MeasuredCurve, common_omega_c, curve_of, draw_load_interference, measured_of
 from .common import evenly_chosen
@@ -107,6 +107,9 @@ class LoadUnloadParameters(CaseParameters):
         Depth [m] of the plastic volume (default: ``layers`` pixels, within the film).
     layers : int
         Cells through the depth.
+    paper002 : bool
+        Fill in paper 002's film on its substrate and its loads
+        (:func:`roughcontact.papers.paper002.load_unload_keys`) where the analysis leaves them out.
     """
 
     topography: TopographyName
@@ -126,6 +129,15 @@ class LoadUnloadParameters(CaseParameters):
     hardening_modulus: Pressure = 0.0
     depth: Length | None = None
     layers: int = Field(default=16, ge=1)
+    paper002: bool = Field(default=False, exclude=True)
+    """Fill in paper 002's scenario (stored as the keys it fills, not as the flag)."""
+
+    @model_validator(mode="before")
+    @classmethod
+    def _paper002_scenario(cls, data: Any) -> Any:
+        from ...papers.paper002 import load_unload_keys
+
+        return fill_from_paper(data, "paper002", lambda given: load_unload_keys())
 
     @model_validator(mode="after")
     def _consistent(self) -> LoadUnloadParameters:

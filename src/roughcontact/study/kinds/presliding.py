@@ -76,8 +76,9 @@ K. L. Johnson, *Contact Mechanics*, Cambridge University Press, 1985, secs. 7.2 
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from pathlib import Path
-from typing import Annotated, Literal
+from typing import Annotated, Any, Literal
 
 import numpy as np
 from pydantic import Field, model_validator
@@ -86,8 +87,9 @@ from pydantic_core import PydanticCustomError
 from ...contact.presliding import MINDLIN_READINGS as READINGS
 from ...contact.presliding import POINT_NAMES as POINTS
 from ...contact.presliding import PreslidingResult
+from ...papers import paper001
 from ...units import format_si
-from ..kind import CaseOutput, CaseParameters, Kind, caption
+from ..kind import CaseOutput, CaseParameters, Kind, caption, fill_from_paper
 from ..schema import Force, ForceUnit, Length, LengthUnit, MaterialName, Strict, TopographyName
 from .common import evenly_chosen, grouped
 
@@ -139,6 +141,10 @@ class PreslidingParameters(CaseParameters):
         (the programme's points only).
     tolerance : float
         Relative tolerance of the normal and tangential solvers.
+    paper001 : bool
+        Fill in paper 001's ball material, the wafer, the radius and, at a load of Table 1, its
+        stroke and mu (:func:`roughcontact.papers.paper001.presliding_keys`) where the analysis
+        leaves them out; the ball is ``material`` or else ``sample`` (HDPE or POM).
     """
 
     topography: TopographyName
@@ -147,7 +153,7 @@ class PreslidingParameters(CaseParameters):
     counter_body: MaterialName | None = None
     normal_force: Annotated[Force, _Positive] | None = None
     friction_coefficient: Annotated[float, _Positive]
-    radius: Annotated[Length, _Positive] = 5e-3
+    radius: Annotated[Length, _Positive] = paper001.RADIUS
     stroke: Annotated[Length, _Positive] | None = None
     cycles: Annotated[int, Field(ge=1)] = 4
     steps_per_stroke: Annotated[int, Field(ge=4)] = 20
@@ -158,6 +164,13 @@ class PreslidingParameters(CaseParameters):
     loading_steps: Annotated[int, Field(ge=2)] = 10
     max_stick_change: Annotated[float, Field(ge=0.0, lt=1.0)] = 0.1
     tolerance: float = Field(default=1e-8, gt=0.0, lt=1.0)
+    paper001: bool = Field(default=False, exclude=True)
+    """Fill in paper 001's scenario (stored as the keys it fills, not as the flag)."""
+
+    @model_validator(mode="before")
+    @classmethod
+    def _paper001_scenario(cls, data: Any) -> Any:
+        return fill_from_paper(data, "paper001", _paper001_keys)
 
     @model_validator(mode="after")
     def _one_programme(self) -> PreslidingParameters:
@@ -173,6 +186,35 @@ class PreslidingParameters(CaseParameters):
                 },
             )
         return self
+
+
+def _paper001_keys(given: Mapping[str, Any]) -> dict[str, Any]:
+    """Return paper 001's keys for the ball of ``material`` (or ``sample``) at ``normal_force``."""
+    from ...errors import InputError
+    from ...units import quantity
+
+    ball = given.get("material") or given.get("sample")
+    try:
+        name = paper001.ball_name(str(ball))
+    except InputError:
+        raise PydanticCustomError(
+            "quantity",
+            "paper001 = true needs the ball (HDPE or POM), found {ball}",
+            {"ball": repr(ball), "fix": "give sample = 'HDPE' (or 'POM'), or material = 'HDPE'"},
+        ) from None
+    try:
+        force = quantity(given.get("normal_force"), "force")
+    except (InputError, TypeError, ValueError):
+        force = None  # no load (or one the validation reports): no stroke and mu from Table 1
+    needed = "friction_coefficient" not in given or not {"stroke", "path"} & set(given)
+    if force is not None and needed:
+        try:
+            paper001.table1(name, force)
+        except InputError as error:
+            raise PydanticCustomError(
+                "quantity", "{problem}", {"problem": error.problem, "fix": error.fix, "field": "normal_force"}
+            ) from None
+    return paper001.presliding_keys(name, force)
 
 
 class PreslidingCompare(Strict):
