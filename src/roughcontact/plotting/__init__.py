@@ -1,35 +1,52 @@
-"""Figures, with matplotlib only here and imported lazily by callers.
+"""Figures, with matplotlib only here; importing the package loads none of it.
 
-Every function takes results (or a topography) and an optional ``ax`` and returns
-``(fig, ax)``; nothing is shown and no global pyplot state is touched.
+Two families, both returning matplotlib objects and touching no global pyplot state:
+
+* ``plot_*(result, ax=None)`` draw one result (or a topography) on optional axes and return
+  ``(fig, ax)``;
+* ``*_figure(cases, ...)`` draw a study's figure from several cases (stored case records, or
+  results wrapped by :func:`as_cases`) and return a ``Figure`` or None; each carries the caption
+  the report prints under it (:func:`figure_caption`). The study kinds wire these, so every figure
+  of ``roughcontact run`` can be drawn from Python.
+
+Names load from their modules on first use.
 """
 
-from .asperity import plot_area_load, plot_load_interference, plot_von_mises_maps
-from .contact import (
-    plot_contact_area,
-    plot_contact_overview,
-    plot_gap,
-    plot_load_approach,
-    plot_pressure,
-    plot_von_mises,
-)
-from .friction import plot_friction_vs_load, plot_mu_boxes, plot_mu_means
-from .topography import plot_heights, plot_overview, plot_psd
+from importlib import import_module
 
-__all__ = [
-    "plot_area_load",
-    "plot_contact_area",
-    "plot_contact_overview",
-    "plot_friction_vs_load",
-    "plot_gap",
-    "plot_heights",
-    "plot_load_approach",
-    "plot_load_interference",
-    "plot_mu_boxes",
-    "plot_mu_means",
-    "plot_overview",
-    "plot_pressure",
-    "plot_psd",
-    "plot_von_mises",
-    "plot_von_mises_maps",
-]
+_HOMES = {
+    "as_cases": "cases",
+    "figure_caption": "cases",
+    "ResultCase": "cases",
+    "plot_area_load": "asperity",
+    "plot_load_interference": "asperity",
+    "plot_von_mises_maps": "asperity",
+    "plot_contact_area": "contact",
+    "plot_contact_overview": "contact",
+    "plot_gap": "contact",
+    "plot_load_approach": "contact",
+    "plot_pressure": "contact",
+    "plot_von_mises": "contact",
+    "plot_friction_vs_load": "friction",
+    "plot_mu_boxes": "friction",
+    "plot_mu_means": "friction",
+    "plot_heights": "topography",
+    "plot_overview": "topography",
+    "plot_psd": "topography",
+}
+"""Public name -> its module in this package (imported on first use)."""
+
+__all__ = sorted(_HOMES)
+
+
+def __getattr__(name: str):
+    """Load a public name from its module on first use (no matplotlib before a figure is drawn)."""
+    if name in _HOMES:
+        value = getattr(import_module(f"{__name__}.{_HOMES[name]}"), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
+
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-from ..units import unit_factor
+from ..units import format_si, unit_factor
+from .cases import caption, evenly_chosen, with_fields
 from .contact import plot_von_mises
 from .layout import axes_for, legend
 
@@ -115,3 +118,218 @@ def plot_von_mises_maps(compression, indices: list[int], *, depth: float = 0.0) 
     for ax in axes[len(indices) :]:
         ax.set_visible(False)
     return fig, axes
+
+
+def curve_of(case) -> dict[str, np.ndarray] | None:
+    """Return the stored load-unload curve of a finished case as a dict of arrays (None without one)."""
+    if not case.has_fields:
+        return None
+    data = case.dataset()
+    if data is None or "branch" not in data:
+        return None
+    return {name: np.asarray(data[name]) for name in data.data_vars}
+
+
+def common_omega_c(cases) -> float | None:
+    """Return omega_c [m] shared by all ``cases`` (within 1e-9), or None where they differ or have none."""
+    values = [r.scalars.get("critical_interference") for r in cases]
+    if not values or any(v is None for v in values):
+        return None
+    return values[0] if np.allclose(values, values[0], rtol=1e-9, atol=0) else None
+
+
+def draw_load_interference(curves: dict[str, dict], omega_c: float | None, measured: dict | None):
+    """Paper 002 Fig. 7: load against omega / omega_c (or against omega in nm where omega_c is not shared).
+
+    Uses :func:`roughcontact.plotting.asperity.plot_load_interference`, which draws at most five
+    curves; callers pass at most five.
+    """
+    figure, ax = plot_load_interference(curves, omega_c or 1e-9, measured=measured)
+    if omega_c is None:
+        ax.set_xlabel("interference ω (nm)")
+    else:
+        ax.set_title(f"ω_c = {omega_c * 1e9:.3g} nm", fontsize="medium")
+    return figure
+
+
+def _labelled_curves(cases) -> dict[str, dict]:
+    chosen = evenly_chosen(with_fields(cases), 5)
+    curves = {}
+    for case in chosen:
+        curve = curve_of(case)
+        if curve is not None:
+            law = case.parameters.get("law", "")
+            curves[f"KKE ({law})" if len(chosen) == 1 else f"KKE, {case.label}"] = curve
+    return curves
+
+
+@caption(
+    "Load against interference ω/ω_c of the statistical KKE model, loading (solid) and unloading "
+    "(dashed), with the measured curve of [analysis.compare] where given (paper 002 Fig. 7)."
+)
+def asperity_load_interference_figure(cases, measured=None):
+    """Draw paper 002's Fig. 7 for cases of the ``asperity`` model (up to five), beside a ``measured`` curve.
+
+    ``measured`` is a dict with ``approach`` [m] and ``force`` [N]
+    (:func:`~roughcontact.experiment.load_curve.read_load_curve`). None without a stored curve.
+    """
+    curves = _labelled_curves(cases)
+    if not curves:
+        return None
+    return draw_load_interference(curves, common_omega_c(with_fields(cases)), measured)
+
+
+@caption(
+    "Real contact area against load from the statistical KKE model, loading (solid) and unloading "
+    "(dashed; the single-asperity unloading area, docs/asperity.md)."
+)
+def asperity_contact_area_figure(cases):
+    """Draw the real contact area against load of cases of the ``asperity`` model (up to five)."""
+    curves = _labelled_curves(cases)
+    if not curves:
+        return None
+    figure, ax = plot_area_load(curves)
+    ax.set_title("real contact area (statistical)")
+    return figure
+
+
+def _asperity_curves(statistical: Mapping[str, Sequence]) -> tuple[dict[str, dict], list]:
+    """Return the curves of the statistical analyses (at most two) and the cases they come from."""
+    curves, used = {}, []
+    sources = [(name, case) for name, cases in statistical.items() for case in with_fields(cases)]
+    for name, case in sources[:2]:
+        curve = curve_of(case)
+        if curve is None:
+            continue
+        law = case.parameters.get("law", "")
+        label = f"KKE ({law})" if len(sources) == 1 else f"KKE {name}, {case.label}"
+        curves[label] = curve
+        used.append(case)
+    return curves, used
+
+
+@caption(
+    "Load against interference ω/ω_c on loading (solid) and unloading (dashed): the deterministic BEM "
+    "compression beside the statistical KKE curves of the study's asperity analyses and the measured "
+    "curve, where given (paper 002 Fig. 7)."
+)
+def island_load_interference_figure(cases, statistical=None, measured=None):
+    """Draw paper 002's Fig. 7 for cases of the ``load_unload`` model, beside the statistical curves.
+
+    ``statistical`` maps an analysis name to cases of the ``asperity`` model (their curves are
+    drawn, up to two); ``measured`` as for :func:`asperity_load_interference_figure`.
+    """
+    curves, used = _asperity_curves(statistical or {})
+    own = evenly_chosen(with_fields(cases), 5 - len(curves))
+    for case in own:
+        curve = curve_of(case)
+        if curve is not None:
+            model = f"{case.parameters.get('plasticity', 'surface')} plasticity"
+            curves[f"BEM island ({model})" if len(own) == 1 else f"BEM ({model}), {case.label}"] = curve
+    if not curves:
+        return None
+    return draw_load_interference(curves, common_omega_c(used), measured)
+
+
+def _first_case_panels(cases, name: str, *, height: float):
+    """Return (case, dataset, figure, axes, count): a grid of up to 3 columns, one panel per stored map.
+
+    The first case with stored fields and the variable ``name``; None when there is none.
+    """
+    from .layout import new_figure
+
+    case = next(iter(with_fields(cases)), None)
+    data = None if case is None else case.dataset()
+    if data is None or name not in data:
+        return None
+    count = data.sizes["map"]
+    columns = min(3, count)
+    figure, axes = new_figure(-(-count // columns), columns, width=4.2, height=height)
+    return case, data, figure, [ax for row in axes for ax in row], count
+
+
+@caption(
+    "Von Mises stress maps of the first case at the stored loads, loading then unloading, on one "
+    "colour scale (paper 002 Figs. 8-9); a panel at zero load says so."
+)
+def island_von_mises_figure(cases):
+    """Draw paper 002's Figs. 8-9: the stored von Mises maps of the first case, loading then unloading."""
+    from .layout import colour_scale, shared_colorbar
+    from .study import map_axes
+
+    panels = _first_case_panels(cases, "von_mises", height=3.6)
+    if panels is None:
+        return None
+    case, data, figure, flat, count = panels
+    # one scale, the full range: the panels compare, and a smooth stress field has no spike to clip
+    shared = colour_scale(data["von_mises"], from_zero=True, percentiles=(0, 100))
+    image = None
+    for index, ax in enumerate(flat):
+        if index >= count:
+            ax.set_visible(False)
+            continue
+        field = data["von_mises"].isel(map=index)
+        if float(field.max()) > 0:
+            image = map_axes(ax, field, "von Mises", "Pa", cmap="inferno", scale=shared, colorbar=False)
+        else:  # no load and nothing left: no plastic strain yet, or the surface model (module notes)
+            volume = data.attrs.get("plasticity") == "volume"
+            ax.text(
+                0.5,
+                0.5,
+                "no pressure, no stress" + ("" if volume else "\n(no residual stress\nin this model)"),
+                ha="center",
+                va="center",
+                transform=ax.transAxes,
+            )
+            ax.set_xticks([])
+            ax.set_yticks([])
+        ax.set_title(f"{str(field.map_branch.values)}, W = {format_si(float(field.map_force), 'N')}")
+    if image is not None:
+        shared_colorbar(image, flat[:count], "von Mises stress", "Pa", shared)
+    depth = float(data.attrs.get("stress_depth", 0.0))
+    where = "surface" if depth == 0 else f"z = {format_si(depth, 'm', digits=3)}"
+    figure.suptitle(f"von Mises stress ({where})" + (f", {case.label}" if len(cases) > 1 else ""))
+    return figure
+
+
+@caption(
+    "Von Mises stress of the first case on a vertical section along x, through the line that carries "
+    "the most load at the peak, at the "
+    "stored loads, loading then unloading, on one colour scale (volume plasticity only): the plastic "
+    "zone below the contacts and, at zero load, the residual stress (paper 002 Fig. 9e)."
+)
+def von_mises_section_figure(cases):
+    """Draw the von Mises stress on the stored vertical section of the first case (volume plasticity)."""
+    from .layout import colour_scale, shared_colorbar
+
+    panels = _first_case_panels(cases, "von_mises_section", height=2.6)
+    if panels is None:
+        return None
+    _, data, figure, flat, count = panels
+    sections = data["von_mises_section"]
+    shared = colour_scale(sections, from_zero=True, percentiles=(0, 100))
+    factor, _ = shared.prefixed("Pa")
+    x = sections["x_section"].values * 1e6
+    z = sections["z"].values * 1e6
+    image = None
+    for index, ax in enumerate(flat):
+        if index >= count:
+            ax.set_visible(False)
+            continue
+        image = ax.pcolormesh(
+            x,
+            z,
+            sections.isel(map=index).values.T / factor,
+            cmap="inferno",
+            vmin=shared.low / factor,
+            vmax=shared.high / factor,
+            shading="nearest",
+        )
+        ax.invert_yaxis()
+        ax.set_xlabel("x (µm)")
+        ax.set_ylabel("depth z (µm)")
+        force = float(data["von_mises"].map_force[index])
+        ax.set_title(f"{str(data['von_mises'].map_branch.values[index])}, W = {format_si(force, 'N')}")
+    shared_colorbar(image, flat[:count], "von Mises stress", "Pa", shared)
+    figure.suptitle(sections.attrs.get("long_name", "von Mises stress on a section"))
+    return figure

@@ -1,4 +1,8 @@
-"""Figures of normal contact results: pressure and gap maps, load-approach curves, von Mises maps."""
+"""Figures of normal contact: pressure and gap maps, load-approach curves, von Mises maps.
+
+``plot_*`` draw one :class:`~roughcontact.contact.result.NormalContactResult`; ``*_figure`` draw
+a study's figure from several cases (:mod:`roughcontact.plotting.cases`).
+"""
 
 from __future__ import annotations
 
@@ -6,7 +10,8 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-from ..units import prefixed_scale
+from ..units import format_si, prefixed_scale
+from .cases import caption, evenly_chosen, grouped, scalar_series, with_fields
 from .layout import axes_for, legend
 
 
@@ -95,3 +100,117 @@ def plot_contact_overview(result) -> Figure:
     plot_pressure(result, left)
     plot_gap(result, right)
     return fig
+
+
+@caption(
+    "Contact pressure (top) and gap (bottom) of up to four cases; each row shares one colour scale, "
+    "from 0 to the 99.5th percentile of its nonzero values. Titles give the case and the fraction of "
+    "the nominal area in contact. A line scan (plane-strain line contact) is drawn as profiles: "
+    "pressure and gap against x, one curve per case."
+)
+def contact_maps_figure(cases):
+    """Draw pressure and gap of up to four cases with fields (profiles for line scans); None without any."""
+    from .layout import colour_scale, legend, new_figure, shared_colorbar
+    from .study import map_axes, profile_axes
+
+    chosen = evenly_chosen(with_fields(cases), 4)
+    fields = [case.dataset() for case in chosen]
+    if not chosen:
+        return None
+    if "y" not in fields[0].dims:
+        figure, axes = new_figure(2, 1, width=6.4, height=2.6)
+        labels = [
+            f"{r.label}: {100 * r.scalars['contact_fraction']:.3g} % in contact" if len(chosen) > 1 else None
+            for r in chosen
+        ]
+        profile_axes(axes[0][0], [data["pressure"] for data in fields], labels, "pressure", "Pa")
+        profile_axes(axes[1][0], [data["gap"] for data in fields], labels, "gap", "m")
+        if len(chosen) > 1:
+            legend(axes[0][0])
+        else:
+            axes[0][0].set_title(
+                f"{chosen[0].label}\n{100 * chosen[0].scalars['contact_fraction']:.3g} % in contact"
+            )
+        return figure
+    figure, axes = new_figure(2, len(chosen), width=3.6 if len(chosen) > 1 else 4.6, height=3.2)
+    for row, (name, cmap) in enumerate((("pressure", "magma"), ("gap", "viridis"))):
+        unit = "Pa" if name == "pressure" else "m"
+        shared = colour_scale(*(data[name] for data in fields), from_zero=True)
+        for column, data in enumerate(fields):
+            image = map_axes(
+                axes[row][column], data[name], name, unit, cmap=cmap, scale=shared, colorbar=False
+            )
+        shared_colorbar(image, axes[row], name, unit, shared)
+    for case, ax in zip(chosen, axes[0], strict=True):
+        ax.set_title(f"{case.label}\n{100 * case.scalars['contact_fraction']:.3g} % in contact")
+    return figure
+
+
+def _curve_of_cases(cases, x: str, y: str, scales: tuple[float, float], labels: tuple[str, str, str]):
+    """One scalar against another over the cases, a line per sample (None for fewer than 2 cases)."""
+    from .layout import legend, new_figure
+
+    if len(cases) < 2:
+        return None
+    figure, axes = new_figure(1, 1)
+    ax = axes[0][0]
+    groups = grouped(cases)
+    for sample, group in groups.items():
+        abscissa, ordinate = scalar_series(group, x, y)
+        ax.plot(abscissa * scales[0], ordinate * scales[1], "o-", label=sample or None)
+    ax.set_xlabel(labels[0])
+    ax.set_ylabel(labels[1])
+    ax.set_title(labels[2])
+    if any(groups):
+        legend(ax)
+    return figure
+
+
+@caption(
+    "Real contact area as a fraction of the nominal area against the nominal mean pressure, one line "
+    "per sample."
+)
+def area_load_figure(cases):
+    """Draw the real contact fraction against the mean pressure over the cases, a line per sample."""
+    labels = (
+        "nominal mean pressure (MPa)",
+        "real contact area (% of nominal)",
+        "real contact area against load",
+    )
+    return _curve_of_cases(cases, "mean_pressure", "contact_fraction", (1e-6, 100.0), labels)
+
+
+@caption(
+    "Normal force (per unit length for a line scan) against the rigid approach counted from the "
+    "first touch, one line per sample."
+)
+def load_approach_figure(cases):
+    """Draw the force (per length for a line scan) against the approach over the cases."""
+    if cases and "force_per_length" in cases[0].scalars:
+        labels = ("approach (nm)", "force per length (N/m)", "load against approach")
+        return _curve_of_cases(cases, "approach", "force_per_length", (1e9, 1.0), labels)
+    labels = ("approach (nm)", "force (µN)", "load against approach")
+    return _curve_of_cases(cases, "approach", "force", (1e9, 1e6), labels)
+
+
+@caption(
+    "Von Mises stress at the first stored depth below the surface for up to four cases, on one colour "
+    "scale from 0 to the largest value of all the panels."
+)
+def von_mises_figure(cases):
+    """Draw the von Mises maps at the first stored depth of up to four cases; None without any."""
+    from .layout import colour_scale, new_figure, shared_colorbar
+    from .study import map_axes
+
+    chosen = evenly_chosen([r for r in cases if "max_von_mises" in r.scalars], 4)
+    if not chosen:
+        return None
+    figure, axes = new_figure(1, len(chosen), width=3.6 if len(chosen) > 1 else 4.6, height=3.2)
+    fields = [case.dataset()["von_mises"].isel(depth=0) for case in chosen]
+    shared = colour_scale(*fields, from_zero=True, percentiles=(0, 100))  # smooth: the full range
+    for column, (case, field) in enumerate(zip(chosen, fields, strict=True)):
+        ax = axes[0][column]
+        image = map_axes(ax, field, "von Mises stress", "Pa", cmap="inferno", scale=shared, colorbar=False)
+        ax.set_title(f"{case.label}\nz = {format_si(float(field.depth), 'm', digits=3)}")
+    shared_colorbar(image, axes[0], "von Mises stress", "Pa", shared)
+    return figure

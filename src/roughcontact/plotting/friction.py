@@ -1,4 +1,8 @@
-"""Figures of the Winkler-Lennard-Jones friction model and of its validation (paper 000, Figs. 8-9)."""
+"""Figures of the Winkler-Lennard-Jones friction model and of its validation (paper 000, Figs. 8-9).
+
+``plot_*`` draw one sweep or comparison on optional axes; ``*_figure`` draw a study's figure from
+the cases of the ``friction`` model (:mod:`roughcontact.plotting.cases`).
+"""
 
 from __future__ import annotations
 
@@ -6,6 +10,7 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import prefixed_scale
+from .cases import by_sample, caption, grouped, loads_of, mean_by_load
 from .layout import axes_for, legend
 
 
@@ -108,3 +113,108 @@ def plot_friction_vs_load(sweep, ax: Axes | None = None, *, crossover: float | N
     ax.set_ylabel(f"friction force ({unit})")
     legend(ax)
     return fig, ax
+
+
+@caption(
+    "Left: coefficient of friction μ = F/N against the normal load. Right: its adhesive (solid) and "
+    "mechanical (dashed) parts, with the crossover load dotted; one colour per sample (paper 000)."
+)
+def friction_vs_load_figure(cases):
+    """Draw mu and the adhesive and mechanical friction against the load, a colour per sample.
+
+    Means over the replicates at each load; None for fewer than two loads.
+    """
+    from .layout import new_figure
+
+    loads = loads_of(cases)
+    if len(loads) < 2:
+        return None
+    scale, unit = (1e-3, "mN") if loads[-1] >= 1e-3 else (1e-6, "µN") if loads[-1] >= 1e-6 else (1e-9, "nN")
+    figure, axes = new_figure(1, 2, width=5.5)
+    mu_axis, force_axis = axes[0]
+    colours = [f"C{k % 10}" for k in range(len(grouped(cases)))]
+    for colour, (sample, group) in zip(colours, grouped(cases).items(), strict=True):
+        label = sample or None
+        load, mu = mean_by_load(group, "mu")
+        mu_axis.semilogx(load / scale, mu, "o-", color=colour, label=label)
+        for name, style in (("adhesive_friction", "-"), ("mechanical_friction", "--")):
+            load, force = mean_by_load(group, name)
+            shown = force > 0
+            force_axis.loglog(load[shown] / scale, force[shown] / scale, style, color=colour)
+        crossovers = [r.scalars.get("crossover_load") for r in group]
+        crossovers = [float(c) for c in crossovers if c is not None]
+        if crossovers:
+            force_axis.axvline(np.mean(crossovers) / scale, color=colour, lw=0.8, ls=":")
+    mu_axis.set_xlabel(f"normal load ({unit})")
+    mu_axis.set_ylabel("coefficient of friction μ")
+    mu_axis.set_title("μ against load" + (" (mean over replicates)" if len(cases) > len(loads) else ""))
+    force_axis.set_xlabel(f"normal load ({unit})")
+    force_axis.set_ylabel(f"friction force ({unit})")
+    force_axis.set_title("adhesive (solid) and mechanical (dashed) friction")
+    if any(grouped(cases)):
+        legend(mu_axis, fontsize="small")
+    return figure
+
+
+def _simulated_only(cases) -> dict[str, list[float]] | None:
+    """Return the simulated mu per sample for the figures without measured data (None: several loads)."""
+    if len(loads_of(cases)) > 1:
+        return None  # a load sweep: friction_vs_load shows it
+    return by_sample(cases, "mu")
+
+
+@caption(
+    "Coefficient of friction per sample: simulated (and measured, with [analysis.compare]) as boxes "
+    "of the quartiles with whiskers from min to max, every scan as a point (paper 000 Fig. 9)."
+)
+def mu_boxes_figure(cases, comparison=None):
+    """Draw mu per sample as boxes: simulated beside measured with a ``comparison``, else simulated only.
+
+    ``comparison`` is a :class:`~roughcontact.experiment.compare.Comparison` of these cases with
+    measured values; without one, None where the cases span several loads.
+    """
+    from .layout import new_figure
+
+    figure, axes = new_figure(1, 1, width=6.0)
+    ax = axes[0][0]
+    if comparison is not None:
+        plot_mu_boxes(comparison, ax=ax)
+        return figure
+    simulated = _simulated_only(cases)
+    if simulated is None:
+        return None
+    positions = list(range(1, len(simulated) + 1))
+    draw_boxes(ax, list(simulated.values()), positions, ["tab:blue"] * len(simulated), width=0.6)
+    ax.set_xticks(positions)
+    ax.set_xticklabels(list(simulated))
+    ax.set_ylabel("coefficient of friction μ")
+    ax.set_title("simulated μ per sample (boxes: quartiles, whiskers: min to max)")
+    return figure
+
+
+@caption(
+    "Mean coefficient of friction per sample with one standard deviation, simulated beside measured "
+    "where given (paper 000 Fig. 8)."
+)
+def mu_means_figure(cases, comparison=None):
+    """Draw the mean mu per sample with one standard deviation (see :func:`mu_boxes_figure`)."""
+    from .layout import new_figure
+
+    figure, axes = new_figure(1, 1, width=6.0)
+    ax = axes[0][0]
+    if comparison is not None:
+        plot_mu_means(comparison, ax=ax)
+        ax.set_title(f"mean μ per sample, Pearson r of the means = {comparison.pearson_r:.2f}")
+        return figure
+    simulated = _simulated_only(cases)
+    if simulated is None:
+        return None
+    x = np.arange(len(simulated))
+    means = [float(np.mean(v)) for v in simulated.values()]
+    spread = [float(np.std(v, ddof=1)) if len(v) > 1 else 0.0 for v in simulated.values()]
+    ax.bar(x, means, width=0.5, yerr=spread, capsize=4, color="tab:blue", alpha=0.7, label="simulated")
+    ax.set_xticks(x)
+    ax.set_xticklabels(list(simulated))
+    ax.set_ylabel("mean coefficient of friction μ (± 1 s.d.)")
+    legend(ax)
+    return figure

@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import unit_factor
+from .cases import caption, panel_per_case
 from .layout import axes_for, legend
 
 _SEGMENT_STYLES = {"loading": "C0", "hold": "C2", "unloading": "C1"}
@@ -99,3 +102,17 @@ def plot_indentation_record(data, scalars: dict, *, ax: Axes | None = None, titl
     legend(ax, fontsize="small", loc="upper left")
     ax.grid(True, alpha=0.3)
     return fig, ax
+
+
+@caption(
+    "Load-displacement curves (up to four) with the fitted unloading law and its tangent at the start "
+    "of unloading, whose slope is the contact stiffness S_e (paper 001 Fig. 7)."
+)
+def indentation_figure(cases):
+    """Draw each curve (up to four) with its fitted unloading law and the tangent S_e (paper 001 Fig. 7)."""
+
+    def draw(case, data, ax):
+        source = case.parameters.get("curve")
+        plot_indentation_record(data, case.scalars, ax=ax, title=Path(source).name if source else case.label)
+
+    return panel_per_case(cases, draw)

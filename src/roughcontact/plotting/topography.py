@@ -14,7 +14,8 @@ from matplotlib.figure import Figure
 from ..topography import Topography
 from ..topography.process import find_specks
 from ..topography.statistics import psd_1d, psd_radial
-from ..units import prefixed_scale
+from ..units import format_si, prefixed_scale
+from .cases import caption, evenly_chosen
 from .layout import CLIP_PERCENTILES, axes_for, colour_scale, shared_colorbar
 
 
@@ -45,7 +46,7 @@ def plot_heights(
     cmap : str
         Colour map of the height map.
     undefined : ndarray of bool, optional
-        Points the instrument did not record: drawn grey and left out of the colour scale, as are
+        Points the instrument did not case: drawn grey and left out of the colour scale, as are
         the measured points in specks amid them
         (:func:`roughcontact.topography.process.find_specks`).
     percentiles : (float, float)
@@ -130,7 +131,7 @@ def plot_psd(topography: Topography, ax: Axes | None = None):
 def plot_overview(topography: Topography, *, undefined: np.ndarray | None = None) -> Figure:
     """Return a two-panel figure: height map (or profile) and PSD, as ``roughcontact plot`` writes it.
 
-    With ``undefined`` (points the instrument did not record) the second panel shows where they
+    With ``undefined`` (points the instrument did not case) the second panel shows where they
     are instead of the PSD, which needs every point.
     """
     fig = Figure(figsize=(10.0, 4.2), layout="constrained")
@@ -151,3 +152,50 @@ def plot_overview(topography: Topography, *, undefined: np.ndarray | None = None
     right.set_xlabel(f"x ({size_label})")
     right.set_title(f"undefined points (black): {np.count_nonzero(undefined)} of {undefined.size}")
     return fig
+
+
+@caption(
+    "Height maps of up to four surfaces about their mean plane, as used (levelled files, generated "
+    "surfaces as made); colours clipped to the 0.5-99.5 percentiles of each map, titles give Sq."
+)
+def heights_figure(cases):
+    """Draw the height maps (or profiles) of up to four cases of the ``statistics`` model."""
+    from .layout import legend, new_figure
+    from .study import map_axes
+
+    chosen = evenly_chosen(cases, 4)
+    fields = [case.dataset() for case in chosen]
+    if "y" not in fields[0].dims:
+        figure, axes = new_figure(1, 1, width=7.0)
+        for case, data in zip(chosen, fields, strict=True):
+            axes[0][0].plot(data["x"] * 1e6, data["heights"] * 1e9, label=case.label)
+        axes[0][0].set_xlabel("x (µm)")
+        axes[0][0].set_ylabel("height (nm)")
+        legend(axes[0][0])
+        return figure
+    figure, axes = new_figure(1, len(chosen), width=3.8, height=3.2)
+    for column, (case, data) in enumerate(zip(chosen, fields, strict=True)):
+        map_axes(axes[0][column], data["heights"], "height", "m")
+        axes[0][column].set_title(f"{case.label}\nSq {format_si(case.scalars['Sq'], 'm', digits=3)}")
+    return figure
+
+
+@caption(
+    "Power spectral density C(q) of every surface against the wavevector q = 2π/λ (radially averaged "
+    "for maps; normalised so that it integrates to the mean square height, Jacobs et al. 2017)."
+)
+def psd_figure(cases):
+    """Draw the PSD of every case of the ``statistics`` model on one plot."""
+    from .layout import legend, new_figure
+
+    figure, axes = new_figure(1, 1)
+    ax = axes[0][0]
+    for case in cases:
+        data = case.dataset()
+        ax.loglog(data["q"], data["psd"], label=case.label)
+    ax.set_xlabel("wavevector q (rad/m)")
+    ax.set_ylabel(f"PSD ({cases[0].dataset()['psd'].attrs['units']})")
+    ax.set_title("power spectral density")
+    if 1 < len(cases) <= 12:
+        legend(ax, fontsize="small")
+    return figure

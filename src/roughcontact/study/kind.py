@@ -9,8 +9,10 @@ A *kind* (``model = "normal"`` in a study file) adapts one of roughcontact's mod
   ``xarray.Dataset`` of fields and curves; it runs on a Dask worker as well as in-process, so it
   takes and returns only picklable values;
 * ``figures`` and ``tables``: drawn and written from *stored* case records only, so
-  ``roughcontact plot OUT/`` re-draws them without solving anything again. Each figure function
-  carries the caption the report prints under it (:func:`caption`).
+  ``roughcontact plot OUT/`` re-draws them without solving anything again. A figure is a function
+  of :mod:`roughcontact.plotting` on cases (usable from Python on results too), wired with
+  :func:`figure`; it carries the caption the report prints under it
+  (:func:`~roughcontact.plotting.cases.caption`).
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
+from ..plotting.cases import figure_caption
 from ..units import format_si
 from .schema import Strict
 
@@ -135,6 +138,11 @@ class CaseRecord:
                 break
         return ", ".join(parts) or self.data["case"]
 
+    @property
+    def has_fields(self) -> bool:
+        """Whether the case stored fields and curves (:meth:`dataset`)."""
+        return self.fields_path is not None
+
     @cached_property
     def fields_path(self) -> Path | None:
         """Where the case's NetCDF file is (None when the case stored none)."""
@@ -178,30 +186,40 @@ TableFunction = Callable[[Sequence[CaseRecord], FigureContext], list[dict[str, A
 """Derives one table (a list of rows) from the finished cases; returns None to skip."""
 
 
-def caption(text: str) -> Callable[[FigureFunction], FigureFunction]:
-    """Give a figure function the caption the report prints under its figure.
+@dataclass(frozen=True)
+class figure:  # noqa: N801 - used like a function in the kinds' tables of figures
+    """A figure function of :mod:`roughcontact.plotting`, wired as one of a kind's figures.
 
-    The caption says what is shown, for a reader who has not seen the code: the quantities, the
-    cases drawn, the colour scales. ``figure_caption`` reads it back.
-
-    Examples
-    --------
-    >>> @caption("Real contact area against load.")
-    ... def area(records, context): ...
-    >>> figure_caption(area)
-    'Real contact area against load.'
+    ``figure("adhesion.force_approach_figure")`` names ``draw`` in its plotting module, imported
+    when the figure is drawn or its caption read (matplotlib is not loaded to validate a study).
+    ``draw(records, **keywords)`` takes the analysis' records as its cases; each keyword is what
+    ``inputs[name](records, context)`` returns (the measured data of ``[analysis.compare]``, the
+    curves of the study's other analyses).
     """
 
-    def mark(function: FigureFunction) -> FigureFunction:
-        function.caption = text  # type: ignore[attr-defined]
-        return function
+    name: str
+    inputs: Mapping[str, Callable[[Sequence[CaseRecord], FigureContext], Any]]
 
-    return mark
+    def __init__(self, name: str, **inputs: Callable[[Sequence[CaseRecord], FigureContext], Any]):
+        object.__setattr__(self, "name", name)
+        object.__setattr__(self, "inputs", inputs)
 
+    @property
+    def draws(self) -> Callable[..., Any]:
+        """The plotting function."""
+        from importlib import import_module
 
-def figure_caption(function: FigureFunction) -> str:
-    """Return the caption of a figure function (see :func:`caption`), "" when it has none."""
-    return getattr(function, "caption", "")
+        module, function = self.name.rsplit(".", 1)
+        return getattr(import_module(f"roughcontact.plotting.{module}"), function)
+
+    @property
+    def caption(self) -> str:
+        """The plotting function's caption."""
+        return figure_caption(self.draws)
+
+    def __call__(self, records: Sequence[CaseRecord], context: FigureContext):
+        """Draw the figure of ``records``; a Figure, or None where the cases do not make it."""
+        return self.draws(records, **{name: read(records, context) for name, read in self.inputs.items()})
 
 
 @dataclass(frozen=True)

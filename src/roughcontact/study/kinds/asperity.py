@@ -45,15 +45,13 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-import numpy as np
 from pydantic import AfterValidator, Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...asperity.load_unload import LOADING_LAWS, StatisticalLoadUnload
 from ...asperity.parameters import AsperityParameters
-from ..kind import CaseOutput, CaseParameters, Kind, caption, fill_from_paper
+from ..kind import CaseOutput, CaseParameters, Kind, figure, fill_from_paper
 from ..schema import Area, Force, InverseArea, MaterialName, Pressure, Strict, TopographyName
-from .common import evenly_chosen
 
 
 def _positive(unit: str):
@@ -257,41 +255,7 @@ def run(parameters: AsperityKeys, inputs) -> CaseOutput:
 # --- figures and tables --------------------------------------------------------------------------
 
 
-def curve_of(record) -> dict[str, np.ndarray] | None:
-    """Return the stored load-unload curve of a finished record as a dict of arrays (None without one)."""
-    if record.fields_path is None:
-        return None
-    data = record.dataset()
-    if data is None or "branch" not in data:
-        return None
-    return {name: np.asarray(data[name]) for name in data.data_vars}
-
-
-def common_omega_c(records) -> float | None:
-    """Return omega_c [m] shared by all ``records`` (within 1e-9), or None where they differ or have none."""
-    values = [r.scalars.get("critical_interference") for r in records]
-    if not values or any(v is None for v in values):
-        return None
-    return values[0] if np.allclose(values, values[0], rtol=1e-9, atol=0) else None
-
-
-def draw_load_interference(curves: dict[str, dict], omega_c: float | None, measured: dict | None):
-    """Paper 002 Fig. 7: load against omega / omega_c (or against omega in nm where omega_c is not shared).
-
-    Uses :func:`roughcontact.plotting.asperity.plot_load_interference`, which draws at most five
-    curves; callers pass at most five.
-    """
-    from ...plotting.asperity import plot_load_interference
-
-    figure, ax = plot_load_interference(curves, omega_c or 1e-9, measured=measured)
-    if omega_c is None:
-        ax.set_xlabel("interference ω (nm)")
-    else:
-        ax.set_title(f"ω_c = {omega_c * 1e9:.3g} nm", fontsize="medium")
-    return figure
-
-
-def measured_of(context) -> dict | None:
+def measured_of(records, context) -> dict | None:
     """Return the measured curve of the analysis' ``[analysis.compare]`` table, or None."""
     compare = context.compare
     if compare is None or getattr(compare, "measured_curve", None) is None:
@@ -299,44 +263,6 @@ def measured_of(context) -> dict | None:
     from ...experiment.load_curve import read_load_curve
 
     return read_load_curve(Path(compare.measured_curve))
-
-
-def _labelled_curves(records) -> dict[str, dict]:
-    chosen = evenly_chosen([r for r in records if r.fields_path is not None], 5)
-    curves = {}
-    for record in chosen:
-        curve = curve_of(record)
-        if curve is not None:
-            law = record.parameters.get("law", "")
-            curves[f"KKE ({law})" if len(chosen) == 1 else f"KKE, {record.label}"] = curve
-    return curves
-
-
-@caption(
-    "Load against interference ω/ω_c of the statistical KKE model, loading (solid) and unloading "
-    "(dashed), with the measured curve of [analysis.compare] where given (paper 002 Fig. 7)."
-)
-def _load_interference(records, context):
-    curves = _labelled_curves(records)
-    if not curves:
-        return None
-    with_curve = [r for r in records if r.fields_path is not None]
-    return draw_load_interference(curves, common_omega_c(with_curve), measured_of(context))
-
-
-@caption(
-    "Real contact area against load from the statistical KKE model, loading (solid) and unloading "
-    "(dashed; the single-asperity unloading area, docs/asperity.md)."
-)
-def _contact_area(records, context):
-    from ...plotting.asperity import plot_area_load
-
-    curves = _labelled_curves(records)
-    if not curves:
-        return None
-    figure, ax = plot_area_load(curves)
-    ax.set_title("real contact area (statistical)")
-    return figure
 
 
 def _paper002_table(records, context):
@@ -391,7 +317,10 @@ KIND = Kind(
     parameters=AsperityKeys,
     run=run,
     units=UNITS,
-    figures={"load_interference": _load_interference, "contact_area": _contact_area},
+    figures={
+        "load_interference": figure("asperity.asperity_load_interference_figure", measured=measured_of),
+        "contact_area": figure("asperity.asperity_contact_area_figure"),
+    },
     tables={"paper002": _paper002_table},
     compare=MeasuredCurve,
     headline=(

@@ -95,10 +95,11 @@ from pydantic_core import PydanticCustomError
 
 from ...errors import InputError
 from ...papers import paper000
+from ...plotting.cases import at_load, by_sample, grouped, loads_of
 from ...winkler_lj import WinklerLJResult
-from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind, caption, fill_from_paper
+from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind, figure, fill_from_paper
 from ..schema import Force, Length, MaterialName, Pressure, Strict, SurfaceEnergy, Time, TopographyName
-from .common import box_around, grouped
+from .common import box_around
 
 log = logging.getLogger(__name__)
 
@@ -107,8 +108,6 @@ FIELD_MARGIN = 4
 
 FIELD_POINTS = 128 * 128
 """Most grid points of stored fields (about 0.7 MB a case); larger windows store no fields."""
-
-_LOAD_RTOL = 1e-9
 
 
 class FrictionParameters(CaseParameters):
@@ -432,21 +431,9 @@ def run(parameters: FrictionParameters, inputs) -> CaseOutput:
 # --- figures and tables (from stored records) ------------------------------------------------------
 
 
-def _load(record: CaseRecord) -> float:
-    return float(record.parameters["normal_force"])
-
-
-def _loads(records: Sequence[CaseRecord]) -> list[float]:
-    distinct: list[float] = []
-    for load in sorted(_load(r) for r in records):
-        if not distinct or not math.isclose(load, distinct[-1], rel_tol=_LOAD_RTOL):
-            distinct.append(load)
-    return distinct
-
-
 def _at_one_load(records: Sequence[CaseRecord], load: float | None) -> list[CaseRecord]:
     """Return the records at ``load``, or all of them when the analysis has one load; else InputError."""
-    loads = _loads(records)
+    loads = loads_of(records)
     if load is None:
         if len(loads) > 1:
             raise InputError(
@@ -456,7 +443,7 @@ def _at_one_load(records: Sequence[CaseRecord], load: float | None) -> list[Case
                 "add normal_force = '10 uN' (the load of the measurements) to [analysis.compare].",
             )
         return list(records)
-    chosen = [r for r in records if math.isclose(_load(r), load, rel_tol=_LOAD_RTOL)]
+    chosen = at_load(records, load)
     if not chosen:
         raise InputError(
             "compare.normal_force",
@@ -464,11 +451,6 @@ def _at_one_load(records: Sequence[CaseRecord], load: float | None) -> list[Case
             "set compare.normal_force to one of the analysis' loads.",
         )
     return chosen
-
-
-def simulated_mu(records: Sequence[CaseRecord]) -> dict[str, list[float]]:
-    """Return the simulated mu of every finished case, per sample (in order of first appearance)."""
-    return {sample: [float(r.scalars["mu"]) for r in group] for sample, group in grouped(records).items()}
 
 
 def comparison(records: Sequence[CaseRecord], context: FigureContext):
@@ -496,7 +478,7 @@ def comparison(records: Sequence[CaseRecord], context: FigureContext):
     from ...experiment.compare import compare, read_measured
 
     spec = context.compare
-    simulated = simulated_mu(_at_one_load(records, spec.normal_force))
+    simulated = by_sample(_at_one_load(records, spec.normal_force), "mu")
     measured = read_measured(spec.measured)
     common = [s for s in simulated if s in measured]
     left_out = sorted(set(simulated) ^ set(measured))
@@ -514,6 +496,11 @@ def comparison(records: Sequence[CaseRecord], context: FigureContext):
         alpha=spec.alpha,
         equal_var=spec.equal_var,
     )
+
+
+def _comparison_or_none(records, context):
+    """Return the comparison with ``[analysis.compare]`` (None without one); its errors reach the report."""
+    return None if context.compare is None else comparison(records, context)
 
 
 def _comparison_table(records, context):
@@ -536,8 +523,8 @@ def _by_sample(records, context):
     """
     rows = []
     for sample, group in grouped(records).items():
-        for load in _loads(group):
-            chosen = [r for r in group if math.isclose(_load(r), load, rel_tol=_LOAD_RTOL)]
+        for load in loads_of(group):
+            chosen = at_load(group, load)
             mu = np.array([float(r.scalars["mu"]) for r in chosen])
             row: dict[str, Any] = {
                 "sample": sample,
@@ -555,114 +542,6 @@ def _by_sample(records, context):
                     row[f"{name}_mean [N]"] = float(np.mean(values))
             rows.append(row)
     return rows if any(row["n"] > 1 for row in rows) else None
-
-
-def _mean_by_load(group: Sequence[CaseRecord], name: str) -> tuple[np.ndarray, np.ndarray]:
-    loads = _loads(group)
-    means = []
-    for load in loads:
-        values = [r.scalars.get(name) for r in group if math.isclose(_load(r), load, rel_tol=_LOAD_RTOL)]
-        values = [float(v) for v in values if v is not None]
-        means.append(np.mean(values) if values else np.nan)
-    return np.array(loads), np.array(means)
-
-
-@caption(
-    "Left: coefficient of friction μ = F/N against the normal load. Right: its adhesive (solid) and "
-    "mechanical (dashed) parts, with the crossover load dotted; one colour per sample (paper 000)."
-)
-def _friction_vs_load(records, context):
-    from ...plotting.layout import legend, new_figure
-
-    loads = _loads(records)
-    if len(loads) < 2:
-        return None
-    scale, unit = (1e-3, "mN") if loads[-1] >= 1e-3 else (1e-6, "µN") if loads[-1] >= 1e-6 else (1e-9, "nN")
-    figure, axes = new_figure(1, 2, width=5.5)
-    mu_axis, force_axis = axes[0]
-    colours = [f"C{k % 10}" for k in range(len(grouped(records)))]
-    for colour, (sample, group) in zip(colours, grouped(records).items(), strict=True):
-        label = sample or None
-        load, mu = _mean_by_load(group, "mu")
-        mu_axis.semilogx(load / scale, mu, "o-", color=colour, label=label)
-        for name, style in (("adhesive_friction", "-"), ("mechanical_friction", "--")):
-            load, force = _mean_by_load(group, name)
-            shown = force > 0
-            force_axis.loglog(load[shown] / scale, force[shown] / scale, style, color=colour)
-        crossovers = [r.scalars.get("crossover_load") for r in group]
-        crossovers = [float(c) for c in crossovers if c is not None]
-        if crossovers:
-            force_axis.axvline(np.mean(crossovers) / scale, color=colour, lw=0.8, ls=":")
-    mu_axis.set_xlabel(f"normal load ({unit})")
-    mu_axis.set_ylabel("coefficient of friction μ")
-    mu_axis.set_title("μ against load" + (" (mean over replicates)" if len(records) > len(loads) else ""))
-    force_axis.set_xlabel(f"normal load ({unit})")
-    force_axis.set_ylabel(f"friction force ({unit})")
-    force_axis.set_title("adhesive (solid) and mechanical (dashed) friction")
-    if any(grouped(records)):
-        legend(mu_axis, fontsize="small")
-    return figure
-
-
-def _simulated_only(records, context) -> dict[str, list[float]] | None:
-    """Return the simulated mu per sample for the figures without measured data (None: several loads)."""
-    if len(_loads(records)) > 1:
-        return None  # a load sweep: friction_vs_load shows it
-    return simulated_mu(records)
-
-
-@caption(
-    "Coefficient of friction per sample: simulated (and measured, with [analysis.compare]) as boxes "
-    "of the quartiles with whiskers from min to max, every scan as a point (paper 000 Fig. 9)."
-)
-def _mu_boxes(records, context):
-    from ...plotting.friction import draw_boxes, plot_mu_boxes
-    from ...plotting.layout import new_figure
-
-    figure, axes = new_figure(1, 1, width=6.0)
-    ax = axes[0][0]
-    if context.compare is not None:
-        plot_mu_boxes(comparison(records, context), ax=ax)  # errors are listed in the report
-        return figure
-    simulated = _simulated_only(records, context)
-    if simulated is None:
-        return None
-    positions = list(range(1, len(simulated) + 1))
-    draw_boxes(ax, list(simulated.values()), positions, ["tab:blue"] * len(simulated), width=0.6)
-    ax.set_xticks(positions)
-    ax.set_xticklabels(list(simulated))
-    ax.set_ylabel("coefficient of friction μ")
-    ax.set_title("simulated μ per sample (boxes: quartiles, whiskers: min to max)")
-    return figure
-
-
-@caption(
-    "Mean coefficient of friction per sample with one standard deviation, simulated beside measured "
-    "where given (paper 000 Fig. 8)."
-)
-def _mu_means(records, context):
-    from ...plotting.friction import plot_mu_means
-    from ...plotting.layout import legend, new_figure
-
-    figure, axes = new_figure(1, 1, width=6.0)
-    ax = axes[0][0]
-    if context.compare is not None:
-        result = comparison(records, context)
-        plot_mu_means(result, ax=ax)
-        ax.set_title(f"mean μ per sample, Pearson r of the means = {result.pearson_r:.2f}")
-        return figure
-    simulated = _simulated_only(records, context)
-    if simulated is None:
-        return None
-    x = np.arange(len(simulated))
-    means = [float(np.mean(v)) for v in simulated.values()]
-    spread = [float(np.std(v, ddof=1)) if len(v) > 1 else 0.0 for v in simulated.values()]
-    ax.bar(x, means, width=0.5, yerr=spread, capsize=4, color="tab:blue", alpha=0.7, label="simulated")
-    ax.set_xticks(x)
-    ax.set_xticklabels(list(simulated))
-    ax.set_ylabel("mean coefficient of friction μ (± 1 s.d.)")
-    legend(ax)
-    return figure
 
 
 class FrictionCompare(Strict):
@@ -706,7 +585,11 @@ KIND = Kind(
         "spring_stiffness": "Pa/m",
         "spring_area": "m^2",
     },
-    figures={"friction_vs_load": _friction_vs_load, "mu_boxes": _mu_boxes, "mu_means": _mu_means},
+    figures={
+        "friction_vs_load": figure("friction.friction_vs_load_figure"),
+        "mu_boxes": figure("friction.mu_boxes_figure", comparison=_comparison_or_none),
+        "mu_means": figure("friction.mu_means_figure", comparison=_comparison_or_none),
+    },
     tables={"comparison": _comparison_table, "by_sample": _by_sample},
     compare=FrictionCompare,
     headline=("mu", "adhesive_friction", "mechanical_friction", "adhesive_to_mechanical", "crossover_load"),

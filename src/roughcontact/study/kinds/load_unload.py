@@ -56,11 +56,11 @@ from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...contact.load_unload import LoadUnloadResult
+from ...plotting.cases import evenly_chosen
 from ...units import format_si
-from ..kind import CaseOutput, CaseParameters, Kind, caption, fill_from_paper
+from ..kind import CaseOutput, CaseParameters, Kind, figure, fill_from_paper
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
-from .asperity import MeasuredCurve, common_omega_c, curve_of, draw_load_interference, measured_of
-from .common import evenly_chosen
+from .asperity import MeasuredCurve, measured_of
 
 MAPS_PER_BRANCH = 6
 """Default number of von Mises maps on loading (evenly spread over the targets; unloading: the same loads)."""
@@ -313,143 +313,9 @@ def _section(path, chosen: list[int], peak: int, surface, points: int):
 # --- figures -------------------------------------------------------------------------------------
 
 
-def _asperity_curves(context) -> tuple[dict[str, dict], list]:
-    """Return the curves of the study's ``asperity`` analyses (at most two) and the records they come from."""
-    curves, used = {}, []
-    sources = [
-        (name, r) for name, (model, records) in context.others.items() if model == "asperity" for r in records
-    ]
-    sources = [(name, r) for name, r in sources if r.fields_path is not None]
-    for name, record in sources[:2]:
-        curve = curve_of(record)
-        if curve is None:
-            continue
-        law = record.parameters.get("law", "")
-        label = f"KKE ({law})" if len(sources) == 1 else f"KKE {name}, {record.label}"
-        curves[label] = curve
-        used.append(record)
-    return curves, used
-
-
-@caption(
-    "Load against interference ω/ω_c on loading (solid) and unloading (dashed): the deterministic BEM "
-    "compression beside the statistical KKE curves of the study's asperity analyses and the measured "
-    "curve, where given (paper 002 Fig. 7)."
-)
-def _load_interference(records, context):
-    curves, used = _asperity_curves(context)
-    own = evenly_chosen([r for r in records if r.fields_path is not None], 5 - len(curves))
-    for record in own:
-        curve = curve_of(record)
-        if curve is not None:
-            model = f"{record.parameters.get('plasticity', 'surface')} plasticity"
-            curves[f"BEM island ({model})" if len(own) == 1 else f"BEM ({model}), {record.label}"] = curve
-    if not curves:
-        return None
-    return draw_load_interference(curves, common_omega_c(used), measured_of(context))
-
-
-def _first_case_panels(records, name: str, *, height: float):
-    """Return (record, dataset, figure, axes, count): a grid of up to 3 columns, one panel per stored map.
-
-    The first case with stored fields and the variable ``name``; None when there is none.
-    """
-    from ...plotting.layout import new_figure
-
-    record = next((r for r in records if r.fields_path is not None), None)
-    data = None if record is None else record.dataset()
-    if data is None or name not in data:
-        return None
-    count = data.sizes["map"]
-    columns = min(3, count)
-    figure, axes = new_figure(-(-count // columns), columns, width=4.2, height=height)
-    return record, data, figure, [ax for row in axes for ax in row], count
-
-
-@caption(
-    "Von Mises stress maps of the first case at the stored loads, loading then unloading, on one "
-    "colour scale (paper 002 Figs. 8-9); a panel at zero load says so."
-)
-def _von_mises(records, context):
-    """Paper 002 Figs. 8-9: the stored von Mises maps of the first case, loading then unloading."""
-    from ...plotting.layout import colour_scale, shared_colorbar
-    from ...plotting.study import map_axes
-
-    panels = _first_case_panels(records, "von_mises", height=3.6)
-    if panels is None:
-        return None
-    record, data, figure, flat, count = panels
-    # one scale, the full range: the panels compare, and a smooth stress field has no spike to clip
-    shared = colour_scale(data["von_mises"], from_zero=True, percentiles=(0, 100))
-    image = None
-    for index, ax in enumerate(flat):
-        if index >= count:
-            ax.set_visible(False)
-            continue
-        field = data["von_mises"].isel(map=index)
-        if float(field.max()) > 0:
-            image = map_axes(ax, field, "von Mises", "Pa", cmap="inferno", scale=shared, colorbar=False)
-        else:  # no load and nothing left: no plastic strain yet, or the surface model (module notes)
-            volume = data.attrs.get("plasticity") == "volume"
-            ax.text(
-                0.5,
-                0.5,
-                "no pressure, no stress" + ("" if volume else "\n(no residual stress\nin this model)"),
-                ha="center",
-                va="center",
-                transform=ax.transAxes,
-            )
-            ax.set_xticks([])
-            ax.set_yticks([])
-        ax.set_title(f"{str(field.map_branch.values)}, W = {format_si(float(field.map_force), 'N')}")
-    if image is not None:
-        shared_colorbar(image, flat[:count], "von Mises stress", "Pa", shared)
-    depth = float(data.attrs.get("stress_depth", 0.0))
-    where = "surface" if depth == 0 else f"z = {format_si(depth, 'm', digits=3)}"
-    figure.suptitle(f"von Mises stress ({where})" + (f", {record.label}" if len(records) > 1 else ""))
-    return figure
-
-
-@caption(
-    "Von Mises stress of the first case on a vertical section along x, through the line that carries "
-    "the most load at the peak, at the "
-    "stored loads, loading then unloading, on one colour scale (volume plasticity only): the plastic "
-    "zone below the contacts and, at zero load, the residual stress (paper 002 Fig. 9e)."
-)
-def _von_mises_section(records, context):
-    from ...plotting.layout import colour_scale, shared_colorbar
-
-    panels = _first_case_panels(records, "von_mises_section", height=2.6)
-    if panels is None:
-        return None
-    _, data, figure, flat, count = panels
-    sections = data["von_mises_section"]
-    shared = colour_scale(sections, from_zero=True, percentiles=(0, 100))
-    factor, _ = shared.prefixed("Pa")
-    x = sections["x_section"].values * 1e6
-    z = sections["z"].values * 1e6
-    image = None
-    for index, ax in enumerate(flat):
-        if index >= count:
-            ax.set_visible(False)
-            continue
-        image = ax.pcolormesh(
-            x,
-            z,
-            sections.isel(map=index).values.T / factor,
-            cmap="inferno",
-            vmin=shared.low / factor,
-            vmax=shared.high / factor,
-            shading="nearest",
-        )
-        ax.invert_yaxis()
-        ax.set_xlabel("x (µm)")
-        ax.set_ylabel("depth z (µm)")
-        force = float(data["von_mises"].map_force[index])
-        ax.set_title(f"{str(data['von_mises'].map_branch.values[index])}, W = {format_si(force, 'N')}")
-    shared_colorbar(image, flat[:count], "von Mises stress", "Pa", shared)
-    figure.suptitle(sections.attrs.get("long_name", "von Mises stress on a section"))
-    return figure
+def _statistical(records, context) -> dict[str, list]:
+    """Return the finished cases of the study's ``asperity`` analyses, by analysis (Fig. 7's KKE curves)."""
+    return {name: list(cases) for name, (model, cases) in context.others.items() if model == "asperity"}
 
 
 KIND = Kind(
@@ -460,9 +326,11 @@ KIND = Kind(
     run=run,
     units=LoadUnloadResult.UNITS | {"max_von_mises_at_peak": "Pa"},
     figures={
-        "load_interference": _load_interference,
-        "von_mises": _von_mises,
-        "von_mises_section": _von_mises_section,
+        "load_interference": figure(
+            "asperity.island_load_interference_figure", statistical=_statistical, measured=measured_of
+        ),
+        "von_mises": figure("asperity.island_von_mises_figure"),
+        "von_mises_section": figure("asperity.von_mises_section_figure"),
     },
     compare=MeasuredCurve,
     headline=("peak_interference", "residual_interference", "peak_contact_area", "max_von_mises_at_peak"),

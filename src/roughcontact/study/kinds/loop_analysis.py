@@ -35,9 +35,8 @@ from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...experiment.friction_loop import LoopAnalysis
-from ..kind import CaseOutput, CaseParameters, Kind, caption
+from ..kind import CaseOutput, CaseParameters, Kind, figure
 from ..schema import Force, ForceUnit, LengthUnit
-from .common import panel_per_case
 
 
 class LoopAnalysisParameters(CaseParameters):
@@ -110,31 +109,13 @@ def run(parameters: LoopAnalysisParameters, inputs) -> CaseOutput:
     return CaseOutput(analysis.scalars(), analysis.to_xarray())
 
 
-@caption(
-    "Measured friction record (grey) with its last loop, the eq. 9 fits of its pre-sliding branches "
-    "and the points A, B, C with their lateral stiffness K_L (paper 001 Fig. 10)."
-)
-def _loop(records, context):
-    """Draw the record (grey), its last loop, the eq. 9 fits and the points with their K_L (Fig. 10)."""
-    from ...plotting.presliding import plot_loop_analysis
-
-    def draw(record, data, ax):
-        force = record.scalars["normal_force"] * 1e3
-        title = f"{Path(record.parameters['loop']).name}, F0 = {force:g} mN"
-        plot_loop_analysis(
-            {name: data[name].values for name in data.variables}, record.scalars, title=title, ax=ax
-        )
-
-    return panel_per_case(records, draw)
-
-
 KIND = Kind(
     name="loop_analysis",
     summary="a measured friction loop as paper 001 analyses it: stroke, mu, eq. 9 fit, K_L at A, B, C",
     parameters=LoopAnalysisParameters,
     run=run,
     units=LoopAnalysis.UNITS,
-    figures={"loop": _loop},
+    figures={"loop": figure("presliding.loop_analysis_figure")},
     check=check,
     headline=("stroke", "mu", "energy", "K_L_A", "K_L_B", "K_L_C"),
 )

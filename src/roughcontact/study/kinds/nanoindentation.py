@@ -41,9 +41,8 @@ from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...experiment.nanoindentation import CREEP_FITS, RATE_SIGNS, IndentationResult
-from ..kind import CaseOutput, CaseParameters, Kind, caption
+from ..kind import CaseOutput, CaseParameters, Kind, figure
 from ..schema import MaterialName
-from .common import panel_per_case
 
 
 class NanoindentationParameters(CaseParameters):
@@ -134,20 +133,6 @@ def run(parameters: NanoindentationParameters, inputs) -> CaseOutput:
     return CaseOutput(result.scalars(), result.to_xarray())
 
 
-@caption(
-    "Load-displacement curves (up to four) with the fitted unloading law and its tangent at the start "
-    "of unloading, whose slope is the contact stiffness S_e (paper 001 Fig. 7)."
-)
-def _indentation(records, context):
-    """Each curve (up to four) with its fitted unloading law and the tangent S_e (paper 001 Fig. 7)."""
-    from ...plotting.indentation import plot_indentation_record
-
-    def draw(record, data, ax):
-        plot_indentation_record(data, record.scalars, ax=ax, title=Path(record.parameters["curve"]).name)
-
-    return panel_per_case(records, draw)
-
-
 KIND = Kind(
     name="nanoindentation",
     summary="sample modulus from a load-displacement curve: Oliver-Pharr with the hold-creep correction "
@@ -155,7 +140,7 @@ KIND = Kind(
     parameters=NanoindentationParameters,
     run=run,
     units=IndentationResult.UNITS,
-    figures={"indentation": _indentation},
+    figures={"indentation": figure("indentation.indentation_figure")},
     check=check,
     headline=("youngs_modulus", "uncorrected_youngs_modulus", "reduced_modulus", "contact_depth"),
 )

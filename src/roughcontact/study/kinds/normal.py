@@ -20,10 +20,8 @@ from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from ...contact.result import NormalContactResult
-from ...units import format_si
-from ..kind import CaseOutput, CaseParameters, Kind, caption
+from ..kind import CaseOutput, CaseParameters, Kind, figure
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
-from .common import evenly_chosen, grouped, scalar_series
 
 
 class NormalParameters(CaseParameters):
@@ -145,116 +143,6 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
     return CaseOutput(scalars, dataset, tuple(result.range_warnings()))
 
 
-@caption(
-    "Contact pressure (top) and gap (bottom) of up to four cases; each row shares one colour scale, "
-    "from 0 to the 99.5th percentile of its nonzero values. Titles give the case and the fraction of "
-    "the nominal area in contact. A line scan (plane-strain line contact) is drawn as profiles: "
-    "pressure and gap against x, one curve per case."
-)
-def _contact_maps(records, context):
-    from ...plotting.layout import colour_scale, legend, new_figure, shared_colorbar
-    from ...plotting.study import map_axes, profile_axes
-
-    chosen = evenly_chosen([r for r in records if r.fields_path is not None], 4)
-    fields = [record.dataset() for record in chosen]
-    if not chosen:
-        return None
-    if "y" not in fields[0].dims:
-        figure, axes = new_figure(2, 1, width=6.4, height=2.6)
-        labels = [
-            f"{r.label}: {100 * r.scalars['contact_fraction']:.3g} % in contact" if len(chosen) > 1 else None
-            for r in chosen
-        ]
-        profile_axes(axes[0][0], [data["pressure"] for data in fields], labels, "pressure", "Pa")
-        profile_axes(axes[1][0], [data["gap"] for data in fields], labels, "gap", "m")
-        if len(chosen) > 1:
-            legend(axes[0][0])
-        else:
-            axes[0][0].set_title(
-                f"{chosen[0].label}\n{100 * chosen[0].scalars['contact_fraction']:.3g} % in contact"
-            )
-        return figure
-    figure, axes = new_figure(2, len(chosen), width=3.6 if len(chosen) > 1 else 4.6, height=3.2)
-    for row, (name, cmap) in enumerate((("pressure", "magma"), ("gap", "viridis"))):
-        unit = "Pa" if name == "pressure" else "m"
-        shared = colour_scale(*(data[name] for data in fields), from_zero=True)
-        for column, data in enumerate(fields):
-            image = map_axes(
-                axes[row][column], data[name], name, unit, cmap=cmap, scale=shared, colorbar=False
-            )
-        shared_colorbar(image, axes[row], name, unit, shared)
-    for record, ax in zip(chosen, axes[0], strict=True):
-        ax.set_title(f"{record.label}\n{100 * record.scalars['contact_fraction']:.3g} % in contact")
-    return figure
-
-
-def _curve_of_cases(records, x: str, y: str, scales: tuple[float, float], labels: tuple[str, str, str]):
-    """One scalar against another over the cases, a line per sample (None for fewer than 2 cases)."""
-    from ...plotting.layout import legend, new_figure
-
-    if len(records) < 2:
-        return None
-    figure, axes = new_figure(1, 1)
-    ax = axes[0][0]
-    groups = grouped(records)
-    for sample, group in groups.items():
-        abscissa, ordinate = scalar_series(group, x, y)
-        ax.plot(abscissa * scales[0], ordinate * scales[1], "o-", label=sample or None)
-    ax.set_xlabel(labels[0])
-    ax.set_ylabel(labels[1])
-    ax.set_title(labels[2])
-    if any(groups):
-        legend(ax)
-    return figure
-
-
-@caption(
-    "Real contact area as a fraction of the nominal area against the nominal mean pressure, one line "
-    "per sample."
-)
-def _area_load(records, context):
-    labels = (
-        "nominal mean pressure (MPa)",
-        "real contact area (% of nominal)",
-        "real contact area against load",
-    )
-    return _curve_of_cases(records, "mean_pressure", "contact_fraction", (1e-6, 100.0), labels)
-
-
-@caption(
-    "Normal force (per unit length for a line scan) against the rigid approach counted from the "
-    "first touch, one line per sample."
-)
-def _load_approach(records, context):
-    if records and "force_per_length" in records[0].scalars:
-        labels = ("approach (nm)", "force per length (N/m)", "load against approach")
-        return _curve_of_cases(records, "approach", "force_per_length", (1e9, 1.0), labels)
-    labels = ("approach (nm)", "force (µN)", "load against approach")
-    return _curve_of_cases(records, "approach", "force", (1e9, 1e6), labels)
-
-
-@caption(
-    "Von Mises stress at the first stored depth below the surface for up to four cases, on one colour "
-    "scale from 0 to the largest value of all the panels."
-)
-def _von_mises(records, context):
-    from ...plotting.layout import colour_scale, new_figure, shared_colorbar
-    from ...plotting.study import map_axes
-
-    chosen = evenly_chosen([r for r in records if "max_von_mises" in r.scalars], 4)
-    if not chosen:
-        return None
-    figure, axes = new_figure(1, len(chosen), width=3.6 if len(chosen) > 1 else 4.6, height=3.2)
-    fields = [record.dataset()["von_mises"].isel(depth=0) for record in chosen]
-    shared = colour_scale(*fields, from_zero=True, percentiles=(0, 100))  # smooth: the full range
-    for column, (record, field) in enumerate(zip(chosen, fields, strict=True)):
-        ax = axes[0][column]
-        image = map_axes(ax, field, "von Mises stress", "Pa", cmap="inferno", scale=shared, colorbar=False)
-        ax.set_title(f"{record.label}\nz = {format_si(float(field.depth), 'm', digits=3)}")
-    shared_colorbar(image, axes[0], "von Mises stress", "Pa", shared)
-    return figure
-
-
 KIND = Kind(
     name="normal",
     summary="normal contact against a flat: FFT-BEM, load or approach control, optional hardness/film",
@@ -263,10 +151,10 @@ KIND = Kind(
     check_inputs=check_inputs,
     units=NormalContactResult.UNITS | {"max_von_mises": "Pa", "max_von_mises_depth": "m"},
     figures={
-        "contact": _contact_maps,
-        "area_load": _area_load,
-        "load_approach": _load_approach,
-        "von_mises": _von_mises,
+        "contact": figure("contact.contact_maps_figure"),
+        "area_load": figure("contact.area_load_figure"),
+        "load_approach": figure("contact.load_approach_figure"),
+        "von_mises": figure("contact.von_mises_figure"),
     },
     headline=(
         "force",

@@ -80,7 +80,6 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-import numpy as np
 from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
@@ -88,10 +87,8 @@ from ...contact.presliding import MINDLIN_READINGS as READINGS
 from ...contact.presliding import POINT_NAMES as POINTS
 from ...contact.presliding import PreslidingResult
 from ...papers import paper001
-from ...units import format_si
-from ..kind import CaseOutput, CaseParameters, Kind, caption, fill_from_paper
+from ..kind import CaseOutput, CaseParameters, Kind, figure, fill_from_paper
 from ..schema import Force, ForceUnit, Length, LengthUnit, MaterialName, Strict, TopographyName
-from .common import evenly_chosen, grouped
 
 _Positive = Field(gt=0.0, allow_inf_nan=False)
 
@@ -311,10 +308,6 @@ def _number(record, name: str) -> float:
     return math.nan if value is None else float(value)
 
 
-def _by_force(records) -> list:
-    return sorted(records, key=lambda r: _number(r, "normal_force"))
-
-
 def _measured(context):
     """Return the measured loop of ``[analysis.compare]`` and its analysis, or None (none, or file gone).
 
@@ -331,307 +324,23 @@ def _measured(context):
     return loop, analyse_loop(loop.displacement, loop.force, compare.normal_force, fractions=FRACTIONS)
 
 
+def _measured_loop(records, context):
+    """Return the measured loop of ``[analysis.compare]`` as the figures draw it, or None."""
+    from ...plotting.presliding import MeasuredLoop
+
+    measured = _measured(context)
+    if measured is None:
+        return None
+    compare = context.compare
+    return MeasuredLoop(*measured, Path(compare.measured_loop).name, compare.normal_force, compare.sample)
+
+
+def _analysis_name(records, context) -> str:
+    return context.analysis
+
+
 def _compares_with(compare, sample: str) -> bool:
     return compare is not None and (compare.sample is None or compare.sample == sample)
-
-
-@caption(
-    "Friction force against tangential displacement of every case, one panel per sample, with the "
-    "measured loop of [analysis.compare] where given (paper 001 Figs. 13-14)."
-)
-def _loops(records, context):
-    """Friction loops of every case, one panel per sample, with the measured loop (Figs. 13-14)."""
-    from ...plotting.layout import new_figure
-    from ...plotting.presliding import plot_hysteresis_loops
-
-    groups = grouped([r for r in records if r.fields_path is not None])
-    if not groups:
-        return None
-    measured = _measured(context)
-    figure, axes = new_figure(1, len(groups), width=5.5, height=4.2)
-    for ax, (sample, group) in zip(axes[0], groups.items(), strict=True):
-        curves = []
-        for record in _by_force(group):
-            data = record.dataset()
-            force, mu = _number(record, "normal_force"), _number(record, "friction_coefficient")
-            label = f"{force * 1e3:g} mN, μ {mu:g}"
-            loads = data["normal_force"].values[1:] if "normal_force" in data else None
-            if loads is not None and np.ptp(loads) > 1e-9 * loads.max():  # a combined programme
-                label = f"F_n {format_si(loads.min(), 'N')} to {format_si(loads.max(), 'N')}, μ {mu:g}"
-            if data.attrs.get("control") == "force":
-                label += ", force control"
-            curves.append((np.asarray(data["delta_x"]), np.asarray(data["force_x"]), label))
-        overlay = []
-        if measured is not None and _compares_with(context.compare, sample):
-            loop, analysis = measured
-            shift = float(np.min(loop.displacement[analysis.loop]))
-            overlay.append(
-                (
-                    loop.displacement - shift,
-                    loop.force,
-                    f"measured {Path(context.compare.measured_loop).name} "
-                    f"({context.compare.normal_force * 1e3:g} mN, shifted {-shift * 1e6:+.2f} µm)",
-                )
-            )
-        plot_hysteresis_loops(curves, overlay, ax=ax, title=f"{sample or context.analysis}: friction loops")
-    return figure
-
-
-@caption(
-    "Normalised shear √(q_x² + q_y²)/(μ p) at the points A, B, C of the last loop (or the stored "
-    "steps), zoomed to the contact: 1 slips, below 1 sticks (paper 001 Figs. 11-12)."
-)
-def _stick_slip(records, context):
-    """Normalised shear maps of up to three cases: A, B, C of the last loop, or kept steps (Figs. 11-12)."""
-    chosen = evenly_chosen([r for r in records if r.fields_path is not None], 3)
-    if not chosen:
-        return None
-    panels = []
-    for record in chosen:
-        data = record.dataset()
-        name = _case_name(record)
-        reversal = data.attrs.get("reversal_displacement")
-        for index, label in enumerate(np.asarray(data["map"]).astype(str)):
-            delta = float(data["delta_x"][int(data["map_step"][index])])
-            if label in POINTS and reversal is not None:
-                shown = f"{label} (Δδ {abs(delta - float(reversal)) * 1e6:.2g} µm)"
-            else:
-                shown = f"{label} (δx {delta * 1e6:.3g} µm)"
-            loads = data["normal_force"].values if "normal_force" in data else None
-            step_name = name
-            if loads is not None and np.ptp(loads[1:]) > 1e-9 * loads.max():  # a combined programme
-                step_name = f"{_ball_name(record)} {format_si(loads[int(data['map_step'][index])], 'N')}"
-            values = data["normalised_shear"].isel(map=index)
-            panels.append((f"{step_name}, {shown}", values, data["x"], data["y"]))
-    columns = max(len(panels) // len(chosen), 1)
-    return shear_maps(panels, columns=columns)
-
-
-def _pixel_box(x, y) -> tuple[float, float, float, float]:
-    """Return the extent [m] of a map whose pixel centres are ``x``, ``y``."""
-    hx = x[1] - x[0] if x.size > 1 else 0.0
-    hy = y[1] - y[0] if y.size > 1 else 0.0
-    return (x[0] - hx / 2, x[-1] + hx / 2, y[0] - hy / 2, y[-1] + hy / 2)
-
-
-def _zoom(masks) -> tuple[float, float, float, float] | None:
-    """Return the box [m] of the pixels in any (mask on (x, y), x, y), widened by 10 %; None if none."""
-    boxes = []
-    for inside, x, y in masks:
-        if inside.any():
-            hx = x[1] - x[0] if x.size > 1 else 0.0
-            hy = y[1] - y[0] if y.size > 1 else 0.0
-            i, j = np.nonzero(inside)
-            boxes.append((x[i.min()] - hx, x[i.max()] + hx, y[j.min()] - hy, y[j.max()] + hy))
-    if not boxes:
-        return None
-    x0, x1 = min(b[0] for b in boxes), max(b[1] for b in boxes)
-    y0, y1 = min(b[2] for b in boxes), max(b[3] for b in boxes)
-    pad = 0.1 * max(x1 - x0, y1 - y0)
-    return (x0 - pad, x1 + pad, y0 - pad, y1 + pad)
-
-
-def shear_maps(panels, columns: int):
-    """Draw stored normalised shear maps, zoomed to the contacts (paper 001 Figs. 11-12).
-
-    ``panels``: (title, map on (x, y), x, y) per panel, the coordinates [m] at pixel centres; NaN
-    (outside the contact) is blank. The zoom is the box of every finite pixel, widened by 10 %.
-    """
-    from ...plotting.presliding import plot_stick_slip_maps
-
-    maps, extents, masks = {}, {}, []
-    for label, values, x, y in panels:
-        values, x, y = np.asarray(values, dtype=float), np.asarray(x), np.asarray(y)
-        maps[label] = values.T  # rows along y
-        extents[label] = _pixel_box(x, y)
-        masks.append((np.isfinite(values), x, y))
-    return plot_stick_slip_maps(maps, extents, zoom=_zoom(masks), columns=columns)
-
-
-def _ball_name(record) -> str:
-    """Return the ball's name: its sample, or its topography."""
-    return record.parameters.get("sample") or record.parameters["topography"]
-
-
-def _case_name(record) -> str:
-    """Return the ball and its load, as the paper names its cases (``POM-like ball 25 mN``)."""
-    return f"{_ball_name(record)} {_number(record, 'normal_force') * 1e3:g} mN"
-
-
-@caption(
-    "Contact pressure of up to three cases: the whole computed field with the zoomed box (left) and "
-    "the zoom on the contact with its outline (right), on one colour scale (paper 001 Figs. 8-9)."
-)
-def _pressure(records, context):
-    """Draw the contact pressure of up to three cases, whole field and zoom on the contact (Figs. 8-9)."""
-    from ...plotting.presliding import plot_pressure_maps
-
-    chosen = evenly_chosen(_by_force([r for r in records if r.fields_path is not None]), 3)
-    if not chosen:
-        return None
-    maps, extents, masks = {}, {}, []
-    for record in chosen:
-        data = record.dataset()
-        pressure, x, y = (
-            np.asarray(data["pressure"], dtype=float),
-            np.asarray(data["x"]),
-            np.asarray(data["y"]),
-        )
-        maps[_case_name(record)] = pressure.T  # rows along y
-        extents[_case_name(record)] = _pixel_box(x, y)
-        masks.append((pressure > 0, x, y))
-    zoom = _zoom(masks)
-    return None if zoom is None else plot_pressure_maps(maps, extents, zoom=zoom)
-
-
-@caption(
-    "The tangential displacement programme δ_x applied step by step (paper 001 Fig. 6); the last "
-    "loop, which is analysed, is shaded and its points A, B, C marked. A combined programme's normal "
-    "force is dashed on the right axis."
-)
-def _path(records, context):
-    """Draw the tangential displacement programme, step by step, with the last loop (Fig. 6).
-
-    Cases that share one programme draw one line; the points A, B, C of the first case are marked.
-    """
-    from ...plotting.presliding import plot_displacement_path
-
-    chosen = [r for r in records if r.fields_path is not None]
-    if not chosen:
-        return None
-    first = chosen[0].dataset()
-    distinct: list[tuple[object, np.ndarray]] = []  # (record, delta_x) of each different programme
-    for record in chosen:
-        delta = np.asarray(record.dataset()["delta_x"], dtype=float)
-        if not any(d.shape == delta.shape and np.allclose(d, delta, rtol=1e-9, atol=0) for _, d in distinct):
-            distinct.append((record, delta))
-    if len(distinct) == 1:
-        names = ["programme"]
-    else:  # named by ball and load, or by the swept values where those do not tell them apart
-        names = [_case_name(record) for record, _ in distinct]
-        if len(set(names)) < len(names):
-            names = [record.label for record, _ in distinct]
-    paths = dict(zip(names, (delta for _, delta in distinct), strict=True))
-    positions = {
-        name: _row_positions(record.dataset()) for name, (record, _) in zip(names, distinct, strict=True)
-    }
-    start, stop = first.attrs.get("last_loop_start"), first.attrs.get("last_loop_stop")
-    points = {
-        str(name): int(step)
-        for name, step in zip(
-            np.asarray(first["map"]).astype(str), np.asarray(first["map_step"]), strict=True
-        )
-        if str(name) in POINTS
-    }
-    normal = first["normal_force"].values if "normal_force" in first else None
-    refined = any(_number(record, "inserted_steps") > 0 for record, _ in distinct)
-    return plot_displacement_path(
-        paths,
-        last_loop=None if start is None else (int(start), int(stop)),
-        points=points,
-        normal_force=normal,
-        positions=positions if refined else None,
-    )
-
-
-def _row_positions(data) -> np.ndarray:
-    """Return each stored step's place on the axis of the programme's rows (0 is the start).
-
-    A row's own step sits at the row's number; steps the step control inserted before it sit in
-    between, in proportion to how far the tangential displacement (or, where it holds, the normal
-    force) has gone from the previous row.
-    """
-    if "programme_point" not in data:
-        return np.arange(data["delta_x"].size, dtype=float)
-    row = np.asarray(data["programme_point"], dtype=int)
-    moves = [np.asarray(data["delta_x"], dtype=float)]
-    if "normal_force" in data:
-        moves.append(np.asarray(data["normal_force"], dtype=float))
-    end = {0: 0}  # row -> the index of its own step (the last step with its number)
-    for index, number in enumerate(row):
-        end[int(number)] = index
-    out = row.astype(float)
-    for index in range(1, row.size):
-        number = int(row[index])
-        if index == end[number]:
-            continue
-        before, after = end.get(number - 1, 0), end[number]
-        for series in moves:
-            span = series[after] - series[before]
-            if abs(span) > 1e-12 * max(np.max(np.abs(series)), 1e-300):
-                out[index] = number - 1 + (series[index] - series[before]) / span
-                break
-        else:
-            out[index] = number - 1 + (index - before) / (after - before)
-    return out
-
-
-def _mindlin_curves(group, loads: np.ndarray) -> dict[str, dict[str, np.ndarray]] | None:
-    """Return Mindlin's K_L at ``loads`` from a group's stored values, or None if they cannot be scaled.
-
-    With the materials and the radius fixed, eq. 11 gives a proportional to F0^(1/3), and eq. 12
-    at a fixed fraction f of mu_f F0 (the points A, B, C) gives K_L = 8 a G (1 - f)^(1/3),
-    independent of mu_f: so K_L(F0) = K_L(F0_case) (F0 / F0_case)^(1/3), drawn as a smooth curve.
-    """
-    keys = {
-        (r.parameters["material"], r.parameters.get("counter_body"), r.parameters["radius"]) for r in group
-    }
-    if len(keys) != 1:
-        return None
-    first = group[0]
-    scale = np.cbrt(loads / _number(first, "normal_force"))
-    return {
-        reading: {p: _number(first, f"K_L_{p}_mindlin_{reading}") * scale for p in POINTS}
-        for reading in READINGS
-    }
-
-
-@caption(
-    "Lateral stiffness K_L at the points A, B, C against the normal force, simulated beside Mindlin's "
-    "smooth ball in both readings of eq. 12, one panel per sample (paper 001 Fig. 15)."
-)
-def _lateral_stiffness(records, context):
-    """Draw K_L at A, B, C against F0 with Mindlin in both readings, one panel per sample (Fig. 15)."""
-    from ...plotting.layout import legend, new_figure
-    from ...plotting.presliding import POINT_COLOURS, plot_lateral_stiffness
-
-    groups = grouped(records)
-    measured = _measured(context)
-    every = [_number(r, "normal_force") for r in records]
-    low, high = min(every), max(every)
-    if high <= low * (1 + 1e-9):
-        low, high = 0.8 * low, 1.2 * high
-    dense = np.linspace(low, high, 50)
-    figure, axes = new_figure(1, len(groups), width=5.5, height=5.2)
-    for number, (ax, (sample, group)) in enumerate(zip(axes[0], groups.items(), strict=True)):
-        group = _by_force(group)
-        loads = [_number(r, "normal_force") for r in group]
-        simulated = {p: [_number(r, f"K_L_{p}") for r in group] for p in POINTS}
-        curves = _mindlin_curves(group, dense)
-        if curves is None:  # materials differ within the sample: Mindlin at the cases' loads only
-            curves = {
-                reading: {p: [_number(r, f"K_L_{p}_mindlin_{reading}") for r in group] for p in POINTS}
-                for reading in READINGS
-            }
-            plot_lateral_stiffness(loads, simulated, mindlin=curves, ax=ax)
-        else:
-            plot_lateral_stiffness(dense, mindlin=curves, ax=ax)
-            plot_lateral_stiffness(loads, simulated, ax=ax)
-        if measured is not None and _compares_with(context.compare, sample):
-            stiffness = measured[1].lateral_stiffness
-            for point in POINTS:
-                ax.plot(
-                    context.compare.normal_force * 1e3,
-                    stiffness[point] * 1e-3,  # N/m -> mN/um
-                    "s",
-                    markerfacecolor="none",
-                    markersize=9,
-                    color=POINT_COLOURS.get(point),
-                    label=f"{point} measured loop",
-                )
-        ax.set_title(f"({chr(ord('a') + number)}) {sample or context.analysis}")
-        legend(ax, fontsize="x-small", ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.15))
-    return figure
 
 
 def _ratio(numerator: float, denominator: float) -> float:
@@ -719,11 +428,13 @@ KIND = Kind(
     run=run,
     units=PreslidingResult.UNITS,
     figures={
-        "path": _path,
-        "pressure": _pressure,
-        "loops": _loops,
-        "stick_slip": _stick_slip,
-        "lateral_stiffness": _lateral_stiffness,
+        "path": figure("presliding.path_figure"),
+        "pressure": figure("presliding.pressure_figure"),
+        "loops": figure("presliding.loops_figure", measured=_measured_loop, title=_analysis_name),
+        "stick_slip": figure("presliding.stick_slip_figure"),
+        "lateral_stiffness": figure(
+            "presliding.lateral_stiffness_figure", measured=_measured_loop, title=_analysis_name
+        ),
     },
     tables={"lateral_stiffness": _lateral_stiffness_table, "measured_loop": _measured_loop_table},
     compare=PreslidingCompare,

@@ -15,10 +15,9 @@ from __future__ import annotations
 import numpy as np
 
 from ...topography.statistics import SUMMARY
-from ...units import format_si
-from ..kind import CaseOutput, CaseParameters, Kind, caption
+from ..kind import CaseOutput, CaseParameters, Kind, figure
 from ..schema import TopographyName
-from .common import evenly_chosen, grid
+from .common import grid
 
 
 class StatisticsParameters(CaseParameters):
@@ -53,58 +52,13 @@ def run(parameters: StatisticsParameters, inputs) -> CaseOutput:
     return CaseOutput(scalars, dataset)
 
 
-@caption(
-    "Height maps of up to four surfaces about their mean plane, as used (levelled files, generated "
-    "surfaces as made); colours clipped to the 0.5-99.5 percentiles of each map, titles give Sq."
-)
-def _heights(records, context):
-    from ...plotting.layout import legend, new_figure
-    from ...plotting.study import map_axes
-
-    chosen = evenly_chosen(records, 4)
-    fields = [record.dataset() for record in chosen]
-    if "y" not in fields[0].dims:
-        figure, axes = new_figure(1, 1, width=7.0)
-        for record, data in zip(chosen, fields, strict=True):
-            axes[0][0].plot(data["x"] * 1e6, data["heights"] * 1e9, label=record.label)
-        axes[0][0].set_xlabel("x (µm)")
-        axes[0][0].set_ylabel("height (nm)")
-        legend(axes[0][0])
-        return figure
-    figure, axes = new_figure(1, len(chosen), width=3.8, height=3.2)
-    for column, (record, data) in enumerate(zip(chosen, fields, strict=True)):
-        map_axes(axes[0][column], data["heights"], "height", "m")
-        axes[0][column].set_title(f"{record.label}\nSq {format_si(record.scalars['Sq'], 'm', digits=3)}")
-    return figure
-
-
-@caption(
-    "Power spectral density C(q) of every surface against the wavevector q = 2π/λ (radially averaged "
-    "for maps; normalised so that it integrates to the mean square height, Jacobs et al. 2017)."
-)
-def _psd(records, context):
-    from ...plotting.layout import legend, new_figure
-
-    figure, axes = new_figure(1, 1)
-    ax = axes[0][0]
-    for record in records:
-        data = record.dataset()
-        ax.loglog(data["q"], data["psd"], label=record.label)
-    ax.set_xlabel("wavevector q (rad/m)")
-    ax.set_ylabel(f"PSD ({records[0].dataset()['psd'].attrs['units']})")
-    ax.set_title("power spectral density")
-    if 1 < len(records) <= 12:
-        legend(ax, fontsize="small")
-    return figure
-
-
 KIND = Kind(
     name="statistics",
     summary="roughness statistics, spectral moments (m0, m2, m4) and McCool summit parameters",
     parameters=StatisticsParameters,
     run=run,
     units={"size_x": "m", "size_y": "m"} | {name: unit for name, (unit, _) in SUMMARY.items() if unit},
-    figures={"heights": _heights, "psd": _psd},
+    figures={"heights": figure("topography.heights_figure"), "psd": figure("topography.psd_figure")},
     headline=("Sq", "Sa", "Rq", "Ra", "rms_slope", "summit_radius"),
     renamed={"surface": "topography"},
 )
