@@ -8,6 +8,7 @@ entries of a record (``seconds``, ``started``, ``pid``, ``host``) may differ bet
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import os
@@ -450,10 +451,14 @@ def test_a_failing_case_is_recorded_the_others_finish_and_resume_retries_only_it
 # --- Ctrl-C through the command line -------------------------------------------------------------
 
 
-def test_ctrl_c_exits_130_with_the_resume_hint(reference, tmp_path, capsys):
+def test_ctrl_c_exits_130_with_the_resume_hint(reference, tmp_path, capsys, monkeypatch):
+    import roughcontact.study.answers as answer_module
+
     study_path, _ = reference
     output = tmp_path / "C"
-    status = run_and_report(load_study(study_path), output, progress=False, on_record=stop_after(1))
+    stopping = functools.partial(answer_module.run_study, on_record=stop_after(1))
+    monkeypatch.setattr(answer_module, "run_study", stopping)  # Ctrl-C after the first case
+    status = run_and_report(load_study(study_path), output, progress=False)
     captured = capsys.readouterr()
     assert status == EXIT_INTERRUPTED == 130
     assert "interrupted: finished cases are kept in" in captured.err

@@ -40,21 +40,42 @@ def _validate(args: argparse.Namespace) -> int:
     return 0
 
 
-def _print_warnings(folder: Path) -> None:
-    """Say the model-range and trust warnings of the study's cases on stderr (the report lists them too)."""
-    from ..study.outputs import read_study, warning_lines
+def run_and_report(
+    study,
+    output: Path,
+    *,
+    progress: bool,
+    resume: bool = False,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    worker_storage: Path | None = None,
+) -> int:
+    """Run ``study`` into ``output`` (:func:`roughcontact.study.answers.answer`) and say what happened.
 
-    for analysis in read_study(folder)[1]:
-        for line in warning_lines(analysis):
-            print(f"roughcontact: warning: {analysis.name}: {line}", file=sys.stderr)
+    Ctrl-C keeps what finished. Returns the exit status.
+    """
+    from ..study.answers import answer
 
-
-def finish(folder: Path, summary) -> int:
-    """Write figures and the report after a run and print what happened; return the exit status."""
-    from ..study.report import write_report
-
-    report = write_report(folder)
-    _print_warnings(folder)
+    try:
+        result = answer(
+            study,
+            output,
+            resume=resume,
+            progress=progress,
+            workers=workers,
+            scheduler=scheduler,
+            worker_storage=worker_storage,
+        )
+    except KeyboardInterrupt:
+        print(
+            f"\ninterrupted: finished cases are kept in {output}; "
+            "rerun the same command with --resume to finish the study",
+            file=sys.stderr,
+        )
+        return EXIT_INTERRUPTED
+    for analysis, line in result.warnings():
+        print(f"roughcontact: warning: {analysis}: {line}", file=sys.stderr)
+    summary = result.summary
     if summary.recomputed_note:
         print(f"roughcontact: note: {summary.recomputed_note}", file=sys.stderr)
     print(
@@ -64,24 +85,8 @@ def finish(folder: Path, summary) -> int:
     )
     for failure in summary.failures:
         print(f"  failed: {failure}", file=sys.stderr)
-    print(f"wrote {folder}/results.csv, figures/, tables/ and {report}")
+    print(f"wrote {result.folder}/results.csv, figures/, tables/ and {result.report}")
     return EXIT_CASES_FAILED if summary.failed else 0
-
-
-def run_and_report(study, output: Path, *, progress: bool, **options) -> int:
-    """Run ``study`` into ``output`` and finish with the report; Ctrl-C keeps what finished."""
-    from ..study import run_study
-
-    try:
-        summary = run_study(study, output, progress=progress, **options)
-    except KeyboardInterrupt:
-        print(
-            f"\ninterrupted: finished cases are kept in {output}; "
-            "rerun the same command with --resume to finish the study",
-            file=sys.stderr,
-        )
-        return EXIT_INTERRUPTED
-    return finish(Path(output).expanduser().resolve(), summary)
 
 
 def _quiet_dask(verbose: int) -> None:

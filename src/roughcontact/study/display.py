@@ -174,3 +174,54 @@ def text_table(titles: Sequence[str], cells: Sequence[Sequence[str]], indent: st
     lines = ["  ".join(f"{t:>{w}}" for t, w in zip(titles, widths, strict=True))]
     lines += ["  ".join(f"{c:>{w}}" for c, w in zip(row, widths, strict=True)) for row in cells]
     return [indent + line for line in lines]
+
+
+def analysis_document(analysis, tables) -> dict[str, Any]:
+    """Return an analysis as JSON-ready data: its cases' parameters, scalars and warnings, its tables."""
+    return {
+        "name": analysis.name,
+        "model": analysis.kind.name,
+        "units": dict(analysis.kind.units),
+        "cases": [
+            {
+                "case": record["case"],
+                "status": record["status"],
+                "axes": record.data.get("axes") or {},
+                "parameters": record.parameters,
+                "scalars": record.scalars,
+                "warnings": record.data.get("warnings") or [],
+            }
+            for record in analysis.records
+            if record is not None
+        ],
+        "tables": {name: rows for a, name, rows in tables if a == analysis.name},
+    }
+
+
+def summary_lines(analysis, kind) -> list[str]:
+    """Return an analysis' finished cases as lines: every scalar of one, or a table of the headline ones.
+
+    Numbers in engineering units (:mod:`roughcontact.study.display`): beside the value for one
+    case, in the column header for several.
+    """
+    from .outputs import headline_rows
+
+    records = [r for r in analysis.records if r is not None]
+    units = dict(kind.units)
+    lines = [f"{analysis.name} ({kind.name}): {kind.summary}"]
+    if len(records) == 1:
+        width = max(len(name) for name in records[0].scalars) if records[0].scalars else 0
+        lines += [
+            f"  {name:<{width}}  {shown(value, units.get(name))}"
+            for name, value in records[0].scalars.items()
+        ]
+        return lines
+    rows = headline_rows(analysis)
+    if len({row["status"] for row in rows}) == 1:
+        rows = [{k: v for k, v in row.items() if k != "status"} for row in rows]
+    return lines + table_lines(rows, indent="  ")
+
+
+def table_lines(rows: list[dict[str, Any]], indent: str = "") -> list[str]:
+    """Rows as aligned text columns in engineering units (:func:`roughcontact.study.display.columns`)."""
+    return text_table(*columns(rows), indent=indent) if rows else []

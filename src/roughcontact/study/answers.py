@@ -1,0 +1,196 @@
+r"""One entry point that runs a study, in memory or into an output folder, and the answer it gives.
+
+Every command that computes (``roughcontact contact``, ``friction``, ..., ``run``) is a study; this
+is where it is run, whatever asked for it::
+
+    from roughcontact.study import load_study, answer
+    result = answer(load_study("examples/demo.toml"))          # in memory: nothing written
+    result = answer(study, "demo-out", resume=True)             # results.csv, figures, report.html
+    print("\n".join(result.text_lines())); result.document()    # what the commands print, or --json
+
+In memory each case runs in this process and its record stays in memory; into a folder the runner
+(:func:`~roughcontact.study.run.run_study`) stores each case as it finishes and the report is
+written after. Both give the same :class:`StudyAnswer`: the analyses with their records, the
+derived tables, the warnings of the cases and, on disk, the folder, the report and the run's
+summary. The commands only parse options and print what it says.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import tomllib
+from dataclasses import dataclass
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+from ..errors import InputError
+from .config import Study
+from .display import analysis_document, summary_lines, table_lines
+from .kind import CaseRecord
+from .outputs import StoredAnalysis, in_memory, produce, read_study, warning_lines
+from .run import RunSummary, case_progress, execute, make_task, run_study
+
+
+@dataclass(frozen=True)
+class StudyAnswer:
+    """What a study gave: its analyses with their records, and where it was written.
+
+    Attributes
+    ----------
+    study : Study
+        The study that ran.
+    analyses : list of StoredAnalysis
+        Its analyses with their records (None for a case not stored: interrupted).
+    folder : Path or None
+        The output folder; None for a study run in memory.
+    report : Path or None
+        ``report.html`` in ``folder``.
+    summary : RunSummary or None
+        Counts and times of the run into ``folder``.
+    """
+
+    study: Study
+    analyses: list[StoredAnalysis]
+    folder: Path | None = None
+    report: Path | None = None
+    summary: RunSummary | None = None
+
+    @cached_property
+    def tables(self) -> tuple[list[tuple[str, str, Any]], list[str]]:
+        """The analyses' derived tables as (analysis, name, rows), and the tables that could not be made."""
+        return produce(self.analyses, "table")
+
+    def warnings(self) -> list[tuple[str, str]]:
+        """Return (analysis, warning) for every model-range and trust warning of the cases."""
+        return [(analysis.name, line) for analysis in self.analyses for line in warning_lines(analysis)]
+
+    def text_lines(self) -> list[str]:
+        """Return the answer as a command prints it: each analysis' summary and its tables.
+
+        One case shows every scalar; several a table of the headline ones (engineering units,
+        :mod:`roughcontact.study.display`).
+        """
+        tables, _ = self.tables
+        lines: list[str] = []
+        for analysis in self.analyses:
+            lines += summary_lines(analysis, analysis.kind)
+            for name, rows in ((n, r) for a, n, r in tables if a == analysis.name):
+                lines.append(f"  table {name}:")
+                lines += table_lines(rows, indent="    ")
+        return lines
+
+    def document(self) -> dict[str, Any]:
+        """Return the answer as one JSON-ready document (``--json``): parameters, scalars, tables."""
+        tables, _ = self.tables
+        return {
+            "command": self.study.name,
+            "topographies": self.study.prepared,
+            "analyses": [analysis_document(analysis, tables) for analysis in self.analyses],
+            "output": None if self.folder is None else str(self.folder),
+        }
+
+
+def answer(
+    study: Study,
+    output: str | Path | None = None,
+    *,
+    resume: bool = False,
+    progress: bool = False,
+    raise_errors: bool = False,
+    dpi: int = 150,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    worker_storage: str | Path | None = None,
+) -> StudyAnswer:
+    """Run every case of ``study``: in memory (``output`` None) or into the folder ``output``.
+
+    Parameters
+    ----------
+    study : Study
+        From :func:`~roughcontact.study.config.load_study` or a command's options.
+    output : str or Path, optional
+        The output folder (results, figures, report); None keeps everything in memory.
+    resume : bool
+        Keep the finished cases of an earlier run in ``output`` (same keys).
+    progress : bool
+        Progress bars on standard error.
+    raise_errors : bool
+        Stop at the first case that fails and raise its error (a command's cases), instead of
+        recording it and going on.
+    dpi : int
+        Resolution of the figures written into ``output``.
+    workers, scheduler, worker_storage
+        Run the cases on Dask (:func:`~roughcontact.study.run.run_study`; into a folder only).
+
+    Returns
+    -------
+    StudyAnswer
+    """
+    from ..progress import shown
+    from .report import write_report
+
+    with shown(progress):
+        if output is None:
+            if workers is not None or scheduler is not None:
+                raise InputError("-o/--output", "a run on Dask needs an output folder.", "add -o OUT.")
+            records: dict[str, list[CaseRecord]] = {}
+            with case_progress(len(study.cases), progress and len(study.cases) > 1) as bar:
+                for case in study.cases:
+                    record, _ = execute(make_task(study, case, raise_errors=raise_errors))
+                    records.setdefault(case.analysis, []).append(CaseRecord(record, Path.cwd()))
+                    bar.update()
+            return StudyAnswer(study, in_memory(study, records))
+        folder = Path(output).expanduser().resolve()
+        summary = run_study(
+            study,
+            folder,
+            resume=resume,
+            progress=progress,
+            raise_errors=raise_errors,
+            workers=workers,
+            scheduler=scheduler,
+            worker_storage=worker_storage,
+        )
+    report = write_report(folder, dpi=dpi)
+    return StudyAnswer(study, read_study(folder)[1], folder, report, summary)
+
+
+def reusable(folder: str | Path, study: Study, *, replace: bool = False) -> bool:
+    """Check ``folder`` for a command's study; return True where it holds this very study (resume it).
+
+    A folder written by the same command with the same options is resumed (its finished cases are
+    the answer); one with other options is emptied only with ``replace``, never silently; a
+    folder of something else is refused.
+
+    Raises
+    ------
+    InputError
+        Field ``-o/--output``: the folder holds other files, another command's results, or this
+        command's with other options (without ``replace``).
+    """
+    folder = Path(folder).expanduser().resolve()
+    if not folder.exists() or not any(folder.iterdir()):
+        return False
+    marker = folder / "study.json"
+    if not marker.is_file():
+        raise InputError("-o/--output", f"{folder} is not empty.", "choose a new or empty folder.")
+    held = json.loads(marker.read_text()).get("name")
+    if held != study.name:
+        raise InputError(
+            "-o/--output",
+            f"{folder} holds the results of {held!r}.",
+            "choose another folder (a command reuses only its own results).",
+        )
+    stored = folder / "study.toml"
+    if stored.is_file() and tomllib.loads(stored.read_text()) == tomllib.loads(study.text):
+        return True
+    if not replace:
+        raise InputError(
+            "-o/--output",
+            f"{folder} holds the results of an earlier {held!r} with other options.",
+            "choose another folder, or add --overwrite to replace them.",
+        )
+    shutil.rmtree(folder)
+    return False
