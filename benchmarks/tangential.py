@@ -79,7 +79,10 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).parent))
 from _timing import best_of  # noqa: E402
 from roughcontact.analytic import mindlin  # noqa: E402
-from roughcontact.contact import solve_normal  # noqa: E402
+from roughcontact.contact import (
+    ShearSolver,
+    solve_normal,  # noqa: E402
+)
 from roughcontact.contact.paths import stroke_path  # noqa: E402
 from roughcontact.contact.tangential import solve_tangential  # noqa: E402
 from roughcontact.materials import Material, contact_modulus, johnson_shear_modulus  # noqa: E402
@@ -168,8 +171,8 @@ class Cattaneo:
                 counter_body=counter,
                 friction_coefficient=MU,
                 force=[self.q],
-                tolerance=tolerance,
                 fields_at="last",
+                solver=ShearSolver(tolerance=tolerance),
             ),
             repeats,
         )
@@ -401,8 +404,8 @@ def _ours_loop(topo, material, counter, path, cycles, tol) -> tuple[dict, np.nda
         counter_body=counter,
         friction_coefficient=MU_LOOP,
         displacement=path,
-        tolerance=tol,
         fields_at="none",
+        solver=ShearSolver(tolerance=tol),
     )
     loop_s = time.perf_counter() - start
     steps = len(path)

@@ -42,7 +42,10 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).parent))
 from roughcontact.analytic import mindlin  # noqa: E402
-from roughcontact.contact import solve_normal  # noqa: E402
+from roughcontact.contact import (
+    ShearSolver,
+    solve_normal,  # noqa: E402
+)
 from roughcontact.contact.paths import stroke_path  # noqa: E402
 from roughcontact.contact.tangential import solve_tangential  # noqa: E402
 from roughcontact.materials import Material, contact_modulus  # noqa: E402
@@ -77,9 +80,8 @@ def cattaneo(n: int, problem: str, tolerance: float) -> dict:
             counter_body=case.counter,
             friction_coefficient=MU,
             force=[case.q],
-            tolerance=tolerance,
             fields_at="last",
-            method=method,
+            solver=ShearSolver(tolerance=tolerance, method=method),
         )
         seconds = time.perf_counter() - start
         states[method] = result.states[0]
@@ -151,9 +153,13 @@ def rough_loop_128(tolerance: float) -> dict:
     for method in METHODS:
         start = time.perf_counter()
         result = solve_tangential(
-            normal, hdpe, friction_coefficient=0.15, displacement=path, tolerance=tolerance,
-            fields_at="none", method=method,
-        )  # fmt: skip
+            normal,
+            hdpe,
+            friction_coefficient=0.15,
+            displacement=path,
+            fields_at="none",
+            solver=ShearSolver(tolerance=tolerance, method=method),
+        )
         seconds = time.perf_counter() - start
         forces[method] = result.force
         row[method] = {
@@ -219,9 +225,13 @@ def main() -> None:
             case = Cattaneo(32, problem)
             normal = solve_normal(case.topography, case.material, counter_body=case.counter, force=FORCE)
             solve_tangential(
-                normal, case.material, counter_body=case.counter, friction_coefficient=MU, force=[case.q],
-                method=method,
-            )  # fmt: skip
+                normal,
+                case.material,
+                counter_body=case.counter,
+                friction_coefficient=MU,
+                force=[case.q],
+                solver=ShearSolver(method=method),
+            )
     print(
         f"cg vs apg, {os.cpu_count()} CPUs, tolerance {args.tolerance:g}, "
         f"warm-up {time.perf_counter() - start:.1f} s, {load()}",

@@ -18,7 +18,6 @@ from pathlib import Path
 import numpy as np
 
 from roughcontact.experiment import compare, read_measured
-from roughcontact.winkler_lj import winkler_lj_model
 from roughcontact.materials import get_material
 from roughcontact.papers.paper000 import (
     paper000_model_options,
@@ -27,6 +26,7 @@ from roughcontact.papers.paper000 import (
     paper000_tip,
 )
 from roughcontact.plotting import plot_friction_vs_load, plot_mu_boxes, plot_mu_means
+from roughcontact.winkler_lj import winkler_lj_model
 
 
 def main(output: Path) -> None:

@@ -6,13 +6,17 @@ equation and source:
 
 =====================================  ===========================================================
 :func:`contact_modulus`                Hertz E*, 1/E* = sum (1 - nu^2)/E (Johnson 1985)
-:func:`composite_modulus`              the same E*, with paper 000's plain-number signature (eq. 1)
-:func:`effective_shear_modulus_paper001`  paper 001's G_s, 1/G_s = sum (2 - nu)/(4 G)
-:func:`johnson_shear_modulus`          Johnson's G*, 1/G* = sum (2 - nu)/G  (G_s = 4 G*)
+:func:`johnson_shear_modulus`          Johnson's G*, 1/G* = sum (2 - nu)/G
 :func:`dundurs_beta`                   Dundurs' second bimaterial parameter beta
-:func:`winkler_factor`                 paper 000 eq. 4, the factor k of the Winkler springs
-:func:`reduced_modulus_to_youngs`      Oliver-Pharr: sample modulus from the reduced modulus (001 eq. 8)
+:func:`compliance_sum`                 the sum of a compliance term over the deformable bodies
 =====================================  ===========================================================
+
+The papers' own forms live with their models: paper 000's eq. 1 and eq. 4
+(:mod:`roughcontact.winkler_lj.springs`), paper 001's G_s
+(:func:`roughcontact.contact.presliding.effective_shear_modulus_paper001`), paper 002's printed
+eq. 7 (:func:`roughcontact.asperity.parameters.printed_contact_modulus`) and the Oliver-Pharr
+sample modulus (:func:`roughcontact.experiment.nanoindentation.oliver_pharr.reduced_modulus_to_youngs`);
+their old names here are kept one release with a DeprecationWarning.
 
 Functions that take two bodies accept ``None`` for the second one: a rigid counter-body
 (infinite modulus), whose compliance terms vanish.
@@ -35,12 +39,12 @@ References
 from __future__ import annotations
 
 import difflib
-import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from numbers import Real
 from types import MappingProxyType
 
+from ._deprecation import moved
 from .checks import poissons_ratio_checked, positive
 from .errors import InputError
 from .units import quantity
@@ -188,8 +192,12 @@ ElasticMaterial = Material
 # --- composite quantities ------------------------------------------------------------------------
 
 
-def _sum_over_bodies(a: Material, b: Material | None, term: Callable[[Material], float]) -> float:
-    """Sum ``term`` over the two bodies; a rigid body (``b=None``) contributes nothing."""
+def compliance_sum(a: Material, b: Material | None, term: Callable[[Material], float]) -> float:
+    """Return ``term(a) + term(b)`` over the deformable bodies (``b=None``: rigid, no term) [1/Pa].
+
+    The composite moduli of a pair are its inverse with their own ``term``: (1 - nu^2)/E for
+    Hertz's E*, (2 - nu)/G for Johnson's G*, ... The bodies are checked to be materials.
+    """
     return sum(term(body) for body in _deformable_bodies(a, b))
 
 
@@ -259,84 +267,7 @@ def contact_modulus(a: Material, b: Material | None = None, *, form: str = "stan
         raise InputError(
             "form", f"unknown form {form!r}.", f"choose one of {sorted(_CONTACT_MODULUS_FORMS)}."
         )
-    return 1.0 / _sum_over_bodies(a, b, _CONTACT_MODULUS_FORMS[form])
-
-
-def composite_modulus(
-    youngs_modulus_1: float, poissons_ratio_1: float, youngs_modulus_2: float, poissons_ratio_2: float
-) -> float:
-    r"""Composite Young's modulus of paper 000, eq. 1 [Pa]: the Hertz E* with plain numbers.
-
-    .. math:: E = \left(\frac{1 - \nu_1^2}{E_1} + \frac{1 - \nu_2^2}{E_2}\right)^{-1}
-
-    Identical to :func:`contact_modulus` (which it calls); kept under paper 000's name and
-    signature for the Winkler-layer friction model.
-
-    Parameters
-    ----------
-    youngs_modulus_1, youngs_modulus_2 : float
-        Young's moduli of the two surfaces [Pa].
-    poissons_ratio_1, poissons_ratio_2 : float
-        Poisson's ratios of the two surfaces [-].
-
-    Returns
-    -------
-    float
-        Composite modulus [Pa].
-
-    Raises
-    ------
-    InputError
-        Invalid moduli or Poisson's ratios (the field names which body).
-
-    References
-    ----------
-    Seed paper 000, eq. 1. K. L. Johnson, *Contact Mechanics*, 1985, section 4.2.
-    doi:10.1017/CBO9781139171731
-    """
-    return contact_modulus(
-        _numbered_material(youngs_modulus_1, poissons_ratio_1, 1),
-        _numbered_material(youngs_modulus_2, poissons_ratio_2, 2),
-    )
-
-
-def _numbered_material(youngs_modulus: float, poissons_ratio: float, number: int) -> Material:
-    """Build a Material from plain numbers, renaming error fields to ``youngs_modulus_<number>``."""
-    try:
-        return Material(youngs_modulus, poissons_ratio)
-    except InputError as error:
-        raise InputError(f"{error.field}_{number}", error.problem, error.fix) from None
-
-
-def effective_shear_modulus_paper001(a: Material, b: Material | None = None) -> float:
-    r"""Effective shear modulus G_s as defined in paper 001 (below eq. 10) [Pa].
-
-    .. math:: \frac{1}{G_s} = \sum_i \frac{(2 - \nu_i)(1 + \nu_i)}{2 E_i}
-              = \sum_i \frac{2 - \nu_i}{4 G_i}
-
-    This is 4 times Johnson's G* (:func:`johnson_shear_modulus`): G_s = 4 G*. Paper 001 uses it
-    with the prefactors of Johnson's Mindlin solution (delta_0 = 3 mu F0 / (16 a G),
-    K_L = 8 a G), which belong to G*; used with G_s as printed, K_L is 4 times the textbook
-    Mindlin stiffness. With G_s the consistent prefactors are delta_0 = 3 mu F0 / (4 a G_s)
-    and K_L = 2 a G_s.
-
-    Parameters
-    ----------
-    a : Material
-        First body.
-    b : Material or None
-        Second body; ``None`` is rigid.
-
-    Returns
-    -------
-    float
-        G_s [Pa].
-
-    References
-    ----------
-    Seed paper 001, text below eq. 10. doi:10.1115/1.4045900
-    """
-    return 1.0 / _sum_over_bodies(a, b, lambda m: (2.0 - m.poissons_ratio) / (4.0 * m.shear_modulus))
+    return 1.0 / compliance_sum(a, b, _CONTACT_MODULUS_FORMS[form])
 
 
 def johnson_shear_modulus(a: Material, b: Material | None = None) -> float:
@@ -367,7 +298,7 @@ def johnson_shear_modulus(a: Material, b: Material | None = None) -> float:
     R. D. Mindlin, "Compliance of elastic bodies in contact", J. Appl. Mech. 16 (1949) 259-268.
     doi:10.1115/1.4009973
     """
-    return 1.0 / _sum_over_bodies(a, b, lambda m: (2.0 - m.poissons_ratio) / m.shear_modulus)
+    return 1.0 / compliance_sum(a, b, lambda m: (2.0 - m.poissons_ratio) / m.shear_modulus)
 
 
 def dundurs_beta(a: Material, b: Material | None = None) -> float:
@@ -414,112 +345,6 @@ def dundurs_beta(a: Material, b: Material | None = None) -> float:
     _deformable_bodies(a, b)
     (mismatch_a, compliance_a), (mismatch_b, compliance_b) = terms(a), terms(b)
     return 0.5 * (mismatch_a - mismatch_b) / (compliance_a + compliance_b)
-
-
-_WINKLER_READINGS = ("paper000_eq4_printed", "uniaxial_strain")
-
-
-def winkler_factor(
-    poissons_ratio_1: float, poissons_ratio_2: float, *, reading: str = "paper000_eq4_printed"
-) -> float:
-    r"""Factor k of the Winkler springs of paper 000 (eq. 3: P = E / (k h) dz) [-].
-
-    ``"paper000_eq4_printed"`` (default, the paper's formula, with s = sqrt(nu1 nu2)):
-
-    .. math:: k = \frac{(1 + s)(1 - 2 s)}{1 - \nu_1 \nu_2}
-
-    For one material (nu1 = nu2 = nu) it reduces to (1 - 2 nu) / (1 - nu), because
-    1 - nu^2 = (1 - nu)(1 + nu); it is *not* the uniaxial-strain (laterally constrained column)
-    factor E / M = (1 + nu)(1 - 2 nu) / (1 - nu). The paper's denominator is ambiguous (seed
-    README); ``"uniaxial_strain"`` replaces it by (1 - s), which does reduce to
-    (1 + nu)(1 - 2 nu) / (1 - nu):
-
-    .. math:: k = \frac{(1 + s)(1 - 2 s)}{1 - s}
-
-    Both give k = 0 (infinitely stiff springs) for nu1 = nu2 = 0.5 and k = 1 for nu = 0.
-
-    Parameters
-    ----------
-    poissons_ratio_1, poissons_ratio_2 : float
-        Poisson's ratios of the two surfaces [-], each in [0, 0.5]: the geometric mean
-        sqrt(nu1 nu2) is undefined for a negative product and meaningless for auxetic materials.
-    reading : {"paper000_eq4_printed", "uniaxial_strain"}
-        Which denominator, see above.
-
-    Returns
-    -------
-    float
-        k [-].
-
-    Raises
-    ------
-    InputError
-        A Poisson's ratio outside [0, 0.5], or an unknown ``reading``.
-
-    References
-    ----------
-    Seed paper 000, eqs. 3-4.
-    """
-    for number, value in ((1, poissons_ratio_1), (2, poissons_ratio_2)):
-        field = f"poissons_ratio_{number}"
-        poissons_ratio_checked(value, field)
-        if value < 0:
-            raise InputError(
-                field,
-                f"{value!r} < 0: sqrt(nu1 * nu2) of paper 000 eq. 4 is undefined.",
-                "give 0 <= nu <= 0.5; the Winkler factor has no reading for auxetic materials.",
-            )
-    if reading not in _WINKLER_READINGS:
-        raise InputError(
-            "reading", f"unknown reading {reading!r}.", f"choose one of {list(_WINKLER_READINGS)}."
-        )
-    product = poissons_ratio_1 * poissons_ratio_2
-    root = math.sqrt(product)
-    denominator = 1.0 - product if reading == "paper000_eq4_printed" else 1.0 - root
-    return (1.0 + root) * (1.0 - 2.0 * root) / denominator
-
-
-def reduced_modulus_to_youngs(reduced_modulus: float, indenter: Material, poissons_ratio: float) -> float:
-    r"""Young's modulus of an indented sample from its reduced modulus (Oliver-Pharr) [Pa].
-
-    .. math:: \frac{1 - \nu_s^2}{E_s} = \frac{1}{E_r} - \frac{1 - \nu_i^2}{E_i}
-
-    Parameters
-    ----------
-    reduced_modulus : float
-        Measured reduced modulus E_r [Pa].
-    indenter : Material
-        Indenter tip, e.g. ``get_material("diamond berkovich")`` (1141 GPa, 0.07).
-    poissons_ratio : float
-        Poisson's ratio of the sample nu_s [-] (paper 001 takes 0.5 for the polymers).
-
-    Returns
-    -------
-    float
-        Sample Young's modulus E_s [Pa].
-
-    Raises
-    ------
-    InputError
-        A non-positive reduced modulus, an invalid Poisson's ratio, or a reduced modulus not
-        below the indenter's own E_i / (1 - nu_i^2) (the sample would need a negative compliance).
-
-    References
-    ----------
-    W. C. Oliver and G. M. Pharr, J. Mater. Res. 7 (1992) 1564-1583. doi:10.1557/JMR.1992.1564.
-    Seed paper 001, eq. 8. doi:10.1115/1.4045900
-    """
-    positive(reduced_modulus, "reduced_modulus", example="3e9", unit="Pa")
-    poissons_ratio_checked(poissons_ratio)
-    sample_compliance = 1.0 / reduced_modulus - _sum_over_bodies(indenter, None, _hertz_compliance)
-    if sample_compliance <= 0:
-        raise InputError(
-            "reduced_modulus",
-            f"{reduced_modulus:.4g} Pa is not below the indenter's own modulus "
-            f"E_i/(1-nu_i^2) = {contact_modulus(indenter):.4g} Pa.",
-            "check the units of the reduced modulus and the indenter properties.",
-        )
-    return (1.0 - poissons_ratio**2) / sample_compliance
 
 
 # --- the papers' materials -----------------------------------------------------------------------
@@ -645,3 +470,17 @@ def _is_pressure(text: str) -> bool:
     except InputError:
         return False
     return True
+
+
+_MOVED = {
+    "composite_modulus": "roughcontact.winkler_lj.springs",
+    "winkler_factor": "roughcontact.winkler_lj.springs",
+    "effective_shear_modulus_paper001": "roughcontact.contact.presliding",
+    "reduced_modulus_to_youngs": "roughcontact.experiment.nanoindentation.oliver_pharr",
+}
+"""Paper formulas that moved to their models in issue 33 -> their new module."""
+
+
+def __getattr__(name: str):
+    """Serve a moved paper formula from its new home, with a DeprecationWarning."""
+    return moved(__name__, name, _MOVED)

@@ -39,7 +39,7 @@ def test_unloading_stays_between_zero_and_the_peak_and_below_loading(w_max, frac
     peak = kogut_etsion_load(w_max)
     omega = fraction * w_max * omega_c
     load = unloading_load(
-        omega, max_interference=w_max * omega_c, max_load=peak, critical_interference=omega_c
+        omega, max_interference=w_max * omega_c, max_force=peak, critical_interference=omega_c
     )
     assert 0.0 <= load <= peak
     # an unloaded summit carries less than on first loading to the same interference (up to the 3 % KE jump)
@@ -57,7 +57,7 @@ def test_unloading_area_is_finite_bounded_monotonic_and_vanishes_with_the_load(w
     omega = np.array([min(f1, f2), max(f1, f2)]) * w_max * omega_c
     kwargs = dict(max_interference=w_max * omega_c, critical_interference=omega_c)
     area = unloading_area(omega, max_area=max_area, **kwargs)
-    load = unloading_load(omega, max_load=kogut_etsion_load(w_max), **kwargs)
+    load = unloading_load(omega, max_force=kogut_etsion_load(w_max), **kwargs)
     assert np.all(np.isfinite(area))
     assert np.all((area >= 0.0) & (area <= max_area))
     assert area[0] <= area[1]  # never grows as the flat withdraws

@@ -12,7 +12,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from roughcontact.contact import solve_normal
+from roughcontact.contact import ShearSolver, solve_normal
 from roughcontact.contact.tangential import solve_tangential
 from roughcontact.materials import Material
 from roughcontact.topography import generate
@@ -105,8 +105,7 @@ def test_force_control_obeys_coulomb_and_balance(rough, seed, mu, fraction, angl
         counter_body=MATERIAL,
         friction_coefficient=mu,
         force=path,
-        tolerance=TOLERANCE,
-        max_iterations=3000,
+        solver=ShearSolver(tolerance=TOLERANCE, max_iterations=3000),
     )
     assert np.all(result.residual <= TOLERANCE)
     _check_coulomb_and_balance(result, path, mu)
@@ -125,7 +124,7 @@ def test_force_control_converges_near_sliding(fraction, angle):
         counter_body=MATERIAL,
         friction_coefficient=mu,
         force=[fraction * mu * normal.force * np.array([np.cos(angle), np.sin(angle)])],
-        max_iterations=2000,
+        solver=ShearSolver(max_iterations=2000),
     )
 
 
@@ -150,8 +149,7 @@ def test_unit_invariance(rough, mu, fraction, angle, exponent):
             counter_body=MATERIAL,
             friction_coefficient=mu,
             force=path,
-            tolerance=TOLERANCE,
-            max_iterations=3000,
+            solver=ShearSolver(tolerance=TOLERANCE, max_iterations=3000),
         )
         out.append((result, factor))
     (base, _), (scaled, factor) = out
@@ -192,8 +190,7 @@ def test_coupled_dissimilar_pair_keeps_the_normal_force(mu, fraction, angle):
         friction_coefficient=mu,
         force=path,
         coupling=True,
-        tolerance=TOLERANCE,
-        max_iterations=3000,
+        solver=ShearSolver(tolerance=TOLERANCE, max_iterations=3000),
     )
     assert result.parameters["coupling"] is True
     assert np.any(result.coupling_iterations > 1)
@@ -212,6 +209,5 @@ def test_coupled_rough_sphere_converges():
         friction_coefficient=mu,
         force=_path(0.12334696067008269, 1.125, mu, normal.force),
         coupling=True,
-        tolerance=TOLERANCE,
-        max_iterations=3000,
+        solver=ShearSolver(tolerance=TOLERANCE, max_iterations=3000),
     )

@@ -166,7 +166,7 @@ def _island_case(pixels: int, **keys):
             "material": "SU-8",
             "substrate": "silicon wafer",
             "film_thickness": "6.3 um",
-            "peak_force": "1000 uN",
+            "max_force": "1000 uN",
             "reference_force": "25 uN",
             **keys,
         }
@@ -237,7 +237,7 @@ def test_load_unload_refuses_map_loads_that_are_not_targets(tmp_path):
     path = tmp_path / "bad.toml"
     path.write_text(
         STUDY_HEAD.replace('model = "asperity"\nmaterial = "SU-8"\n', 'model = "load_unload"\n')
-        + 'surface = "rough"\nmaterial = "SU-8"\npeak_force = "1000 uN"\nvon_mises_loads = ["250 uN"]\n'
+        + 'surface = "rough"\nmaterial = "SU-8"\nmax_force = "1000 uN"\nvon_mises_loads = ["250 uN"]\n'
     )
     with pytest.raises(StudyError, match=r"von_mises_loads \[250\.0\] uN are not among the load targets"):
         load_study(path)
@@ -277,7 +277,7 @@ def test_load_unload_refuses_an_unknown_plasticity(tmp_path):
     path = tmp_path / "bad.toml"
     path.write_text(
         STUDY_HEAD.replace('model = "asperity"\nmaterial = "SU-8"\n', 'model = "load_unload"\n')
-        + 'topography = "rough"\nmaterial = "SU-8"\npeak_force = "1000 uN"\nplasticity = "bulk"\n'
+        + 'topography = "rough"\nmaterial = "SU-8"\nmax_force = "1000 uN"\nplasticity = "bulk"\n'
     )
     with pytest.raises(StudyError, match="plasticity"):
         load_study(path)

@@ -157,7 +157,7 @@ def test_paper002_flags_fill_the_asperity_and_island_scenarios(tmp_path):
     assert (kke.max_force, kke.reference_force) == (paper002.PEAK_FORCE, paper002.REFERENCE_FORCE)
     assert kke.nominal_area == paper002.ISLAND_SIDE**2 and kke.paper002
     assert (bem.material, bem.substrate) == (paper002.MATERIAL, paper002.SUBSTRATE)
-    assert (bem.film_thickness, bem.peak_force) == (paper002.FILM_THICKNESS, paper002.PEAK_FORCE)
+    assert (bem.film_thickness, bem.max_force) == (paper002.FILM_THICKNESS, paper002.PEAK_FORCE)
 
 
 def test_the_examples_type_no_paper_number():

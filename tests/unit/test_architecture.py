@@ -161,3 +161,50 @@ def test_the_rules_see_a_private_import_and_a_cycle(tmp_path):
     imports = list(imports_of(modules, "fake"))
     assert private_imports(imports) == ["fake.a imports _helper from fake.sub._engine (line 2)"]
     assert cycles_of(imports, modules) == [["fake.b", "fake.c"]]
+
+
+def catch_alls(source: Path, top: str) -> list[str]:
+    """Public functions and methods with a ``**`` parameter, as ``module:line name(**kwargs)``.
+
+    Public: in a module whose name has no leading underscore (``_deprecation`` holds the wrappers
+    that forward by design), a function or method whose name has none (``__init__`` and
+    ``__call__`` count), defined at module level or in a public class; functions defined inside
+    functions (a decorator's wrapper) are not part of the interface.
+    """
+    found = []
+    for name, (path, _) in modules_of(source, top).items():
+        if any(part.startswith("_") and part != "__init__" for part in name.split(".")):
+            continue
+        tree = ast.parse(path.read_text())
+        scopes = [(node, "") for node in tree.body]
+        scopes += [
+            (child, f"{node.name}.")
+            for node in tree.body
+            if isinstance(node, ast.ClassDef) and not node.name.startswith("_")
+            for child in node.body
+        ]
+        for node, owner in scopes:
+            if not isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef) or node.args.kwarg is None:
+                continue
+            if node.name.startswith("_") and node.name not in ("__init__", "__call__"):
+                continue
+            found.append(f"{name}:{node.lineno} {owner}{node.name}(**{node.args.kwarg.arg})")
+    return found
+
+
+def test_no_public_function_takes_a_catch_all():
+    """Every public function names its parameters: no ``**options`` the reader and IDEs cannot see."""
+    assert catch_alls(SOURCE, PACKAGE) == []
+
+
+def test_the_catch_all_rule_sees_one(tmp_path):
+    package = tmp_path / "fake"
+    package.mkdir()
+    (package / "__init__.py").write_text("")
+    (package / "_private.py").write_text("def forward(**kwargs):\n    pass\n")
+    (package / "api.py").write_text(
+        "def solve(x, **options):\n    def wrapper(**kw):\n        pass\n\n"
+        "class Model:\n    def run(self, **options):\n        pass\n\n"
+        "    def _inner(self, **options):\n        pass\n"
+    )
+    assert catch_alls(tmp_path, "fake") == ["fake.api:1 solve(**options)", "fake.api:6 Model.run(**options)"]

@@ -67,7 +67,7 @@ def test_paper002_eq10_unknown_reading_and_range():
 
 def test_unloading_beyond_the_maximum_is_refused():
     with pytest.raises(InputError, match="interference"):
-        unloading_load(2e-8, max_interference=1e-8, max_load=1e-5, critical_interference=5e-9)
+        unloading_load(2e-8, max_interference=1e-8, max_force=1e-5, critical_interference=5e-9)
 
 
 def test_gw_integral_negative_order():

@@ -88,3 +88,43 @@ def test_load_unload_takes_release_0_1_keywords_with_a_warning():
     ):
         old = load_unload(ball, material, max_force=1e-5, steps=3, hardness=2e8)
     assert old.scalars() == new.scalars()
+
+
+def test_the_tangential_solvers_old_keywords_fold_into_one_options_object():
+    """solve_tangential(tolerance=..., method=...) of release 0.1 is solver=ShearSolver(...) now."""
+    import numpy as np
+
+    from roughcontact.contact import ShearSolver, solve_normal, solve_tangential
+    from roughcontact.topography.generate import sphere
+
+    material = get_material("POM")
+    ball = sphere((24, 24), 0.3e-3, radius=5e-3)
+    normal = solve_normal(ball, material, force=0.025)
+    common = dict(friction_coefficient=0.1, force=[0.001, 0.002])
+    new = solve_tangential(normal, material, **common, solver=ShearSolver(tolerance=1e-9, method="cg"))
+    with pytest.warns(DeprecationWarning, match=r"is now given as solver=\.\.\."):
+        old = solve_tangential(normal, material, **common, tolerance=1e-9, method="cg")
+    assert np.array_equal(old.displacement, new.displacement)
+    assert old.parameters["method"] == "cg" and old.parameters["tolerance"] == 1e-9
+
+
+@pytest.mark.parametrize(
+    ("function", "old", "new"),
+    [
+        ("roughcontact.analytic.mindlin:sliding_displacement", "mu", "friction_coefficient"),
+        ("roughcontact.contact.load_unload:force_targets", "peak_force", "max_force"),
+    ],
+)
+def test_respelled_keywords_keep_working(function, old, new):
+    from importlib import import_module
+
+    module, name = function.split(":")
+    target = getattr(import_module(module), name)
+    arguments = {
+        "sliding_displacement": {new: 0.1, "normal_force": 1.0, "contact_radius": 1e-4, "shear_modulus": 1e9},
+        "force_targets": {new: 1e-3, "steps": 4},
+    }[name]
+    expected = target(**arguments)
+    arguments[old] = arguments.pop(new)
+    with pytest.warns(DeprecationWarning, match=rf"\({old}=\.\.\.\) is now spelled {new}"):
+        assert target(**arguments) == pytest.approx(expected)

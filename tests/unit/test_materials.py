@@ -4,20 +4,19 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from roughcontact.contact.presliding import effective_shear_modulus_paper001
 from roughcontact.errors import InputError, UnitError
+from roughcontact.experiment.nanoindentation.oliver_pharr import reduced_modulus_to_youngs
 from roughcontact.materials import (
     MATERIALS,
     ElasticMaterial,
     Material,
-    composite_modulus,
     contact_modulus,
     dundurs_beta,
-    effective_shear_modulus_paper001,
     get_material,
     johnson_shear_modulus,
-    reduced_modulus_to_youngs,
-    winkler_factor,
 )
+from roughcontact.winkler_lj.springs import composite_modulus, winkler_factor
 
 # Closed forms evaluated in floating point agree with the library to a few ulp; 1e-12 relative
 # leaves room for a different order of the same operations.

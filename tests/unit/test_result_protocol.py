@@ -112,6 +112,28 @@ def _winkler():
     )
 
 
+def _winkler_model():
+    from roughcontact.topography.generate import self_affine
+    from roughcontact.winkler_lj import winkler_lj_model
+
+    surface = self_affine((32, 32), 0.64e-6, hurst=0.8, rms_height=1.5e-9, seed=1)
+    return winkler_lj_model(
+        surface, get_material("polysilicon"), get_material("SiO2"), layer_thickness=50e-9, surface_energy=0.05
+    )
+
+
+def _friction_sweep():
+    return _winkler_model().sweep([1e-6, 3e-6, 1e-5])
+
+
+def _winkler_normal_curve():
+    return _winkler_model().normal_curve([-2e-9, 0.0, 1e-9])
+
+
+def _volume_field():
+    return _volume_load_unload().volume
+
+
 def _statistical():
     from roughcontact.papers import paper002
 
@@ -175,6 +197,9 @@ BUILDERS = {
     "volume load-unload": _volume_load_unload,
     "island in the volume (paper 002)": _volume_island,
     "Winkler-Lennard-Jones": _winkler,
+    "friction sweep (paper 000)": _friction_sweep,
+    "Winkler springs' normal curve (paper 000)": _winkler_normal_curve,
+    "plastic volume": _volume_field,
     "statistical load-unload": _statistical,
     "asperity parameters": _asperity_parameters,
     "indentation": _indentation,
@@ -183,6 +208,7 @@ BUILDERS = {
     "Winkler beside the adhesive BEM (paper 000)": _winkler_beside_bem,
 }
 SOLVED = {
+    "Winkler-Lennard-Jones",
     "normal contact",
     "tangential path",
     "pre-sliding (paper 001)",
@@ -279,3 +305,39 @@ def test_solvers_say_how_they_ended(named_result):
     assert result.converged is True
     assert int(np.sum(result.iterations)) >= 0
     assert math.isfinite(float(np.max(result.residual)))
+
+
+def _result_classes() -> set[type]:
+    """Every public class of the package with ``scalars`` and ``to_xarray``: a result, found by itself."""
+    import importlib
+    import importlib.util
+    import inspect
+    import pkgutil
+    from pathlib import Path
+
+    import roughcontact
+
+    found = set()
+    for module in pkgutil.walk_packages(roughcontact.__path__, "roughcontact."):
+        parts = module.name.split(".")
+        if any(p.startswith("_") for p in parts[1:]) or parts[1] in ("cli", "study", "plotting"):
+            continue  # private modules and the edges
+        if "moved_module(" in Path(importlib.util.find_spec(module.name).origin).read_text():
+            continue  # a kept old place of a moved module
+        loaded = importlib.import_module(module.name)
+        for name, cls in inspect.getmembers(loaded, inspect.isclass):
+            if (
+                cls.__module__ == module.name
+                and not name.startswith("_")
+                and cls.__name__ not in ("Result", "SolverResult")
+            ):
+                if callable(getattr(cls, "to_xarray", None)) and callable(getattr(cls, "scalars", None)):
+                    found.add(cls)
+    return found
+
+
+def test_every_result_class_is_built_and_checked_here():
+    """A new result class is found without being listed: it must get a builder above."""
+    built = {type(build()) for build in BUILDERS.values()}
+    missing = sorted(cls.__qualname__ for cls in _result_classes() - built)
+    assert not missing, f"result classes no test builds: {missing}"

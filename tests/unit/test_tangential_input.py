@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from roughcontact.contact import solve_normal
+from roughcontact.contact import ShearSolver, solve_normal
 from roughcontact.contact.paths import as_path, stroke_path, symmetric_path
 from roughcontact.contact.tangential import solve_tangential
 from roughcontact.errors import ConvergenceError, InputError
@@ -225,8 +225,7 @@ def test_non_convergence_raises_with_residual_and_iterations(free_normal):
             MATERIAL,
             friction_coefficient=mu,
             force=[0.6 * mu * free_normal.force],
-            tolerance=1e-12,
-            max_iterations=1,
+            solver=ShearSolver(tolerance=1e-12, max_iterations=1),
         )
     assert error.value.iterations == 1
     assert error.value.residual > 1e-12
@@ -264,7 +263,7 @@ def test_coupling_non_convergence_raises(free_normal):
             counter_body=hard,
             friction_coefficient=0.3,
             force=[0.5 * 0.3 * FORCE],
-            max_coupling_iterations=1,
+            solver=ShearSolver(max_coupling_iterations=1),
         )
     assert error.value.iterations == 1
     assert error.value.residual > error.value.tolerance

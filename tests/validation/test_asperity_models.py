@@ -98,14 +98,14 @@ def test_unloading_laws_anchor_points():
     omega_c = critical_interference(**SU8)
     # unloading from an elastic maximum is the Hertz curve
     load = unloading_load(
-        0.5 * omega_c, max_interference=omega_c, max_load=1.0, critical_interference=omega_c
+        0.5 * omega_c, max_interference=omega_c, max_force=1.0, critical_interference=omega_c
     )
     assert load == pytest.approx(0.5**1.5, rel=1e-12, abs=0)
     # from omega* = 6: zero at and below the residual, W_max at the maximum
     w_max = 6 * omega_c
     residual = residual_interference_ratio(6.0) * w_max
-    assert unloading_load(residual, max_interference=w_max, max_load=2.0, critical_interference=omega_c) == 0
-    assert unloading_load(w_max, max_interference=w_max, max_load=2.0, critical_interference=omega_c) == 2.0
+    assert unloading_load(residual, max_interference=w_max, max_force=2.0, critical_interference=omega_c) == 0
+    assert unloading_load(w_max, max_interference=w_max, max_force=2.0, critical_interference=omega_c) == 2.0
 
 
 # --- GW integrals --------------------------------------------------------------------------------

@@ -104,7 +104,7 @@ def test_unloading_area_is_monotonic_finite_and_vanishes_with_the_load():
         load = unloading_load(
             omega,
             max_interference=omega_max,
-            max_load=kogut_etsion_load(w_max),
+            max_force=kogut_etsion_load(w_max),
             critical_interference=OMEGA_C,
         )
         assert np.all(np.isfinite(area))

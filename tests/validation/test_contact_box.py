@@ -19,7 +19,14 @@ import numpy as np
 import pytest
 
 from roughcontact.analytic import mindlin
-from roughcontact.contact import _box, _constrained_cg, _programme, solve_normal, solve_tangential
+from roughcontact.contact import (
+    ShearSolver,
+    _box,
+    _constrained_cg,
+    _programme,
+    solve_normal,
+    solve_tangential,
+)
 from roughcontact.contact.normal import compliance_for
 from roughcontact.contact.paths import stroke_path
 from roughcontact.elasticity import kernels
@@ -133,8 +140,8 @@ def _loop(material, counter, steps_per_stroke):
             counter_body=counter,
             friction_coefficient=0.3,
             displacement=path,
-            tolerance=1e-11,
             fields_at="last",
+            solver=ShearSolver(tolerance=1e-11),
         )
 
     return normal, force, path, loop

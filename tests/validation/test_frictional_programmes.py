@@ -22,7 +22,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from roughcontact.analytic import mindlin
-from roughcontact.contact import solve_frictional, solve_normal, solve_tangential
+from roughcontact.contact import ShearSolver, solve_frictional, solve_normal, solve_tangential
 from roughcontact.contact.paths import stroke_path
 from roughcontact.errors import InputError
 from roughcontact.materials import Material, contact_modulus, get_material, johnson_shear_modulus
@@ -53,8 +53,8 @@ def _oblique(n, ratio, steps):
         friction_coefficient=MU,
         normal_force=np.concatenate([preload, load]),
         force=np.concatenate([np.zeros(5), tangential]),
-        tolerance=1e-10,
         fields_at="none",
+        solver=ShearSolver(tolerance=1e-10),
     )
     radii = np.array([mindlin.hertz_contact_radius(p, RADIUS, modulus) for p in load])
     return result, load, tangential, radii, modulus, g_star
@@ -97,7 +97,9 @@ def test_beta_zero_frictional_start_equals_goodman_start():
     ball, material, _, _ = _spheres(64)
     normal = solve_normal(ball, material, counter_body=material, force=FORCE, tolerance=1e-13)
     path = stroke_path(0.5e-6, cycles=1, steps_per_stroke=8)
-    common = dict(counter_body=material, friction_coefficient=MU, displacement=path, tolerance=1e-12)
+    common = dict(
+        counter_body=material, friction_coefficient=MU, displacement=path, solver=ShearSolver(tolerance=1e-12)
+    )
     goodman = solve_tangential(normal, material, normal_loading="frictionless", **common)
     frictional = solve_tangential(normal, material, normal_loading="frictional", **common)
     assert frictional.loading is not None and goodman.loading is None

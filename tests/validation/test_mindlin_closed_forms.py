@@ -19,13 +19,9 @@ from roughcontact.analytic.mindlin import (
     tangential_displacement,
     tangential_force,
 )
+from roughcontact.contact.presliding import effective_shear_modulus_paper001
 from roughcontact.errors import InputError
-from roughcontact.materials import (
-    Material,
-    contact_modulus,
-    effective_shear_modulus_paper001,
-    johnson_shear_modulus,
-)
+from roughcontact.materials import Material, contact_modulus, johnson_shear_modulus
 from roughcontact.papers.paper001 import paper001_mindlin
 
 HDPE = Material(0.98e9, 0.5, "HDPE")
@@ -240,7 +236,7 @@ def test_unit_invariance():
 @pytest.mark.parametrize(
     "call, field",
     [
-        (lambda: sliding_displacement(-0.1, P, A, G), "mu"),
+        (lambda: sliding_displacement(-0.1, P, A, G), "friction_coefficient"),
         (lambda: sliding_displacement(MU, P, 0.0, G), "contact_radius"),
         (lambda: masing_force([0.0, np.nan], *ARGS), "displacement_path"),
         (lambda: dissipated_energy(2 * MU * P, *ARGS), "force_amplitude"),

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 from test_tangential_closed_forms import FORCE, MU, _case
 
-from roughcontact.contact import _shear_apg, solve_normal
+from roughcontact.contact import ShearSolver, _shear_apg, solve_normal
 from roughcontact.contact.tangential import solve_tangential
 from roughcontact.elasticity.tangential import TractionCompliance
 from roughcontact.errors import InputError
@@ -26,10 +26,17 @@ FRACTIONS = np.array([0.25, 0.5, 0.75, 0.9])
 def cattaneo_64():
     material, normal, a, g_star = _case(64)
     common = dict(
-        counter_body=material, friction_coefficient=MU, force=FRACTIONS * MU * FORCE, tolerance=1e-10
+        counter_body=material,
+        friction_coefficient=MU,
+        force=FRACTIONS * MU * FORCE,
+        solver=ShearSolver(tolerance=1e-10),
     )
-    apg = solve_tangential(normal, material, method="apg", **common)
-    cg = solve_tangential(normal, material, method="cg", **common)
+    apg = solve_tangential(
+        normal, material, **(common | {"solver": ShearSolver(tolerance=1e-10, method="apg")})
+    )
+    cg = solve_tangential(
+        normal, material, **(common | {"solver": ShearSolver(tolerance=1e-10, method="cg")})
+    )
     return apg, cg, a, g_star
 
 
@@ -79,9 +86,11 @@ def test_apg_agrees_with_cg_on_a_rough_ball(label):
         path = {"force": np.array([[0.5, 0.1], [0.9, 0.3], [0.2, -0.1]]) * ROUGH_MU * ROUGH_F0}
     else:
         path = {"displacement": np.array([0.3, 0.6, 0.2]) * 1e-6}
-    common = dict(counter_body=counter, friction_coefficient=ROUGH_MU, tolerance=1e-10, **path)
-    apg = solve_tangential(normal, body, method="apg", **common)
-    cg = solve_tangential(normal, body, method="cg", **common)
+    common = dict(
+        counter_body=counter, friction_coefficient=ROUGH_MU, **path, solver=ShearSolver(tolerance=1e-10)
+    )
+    apg = solve_tangential(normal, body, **(common | {"solver": ShearSolver(tolerance=1e-10, method="apg")}))
+    cg = solve_tangential(normal, body, **(common | {"solver": ShearSolver(tolerance=1e-10, method="cg")}))
     assert np.max(np.abs(apg.force - cg.force)) < 1e-6 * ROUGH_MU * ROUGH_F0
     scale_q = ROUGH_MU * normal.pressure.max()
     scale_s = np.abs(cg.displacement).max()
@@ -153,7 +162,12 @@ def test_unknown_method_is_refused(small_normal):
     material, normal = small_normal
     with pytest.raises(InputError, match="method"):
         solve_tangential(
-            normal, material, counter_body=material, friction_coefficient=MU, force=[0.1], method="x"
+            normal,
+            material,
+            counter_body=material,
+            friction_coefficient=MU,
+            force=[0.1],
+            solver=ShearSolver(method="x"),
         )
 
 
@@ -166,8 +180,7 @@ def test_apg_refuses_the_fourier_preconditioner(small_normal):
             counter_body=material,
             friction_coefficient=MU,
             force=[0.1 * MU * FORCE],
-            method="apg",
-            precondition=True,
+            solver=ShearSolver(method="apg", precondition=True),
         )
 
 
@@ -176,26 +189,43 @@ def test_apg_refuses_the_sliding_force(small_normal):
     material, normal = small_normal
     with pytest.raises(InputError, match="sliding force"):
         solve_tangential(
-            normal, material, counter_body=material, friction_coefficient=MU, force=[MU * FORCE], method="apg"
+            normal,
+            material,
+            counter_body=material,
+            friction_coefficient=MU,
+            force=[MU * FORCE],
+            solver=ShearSolver(method="apg"),
         )
 
 
 def test_auto_picks_cg_for_nu_0_and_apg_when_slip_directions_turn(small_normal):
     """method="auto" (the default): cg for nu = 0 pairs (B = 0), apg when a body has nu > 0."""
     material, normal = small_normal
-    common = dict(friction_coefficient=MU, force=[0.5 * MU * FORCE], tolerance=1e-10)
+    common = dict(friction_coefficient=MU, force=[0.5 * MU * FORCE], solver=ShearSolver(tolerance=1e-10))
     default = solve_tangential(normal, material, counter_body=material, **common)
-    explicit = solve_tangential(normal, material, counter_body=material, method="cg", **common)
+    explicit = solve_tangential(
+        normal,
+        material,
+        counter_body=material,
+        **(common | {"solver": ShearSolver(tolerance=1e-10, method="cg")}),
+    )
     assert default.parameters["method"] == "cg"
     assert np.array_equal(default.states[0].shear_x, explicit.states[0].shear_x)
     assert np.array_equal(default.iterations, explicit.iterations)
     soft = Material(material.youngs_modulus, 0.3, "nu 0.3")
     normal = solve_normal(normal.topography, soft, counter_body=soft, force=FORCE, tolerance=1e-10)
     default = solve_tangential(normal, soft, counter_body=soft, **common)
-    explicit = solve_tangential(normal, soft, counter_body=soft, method="apg", **common)
+    explicit = solve_tangential(
+        normal, soft, counter_body=soft, **(common | {"solver": ShearSolver(tolerance=1e-10, method="apg")})
+    )
     assert default.parameters["method"] == "apg"
     assert np.array_equal(default.states[0].shear_x, explicit.states[0].shear_x)
-    preconditioned = solve_tangential(normal, soft, counter_body=soft, precondition=True, **common)
+    preconditioned = solve_tangential(
+        normal,
+        soft,
+        counter_body=soft,
+        **(common | {"solver": ShearSolver(tolerance=1e-10, precondition=True)}),
+    )
     assert preconditioned.parameters["method"] == "cg"  # the Fourier preconditioner is cg's
 
 

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from roughcontact.analytic import mindlin
-from roughcontact.contact import solve_normal
+from roughcontact.contact import ShearSolver, solve_normal
 from roughcontact.contact.paths import stroke_path, symmetric_path
 from roughcontact.contact.tangential import solve_tangential
 from roughcontact.materials import Material, contact_modulus, johnson_shear_modulus
@@ -53,8 +53,7 @@ def mindlin_force_control(request):
             counter_body=material,
             friction_coefficient=MU,
             force=fractions * MU * FORCE,
-            tolerance=1e-10,
-            method=request.param,
+            solver=ShearSolver(tolerance=1e-10, method=request.param),
         )
         assert result.parameters["method"] == request.param
         out[n] = (result, a, g_star, fractions)
@@ -126,9 +125,8 @@ def masing_loop(request):
         counter_body=material,
         friction_coefficient=MU,
         displacement=path,
-        tolerance=1e-10,
         fields_at="none",
-        method=request.param,
+        solver=ShearSolver(tolerance=1e-10, method=request.param),
     )
     return result, a, g_star, path
 
@@ -160,7 +158,7 @@ def test_uncoupled_loop_closes_after_the_first_cycle():
         friction_coefficient=MU,
         displacement=stroke_path(stroke, cycles=3, steps_per_stroke=8),
         fields_at="none",
-        tolerance=1e-11,
+        solver=ShearSolver(tolerance=1e-11),
     )
     (s1, e1), (s2, e2) = result.loops()
     assert np.allclose(result.force[s1 : e1 + 1], result.force[s2 : e2 + 1], atol=1e-8 * MU * FORCE)
@@ -177,7 +175,7 @@ def test_both_tangential_directions_give_the_same_answer():
         counter_body=material,
         friction_coefficient=MU,
         force=[[0.6 * MU * FORCE, 0.0]],
-        tolerance=1e-10,
+        solver=ShearSolver(tolerance=1e-10),
     )
     along_y = solve_tangential(
         normal,
@@ -185,7 +183,7 @@ def test_both_tangential_directions_give_the_same_answer():
         counter_body=material,
         friction_coefficient=MU,
         force=[[0.0, 0.6 * MU * FORCE]],
-        tolerance=1e-10,
+        solver=ShearSolver(tolerance=1e-10),
     )
     assert np.isclose(along_x.displacement[0, 0], along_y.displacement[0, 1], rtol=1e-7)
     assert np.allclose(along_x.states[0].shear_x, along_y.states[0].shear_y.T, atol=1e-7 * MU * 1e6)
@@ -200,7 +198,7 @@ def test_nu_03_stays_close_to_mindlin():
         counter_body=material,
         friction_coefficient=MU,
         force=[0.5 * MU * FORCE],
-        tolerance=1e-10,
+        solver=ShearSolver(tolerance=1e-10),
     )
     expected = mindlin.tangential_displacement(0.5 * MU * FORCE, MU, FORCE, a, g_star)
     assert abs(result.displacement[0, 0] / expected - 1) < 0.02

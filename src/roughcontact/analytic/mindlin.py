@@ -53,7 +53,7 @@ import math
 
 import numpy as np
 
-from .._deprecation import moved
+from .._deprecation import moved, renamed
 from ..checks import finite_array, positive
 from ..errors import InputError
 
@@ -102,14 +102,14 @@ def hertz_contact_radius(normal_force: float, radius: float, contact_modulus: fl
 # --- checks ---------------------------------------------------------------------------------------
 
 
-def _check_contact(mu, normal_force, contact_radius, shear_modulus=None) -> float:
+def _check_contact(friction_coefficient, normal_force, contact_radius, shear_modulus=None) -> float:
     """Validate the common parameters; return mu P [N]."""
-    positive(mu, "mu", example="0.15")
+    positive(friction_coefficient, "friction_coefficient", example="0.15")
     positive(normal_force, "normal_force", example="0.025", unit="N")
     positive(contact_radius, "contact_radius", example="20e-6", unit="m")
     if shear_modulus is not None:
         positive(shear_modulus, "shear_modulus", example="0.1e9", unit="Pa")
-    return float(mu) * float(normal_force)
+    return float(friction_coefficient) * float(normal_force)
 
 
 def _force_ratio(force, mu_p: float, field: str = "force") -> np.ndarray:
@@ -131,14 +131,15 @@ def _as_output(array: np.ndarray, like) -> float | np.ndarray:
 # --- monotonic loading (Cattaneo-Mindlin) -----------------------------------------------------------
 
 
-def stick_radius(force, mu: float, normal_force: float, contact_radius: float):
+@renamed(mu="friction_coefficient")
+def stick_radius(force, friction_coefficient: float, normal_force: float, contact_radius: float):
     r"""Radius of the stick disc, c = a (1 - |Q|/(mu P))^(1/3) [m] (Johnson eq. 7.39).
 
     Parameters
     ----------
     force : float or array
         Tangential force Q [N], |Q| <= mu P.
-    mu : float
+    friction_coefficient : float
         Coefficient of friction [-].
     normal_force : float
         P [N].
@@ -150,11 +151,12 @@ def stick_radius(force, mu: float, normal_force: float, contact_radius: float):
     float or ndarray
         c [m]: a at Q = 0, 0 at |Q| = mu P.
     """
-    mu_p = _check_contact(mu, normal_force, contact_radius)
+    mu_p = _check_contact(friction_coefficient, normal_force, contact_radius)
     return _as_output(contact_radius * np.cbrt(1.0 - _force_ratio(force, mu_p)), force)
 
 
-def shear_traction(r, force, mu: float, normal_force: float, contact_radius: float):
+@renamed(mu="friction_coefficient")
+def shear_traction(r, force, friction_coefficient: float, normal_force: float, contact_radius: float):
     r"""Cattaneo-Mindlin shear traction q(r) [Pa] (Johnson eqs. 7.36-7.39), in the sense of Q.
 
     .. math::
@@ -170,7 +172,7 @@ def shear_traction(r, force, mu: float, normal_force: float, contact_radius: flo
         Distance from the centre [m].
     force : float
         Tangential force Q [N], |Q| <= mu P (the sign of Q gives the sign of q).
-    mu, normal_force, contact_radius : float
+    friction_coefficient, normal_force, contact_radius : float
         As in :func:`stick_radius`.
 
     Returns
@@ -178,7 +180,7 @@ def shear_traction(r, force, mu: float, normal_force: float, contact_radius: flo
     float or ndarray
         q [Pa].
     """
-    mu_p = _check_contact(mu, normal_force, contact_radius)
+    mu_p = _check_contact(friction_coefficient, normal_force, contact_radius)
     if np.ndim(force) != 0:
         raise InputError("force", "expected one tangential force.", "call once per force value.")
     ratio = float(_force_ratio(force, mu_p))
@@ -187,20 +189,21 @@ def shear_traction(r, force, mu: float, normal_force: float, contact_radius: flo
     c = a * c_over_a
     p0 = 3.0 * normal_force / (2.0 * math.pi * a**2)
     rr = np.abs(finite_array(r, "r"))
-    full = mu * p0 * np.sqrt(np.clip(1.0 - (rr / a) ** 2, 0.0, None))
+    full = friction_coefficient * p0 * np.sqrt(np.clip(1.0 - (rr / a) ** 2, 0.0, None))
     if c > 0:
-        full = full - c_over_a * mu * p0 * np.sqrt(np.clip(1.0 - (rr / c) ** 2, 0.0, None))
+        full = full - c_over_a * friction_coefficient * p0 * np.sqrt(np.clip(1.0 - (rr / c) ** 2, 0.0, None))
     return _as_output(math.copysign(1.0, force) * full, r)
 
 
+@renamed(mu="friction_coefficient")
 def sliding_displacement(
-    mu: float, normal_force: float, contact_radius: float, shear_modulus: float
+    friction_coefficient: float, normal_force: float, contact_radius: float, shear_modulus: float
 ) -> float:
     r"""Tangential displacement at the onset of gross sliding, delta_0 = 3 mu P / (16 a G*) [m].
 
     Parameters
     ----------
-    mu, normal_force, contact_radius : float
+    friction_coefficient, normal_force, contact_radius : float
         As in :func:`stick_radius`.
     shear_modulus : float
         Johnson's G* [Pa] (:func:`roughcontact.materials.johnson_shear_modulus`).
@@ -210,12 +213,13 @@ def sliding_displacement(
     float
         delta_0 [m].
     """
-    mu_p = _check_contact(mu, normal_force, contact_radius, shear_modulus)
+    mu_p = _check_contact(friction_coefficient, normal_force, contact_radius, shear_modulus)
     return 3.0 * mu_p / (16.0 * contact_radius * shear_modulus)
 
 
+@renamed(mu="friction_coefficient")
 def tangential_displacement(
-    force, mu: float, normal_force: float, contact_radius: float, shear_modulus: float
+    force, friction_coefficient: float, normal_force: float, contact_radius: float, shear_modulus: float
 ):
     r"""Monotonic (virgin) tangential displacement delta(Q) [m] (Mindlin 1949; Johnson eq. 7.42).
 
@@ -227,7 +231,7 @@ def tangential_displacement(
     ----------
     force : float or array
         Q [N], |Q| <= mu P.
-    mu, normal_force, contact_radius, shear_modulus : float
+    friction_coefficient, normal_force, contact_radius, shear_modulus : float
         As in :func:`sliding_displacement`.
 
     Returns
@@ -235,8 +239,8 @@ def tangential_displacement(
     float or ndarray
         delta [m]; delta_0 at |Q| = mu P.
     """
-    delta0 = sliding_displacement(mu, normal_force, contact_radius, shear_modulus)
-    ratio = _force_ratio(force, mu * normal_force)
+    delta0 = sliding_displacement(friction_coefficient, normal_force, contact_radius, shear_modulus)
+    ratio = _force_ratio(force, friction_coefficient * normal_force)
     sign = np.sign(np.asarray(force, dtype=float))
     return _as_output(sign * delta0 * (1.0 - (1.0 - ratio) ** (2.0 / 3.0)), force)
 
@@ -247,8 +251,13 @@ def _virgin_force(delta: np.ndarray, mu_p: float, delta0: float) -> np.ndarray:
     return np.sign(delta) * mu_p * (1.0 - (1.0 - x) ** 1.5)
 
 
+@renamed(mu="friction_coefficient")
 def tangential_force(
-    displacement, mu: float, normal_force: float, contact_radius: float, shear_modulus: float
+    displacement,
+    friction_coefficient: float,
+    normal_force: float,
+    contact_radius: float,
+    shear_modulus: float,
 ):
     r"""Inverse of :func:`tangential_displacement`: Q(delta) [N], with Q = mu P beyond delta_0.
 
@@ -261,7 +270,7 @@ def tangential_force(
     ----------
     displacement : float or array
         delta [m] from the unloaded state.
-    mu, normal_force, contact_radius, shear_modulus : float
+    friction_coefficient, normal_force, contact_radius, shear_modulus : float
         As in :func:`sliding_displacement`.
 
     Returns
@@ -269,19 +278,22 @@ def tangential_force(
     float or ndarray
         Q [N].
     """
-    delta0 = sliding_displacement(mu, normal_force, contact_radius, shear_modulus)
+    delta0 = sliding_displacement(friction_coefficient, normal_force, contact_radius, shear_modulus)
     delta = finite_array(displacement, "displacement")
-    return _as_output(_virgin_force(delta, mu * normal_force, delta0), displacement)
+    return _as_output(_virgin_force(delta, friction_coefficient * normal_force, delta0), displacement)
 
 
-def lateral_stiffness(force, mu: float, normal_force: float, contact_radius: float, shear_modulus: float):
+@renamed(mu="friction_coefficient")
+def lateral_stiffness(
+    force, friction_coefficient: float, normal_force: float, contact_radius: float, shear_modulus: float
+):
     r"""Tangential (lateral) stiffness of the virgin curve, dQ/d delta = 8 a G* (1 - |Q|/(mu P))^(1/3) [N/m].
 
     Parameters
     ----------
     force : float or array
         Q [N], |Q| <= mu P.
-    mu, normal_force, contact_radius, shear_modulus : float
+    friction_coefficient, normal_force, contact_radius, shear_modulus : float
         As in :func:`sliding_displacement`.
 
     Returns
@@ -294,7 +306,7 @@ def lateral_stiffness(force, mu: float, normal_force: float, contact_radius: flo
     Johnson (1985), sec. 7.2 (derivative of eq. 7.42). On a Masing branch after a reversal at Q_r,
     the stiffness is this function evaluated at (Q_r - Q)/2.
     """
-    mu_p = _check_contact(mu, normal_force, contact_radius, shear_modulus)
+    mu_p = _check_contact(friction_coefficient, normal_force, contact_radius, shear_modulus)
     ratio = _force_ratio(force, mu_p)
     return _as_output(8.0 * contact_radius * shear_modulus * np.cbrt(1.0 - ratio), force)
 
@@ -302,10 +314,11 @@ def lateral_stiffness(force, mu: float, normal_force: float, contact_radius: flo
 # --- cyclic loading (Mindlin-Deresiewicz, Masing rule) ------------------------------------------------
 
 
+@renamed(mu="friction_coefficient")
 def masing_displacement(
     force,
     force_amplitude: float,
-    mu: float,
+    friction_coefficient: float,
     normal_force: float,
     contact_radius: float,
     shear_modulus: float,
@@ -330,7 +343,7 @@ def masing_displacement(
         Q [N] in [-Q*, Q*].
     force_amplitude : float
         Q* [N], 0 < Q* <= mu P.
-    mu, normal_force, contact_radius, shear_modulus : float
+    friction_coefficient, normal_force, contact_radius, shear_modulus : float
         As in :func:`sliding_displacement`.
     branch : {"unloading", "reloading"}
         Which half of the loop.
@@ -342,14 +355,14 @@ def masing_displacement(
     """
     if branch not in ("unloading", "reloading"):
         raise InputError("branch", f"unknown branch {branch!r}.", "choose 'unloading' or 'reloading'.")
-    mu_p = _check_contact(mu, normal_force, contact_radius, shear_modulus)
+    mu_p = _check_contact(friction_coefficient, normal_force, contact_radius, shear_modulus)
     positive(force_amplitude, "force_amplitude", example="0.5 * mu * normal_force")
     _force_ratio(force_amplitude, mu_p, "force_amplitude")
     q = finite_array(force, "force")
     if np.any(np.abs(q) > force_amplitude * (1.0 + 1e-12)):
         raise InputError("force", "lies outside [-Q*, Q*].", "keep |force| <= force_amplitude.")
     q = np.clip(q, -force_amplitude, force_amplitude)
-    args = (mu, normal_force, contact_radius, shear_modulus)
+    args = (friction_coefficient, normal_force, contact_radius, shear_modulus)
     d_star = tangential_displacement(force_amplitude, *args)
     if branch == "unloading":
         delta = d_star - 2.0 * np.asarray(tangential_displacement((force_amplitude - q) / 2.0, *args))
@@ -358,9 +371,10 @@ def masing_displacement(
     return _as_output(np.asarray(delta, dtype=float), force)
 
 
+@renamed(mu="friction_coefficient")
 def masing_force(
     displacement_path,
-    mu: float,
+    friction_coefficient: float,
     normal_force: float,
     contact_radius: float,
     shear_modulus: float,
@@ -388,7 +402,7 @@ def masing_force(
     displacement_path : array_like
         delta [m] at each step, piecewise monotonic; reversals are where the sign of the
         increment changes (repeated values are allowed).
-    mu, normal_force, contact_radius, shear_modulus : float
+    friction_coefficient, normal_force, contact_radius, shear_modulus : float
         As in :func:`sliding_displacement`.
 
     Returns
@@ -396,8 +410,8 @@ def masing_force(
     ndarray
         Q [N] at every point of the path.
     """
-    delta0 = sliding_displacement(mu, normal_force, contact_radius, shear_modulus)
-    mu_p = mu * normal_force
+    delta0 = sliding_displacement(friction_coefficient, normal_force, contact_radius, shear_modulus)
+    mu_p = friction_coefficient * normal_force
     path = finite_array(displacement_path, "displacement_path")
     if path.ndim != 1 or path.size == 0:
         raise InputError(
@@ -437,8 +451,13 @@ def masing_force(
     return force
 
 
+@renamed(mu="friction_coefficient")
 def dissipated_energy(
-    force_amplitude: float, mu: float, normal_force: float, contact_radius: float, shear_modulus: float
+    force_amplitude: float,
+    friction_coefficient: float,
+    normal_force: float,
+    contact_radius: float,
+    shear_modulus: float,
 ) -> float:
     r"""Energy dissipated per force-controlled cycle between -Q* and +Q* [J].
 
@@ -457,7 +476,7 @@ def dissipated_energy(
     ----------
     force_amplitude : float
         Q* [N], 0 < Q* <= mu P.
-    mu, normal_force, contact_radius, shear_modulus : float
+    friction_coefficient, normal_force, contact_radius, shear_modulus : float
         As in :func:`sliding_displacement`.
 
     Returns
@@ -469,15 +488,20 @@ def dissipated_energy(
     ----------
     Mindlin and Deresiewicz (1953); Johnson (1985), sec. 7.4, eq. 7.59.
     """
-    mu_p = _check_contact(mu, normal_force, contact_radius, shear_modulus)
+    mu_p = _check_contact(friction_coefficient, normal_force, contact_radius, shear_modulus)
     positive(force_amplitude, "force_amplitude", example="0.5 * mu * normal_force")
     x = float(_force_ratio(force_amplitude, mu_p, "force_amplitude"))
     prefactor = 9.0 * mu_p**2 / (10.0 * contact_radius * shear_modulus)
     return prefactor * (1.0 - (1.0 - x) ** (5.0 / 3.0) - 5.0 * x / 6.0 * (1.0 + (1.0 - x) ** (2.0 / 3.0)))
 
 
+@renamed(mu="friction_coefficient")
 def dissipated_energy_displacement(
-    displacement_range: float, mu: float, normal_force: float, contact_radius: float, shear_modulus: float
+    displacement_range: float,
+    friction_coefficient: float,
+    normal_force: float,
+    contact_radius: float,
+    shear_modulus: float,
 ) -> float:
     r"""Energy dissipated per displacement-controlled cycle of total range ``displacement_range`` [J].
 
@@ -494,7 +518,7 @@ def dissipated_energy_displacement(
     ----------
     displacement_range : float
         max - min of the displacement over the cycle (the stroke d_s) [m], positive.
-    mu, normal_force, contact_radius, shear_modulus : float
+    friction_coefficient, normal_force, contact_radius, shear_modulus : float
         As in :func:`sliding_displacement`.
 
     Returns
@@ -503,12 +527,12 @@ def dissipated_energy_displacement(
         W [J] per cycle.
     """
     positive(displacement_range, "displacement_range", example="2.8e-6", unit="m")
-    delta0 = sliding_displacement(mu, normal_force, contact_radius, shear_modulus)
+    delta0 = sliding_displacement(friction_coefficient, normal_force, contact_radius, shear_modulus)
     half = displacement_range / 2.0
-    mu_p = mu * normal_force
+    mu_p = friction_coefficient * normal_force
     if half <= delta0:
         amplitude = float(_virgin_force(np.asarray(half), mu_p, delta0))
-        return dissipated_energy(amplitude, mu, normal_force, contact_radius, shear_modulus)
+        return dissipated_energy(amplitude, friction_coefficient, normal_force, contact_radius, shear_modulus)
     return 0.8 * mu_p * delta0 + 4.0 * mu_p * (half - delta0)
 
 

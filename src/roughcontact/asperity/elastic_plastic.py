@@ -47,6 +47,7 @@ import math
 
 import numpy as np
 
+from .._deprecation import renamed
 from ..checks import poissons_ratio_checked, positive
 from ..errors import InputError
 
@@ -467,7 +468,8 @@ def residual_interference_ratio(max_w_star):
     return _out(ratio, max_w_star)
 
 
-def unloading_load(interference, *, max_interference: float, max_load: float, critical_interference: float):
+@renamed(max_load="max_force")
+def unloading_load(interference, *, max_interference: float, max_force: float, critical_interference: float):
     r"""Load of an asperity unloaded from omega_max (paper 002 eq. 11) [N].
 
     .. math:: W = W_{max}\left(\frac{\omega - \omega_{res}}{\omega_{max} - \omega_{res}}\right)^{n},
@@ -482,7 +484,7 @@ def unloading_load(interference, *, max_interference: float, max_load: float, cr
         omega [m], 0 <= omega <= omega_max.
     max_interference : float
         omega_max [m].
-    max_load : float
+    max_force : float
         W_max [N], the loading law's load at omega_max.
     critical_interference : float
         omega_c [m].
@@ -502,9 +504,9 @@ def unloading_load(interference, *, max_interference: float, max_load: float, cr
     ----------
     Etsion, Kligerman and Kadin (2005), doi:10.1016/j.ijsolstr.2004.12.006. Seed paper 002, eq. 11.
     """
-    positive(max_load, "max_load", example="1e-6", unit="N", allow_zero=True)
+    positive(max_force, "max_force", example="1e-6", unit="N", allow_zero=True)
     stretch, max_w_star = _unloading_stretch(interference, max_interference, critical_interference)
-    return _out(max_load * stretch ** unloading_exponent(max_w_star), interference)
+    return _out(max_force * stretch ** unloading_exponent(max_w_star), interference)
 
 
 def _unloading_stretch(interference, max_interference: float, critical_interference: float):

@@ -80,7 +80,7 @@ def _island(command: CommandStudy, args: argparse.Namespace, material: str | Non
             "material": (material, "--material"),
             "substrate": (args.substrate, "--substrate"),
             "film_thickness": (args.film_thickness, "--film-thickness"),
-            "peak_force": (args.max_force, "--max-force"),
+            "max_force": (args.max_force, "--max-force"),
             "reference_force": (args.reference_force, "--reference-force"),
             "hardness": (args.hardness, "--hardness"),
             "plasticity": (args.plasticity, "--plasticity"),

@@ -27,7 +27,7 @@ def _contact(args: argparse.Namespace) -> int:
             "boundary",
             "tolerance",
             "stress_depths",
-            mean_pressure="--pressure",
+            spelled={"mean_pressure": "--pressure"},
         ),
     )
     return run_command(command, args)

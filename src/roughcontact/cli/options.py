@@ -13,7 +13,7 @@ from __future__ import annotations
 import argparse
 import re
 import sys
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -326,14 +326,16 @@ def _flag(name: str) -> str:
     return f"--{name.replace('_', '-')}"
 
 
-def options(args: argparse.Namespace, *names: str, **spelled: str) -> dict[str, tuple[Any, str]]:
+def options(
+    args: argparse.Namespace, *names: str, spelled: Mapping[str, str] | None = None
+) -> dict[str, tuple[Any, str]]:
     """Return model keys as (value, option), the values read from ``args``.
 
     ``names`` are keys whose option is spelled like them (``stress_depths``: ``--stress-depths``);
-    each ``key="--option"`` of ``spelled`` is a key that an option of another name sets.
+    each ``key: "--option"`` of ``spelled`` is a key that an option of another name sets.
     """
     keys = {name: (getattr(args, name), _flag(name)) for name in names}
-    for key, option in spelled.items():
+    for key, option in (spelled or {}).items():
         keys[key] = (getattr(args, option.lstrip("-").replace("-", "_")), option)
     return keys
 

@@ -106,7 +106,11 @@ def _presliding(args: argparse.Namespace) -> int:
             index,
             {"measured_loop": (str(args.measured.resolve()), "--measured")}
             | options(
-                args, displacement_unit="--measured-displacement-unit", force_unit="--measured-force-unit"
+                args,
+                spelled={
+                    "displacement_unit": "--measured-displacement-unit",
+                    "force_unit": "--measured-force-unit",
+                },
             )
             | {
                 "normal_force": (

@@ -25,6 +25,7 @@ from .normal import compliance_for, solve_normal
 from .paths import read_path_csv, read_programme_csv, stroke_path, symmetric_path
 from .presliding import PreslidingResult, presliding
 from .result import NormalContactResult
+from .shear_solver import ShearSolver
 from .sweep import load_path
 from .tangential import solve_tangential
 from .tangential_result import TangentialPathResult, TangentialState
@@ -45,6 +46,7 @@ __all__ = [
     "load_path",
     "load_unload",
     "presliding",
+    "ShearSolver",
     "solve_frictional",
     "read_path_csv",
     "read_programme_csv",

@@ -550,13 +550,7 @@ def build(
     boundary,
     friction_coefficient,
     coupling,
-    tolerance,
-    coupling_tolerance,
-    max_iterations,
-    max_coupling_iterations,
-    precondition,
-    method,
-    workers,
+    solver,
     name="solve_tangential",
 ) -> tuple[Stepper, dict]:
     """Check the solver options and build the stepper of a programme; return it and the parameters.
@@ -565,6 +559,12 @@ def build(
     slipping points turn), else "cg" (see :func:`~roughcontact.contact.tangential.solve_tangential`).
     """
     mu = friction_coefficient
+    tolerance, method, precondition, workers = (
+        solver.tolerance,
+        solver.method,
+        solver.precondition,
+        solver.workers,
+    )
     if not (isinstance(mu, numbers.Real) and np.isfinite(mu) and mu > 0):
         raise InputError("friction_coefficient", f"must be positive and finite, got {mu!r}.", "e.g. 0.15.")
     if method not in METHODS:
@@ -598,9 +598,9 @@ def build(
         mu=float(mu),
         coupled=bool(coupling) and operator.coupled,
         tolerance=tolerance,
-        coupling_tolerance=coupling_tolerance,
-        max_iterations=max_iterations,
-        max_passes=max_coupling_iterations,
+        coupling_tolerance=solver.coupling_tolerance,
+        max_iterations=solver.max_iterations,
+        max_passes=solver.max_coupling_iterations,
         precondition=precondition if apg is None else None,
         apg=apg,
         name=name,

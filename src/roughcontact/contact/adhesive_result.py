@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
@@ -126,8 +127,26 @@ class AdhesiveResult:
     }
 
     @classmethod
-    def from_states(cls, *, topography, interaction, states, pixel_area, **common) -> AdhesiveResult:
-        """Build the result from the engine's states (see :mod:`roughcontact.contact.adhesive`)."""
+    def from_states(
+        cls,
+        *,
+        topography: Topography,
+        interaction: Any,
+        states: Sequence,
+        pixel_area: float,
+        requested: np.ndarray,
+        jump: np.ndarray,
+        contact_modulus: float,
+        boundary: str,
+        tolerance: float,
+        cohesive_zone: float,
+        parameters: dict,
+    ) -> AdhesiveResult:
+        """Build the result from the engine's states (see :mod:`roughcontact.contact.adhesive`).
+
+        The curves and the maps at the peak, the pull-off and the end come from ``states``; the
+        other keywords are the fields of the same name.
+        """
         law = interaction
         threshold = -INTERACTION_FRACTION * law.peak_tension
         force = np.array([s.pressure.sum() * pixel_area for s in states])
@@ -159,7 +178,13 @@ class AdhesiveResult:
             },
             map_steps=steps,
             pixel_area=pixel_area,
-            **common,
+            requested=requested,
+            jump=jump,
+            contact_modulus=contact_modulus,
+            boundary=boundary,
+            tolerance=tolerance,
+            cohesive_zone=cohesive_zone,
+            parameters=parameters,
         )
 
     @property

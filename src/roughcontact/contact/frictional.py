@@ -37,11 +37,13 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from .._deprecation import folded
 from ..errors import InputError
 from ..materials import Material
 from ..topography import Topography
 from . import _programme
 from .normal import resolve_boundary
+from .shear_solver import DEFAULT, SOLVER_KEYWORDS, ShearSolver, folded_solver
 from .tangential_result import TangentialPathResult
 
 NORMAL_CONTROLS = ("force", "approach")
@@ -79,6 +81,7 @@ def _normal_programme(normal_force, approach, steps: int) -> tuple[str, np.ndarr
     return control, values
 
 
+@folded("solver", SOLVER_KEYWORDS, folded_solver)
 def solve_frictional(
     topography: Topography,
     material: Material,
@@ -92,14 +95,8 @@ def solve_frictional(
     boundary: str | None = None,
     coupling: bool = True,
     max_stick_change: float | None = None,
-    tolerance: float = 1e-8,
-    coupling_tolerance: float = 1e-6,
-    max_iterations: int = 10_000,
-    max_coupling_iterations: int = 50,
+    solver: ShearSolver = DEFAULT,
     fields_at: str | Sequence[int] = "all",
-    precondition: bool | str = "auto",
-    method: str = "auto",
-    workers: int | None = None,
 ) -> TangentialPathResult:
     """Solve a combined normal and tangential programme from the unloaded state.
 
@@ -129,8 +126,9 @@ def solve_frictional(
     max_stick_change : float, optional
         Step control: insert steps where the stick fraction would change by more than this in one
         step (e.g. 0.1); the rows are always solved.
-    tolerance, coupling_tolerance, max_iterations, max_coupling_iterations, precondition, method, workers
-        As :func:`~roughcontact.contact.tangential.solve_tangential`.
+    solver : ShearSolver
+        Numerics of the increments (:class:`~roughcontact.contact.shear_solver.ShearSolver`), as
+        for :func:`~roughcontact.contact.tangential.solve_tangential`.
     fields_at : {"all", "last", "none"} or sequence of int
         Programme rows whose fields are kept.
 
@@ -164,13 +162,7 @@ def solve_frictional(
         boundary=boundary,
         friction_coefficient=friction_coefficient,
         coupling=coupling,
-        tolerance=tolerance,
-        coupling_tolerance=coupling_tolerance,
-        max_iterations=max_iterations,
-        max_coupling_iterations=max_coupling_iterations,
-        precondition=precondition,
-        method=method,
-        workers=workers,
+        solver=solver,
         name="solve_frictional",
     )
     record, _ = _programme.run(

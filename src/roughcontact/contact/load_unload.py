@@ -46,7 +46,7 @@ from typing import ClassVar
 
 import numpy as np
 
-from .._deprecation import folded
+from .._deprecation import folded, renamed
 from ..elasticity.halfspace import ElasticLayer
 from ..elasticity.stress import StressField, subsurface_stress
 from ..errors import InputError
@@ -307,12 +307,13 @@ class LoadUnloadResult:
         )
 
 
-def force_targets(peak_force: float, steps: int = 10, reference_force: float | None = None) -> np.ndarray:
+@renamed(peak_force="max_force")
+def force_targets(max_force: float, steps: int = 10, reference_force: float | None = None) -> np.ndarray:
     """Return the loading targets 0, W/n, ..., W [N] (``steps`` = n), with ``reference_force`` among them.
 
     For ``forces=`` of :func:`load_unload` (unloading goes back down through them).
     """
-    targets = np.linspace(0.0, peak_force, steps + 1)
+    targets = np.linspace(0.0, max_force, steps + 1)
     return targets if reference_force is None else np.unique(np.concatenate([targets, [reference_force]]))
 
 

@@ -36,11 +36,12 @@ from ..analytic.mindlin import (
 from ..checks import finite_array, positive
 from ..errors import InputError
 from ..experiment.friction_loop import LoopAnalysis, analyse_loop
-from ..materials import Material, contact_modulus, effective_shear_modulus_paper001, johnson_shear_modulus
+from ..materials import Material, compliance_sum, contact_modulus, johnson_shear_modulus
 from ..topography import Topography
 from .frictional import solve_frictional
 from .normal import solve_normal
 from .paths import as_path, reversals, stroke_path
+from .shear_solver import ShearSolver
 from .tangential import solve_tangential
 
 POINTS = (0.25, 0.5, 0.75)
@@ -646,22 +647,22 @@ def presliding(
         kept = list(range(len(path) - 2 * steps_per_stroke, len(path)))
     else:
         kept = last_turns
-    solver = dict(
+    common = dict(
         counter_body=counter_body,
         friction_coefficient=friction_coefficient,
         coupling=coupling,
         max_stick_change=max_stick_change,
-        tolerance=tolerance,
+        solver=ShearSolver(tolerance=tolerance),
         fields_at=kept,
         **{control: path},
     )
     if normal_path is None:
         result = solve_tangential(
-            normal, material, normal_loading=normal_loading, loading_steps=loading_steps, **solver
+            normal, material, normal_loading=normal_loading, loading_steps=loading_steps, **common
         )
     else:
         normal_target = {"normal_force" if normal_control == "force" else "approach": normal_path}
-        result = solve_frictional(topography, material, **normal_target, **solver)
+        result = solve_frictional(topography, material, **normal_target, **common)
     analysis, note = _analysed(result, normal_force, control)
     if stroke is not None and analysis is not None:
         rising = analysis.branch.direction > 0
@@ -705,3 +706,34 @@ def presliding(
         sliding_distance_mindlin=2.0 * textbook.sliding_distance,
         map_steps=map_steps,
     )
+
+
+def effective_shear_modulus_paper001(a: Material, b: Material | None = None) -> float:
+    r"""Effective shear modulus G_s as defined in paper 001 (below eq. 10) [Pa].
+
+    .. math:: \frac{1}{G_s} = \sum_i \frac{(2 - \nu_i)(1 + \nu_i)}{2 E_i}
+              = \sum_i \frac{2 - \nu_i}{4 G_i}
+
+    This is 4 times Johnson's G* (:func:`johnson_shear_modulus`): G_s = 4 G*. Paper 001 uses it
+    with the prefactors of Johnson's Mindlin solution (delta_0 = 3 mu F0 / (16 a G),
+    K_L = 8 a G), which belong to G*; used with G_s as printed, K_L is 4 times the textbook
+    Mindlin stiffness. With G_s the consistent prefactors are delta_0 = 3 mu F0 / (4 a G_s)
+    and K_L = 2 a G_s.
+
+    Parameters
+    ----------
+    a : Material
+        First body.
+    b : Material or None
+        Second body; ``None`` is rigid.
+
+    Returns
+    -------
+    float
+        G_s [Pa].
+
+    References
+    ----------
+    Seed paper 001, text below eq. 10. doi:10.1115/1.4045900
+    """
+    return 1.0 / compliance_sum(a, b, lambda m: (2.0 - m.poissons_ratio) / (4.0 * m.shear_modulus))

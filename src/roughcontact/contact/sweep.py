@@ -20,7 +20,9 @@ def load_path(
     approaches: Iterable[float] | None = None,
     counter_body: Material | None = None,
     boundary: str | None = None,
-    **options,
+    hardness: float | None = None,
+    tolerance: float = 1e-8,
+    max_iterations: int = 10_000,
 ) -> Iterator[NormalContactResult]:
     """Yield the normal contact at each load of a path, reusing one operator and warm-starting.
 
@@ -30,8 +32,8 @@ def load_path(
         As in :func:`roughcontact.contact.solve_normal`.
     mean_pressures, forces, approaches : iterable of float
         Exactly one: the loads [Pa], [N] or approaches [m] of the path, in order.
-    **options
-        Passed to :func:`~roughcontact.contact.solve_normal` (``tolerance``, ``hardness``, ...).
+    hardness, tolerance, max_iterations
+        As in :func:`~roughcontact.contact.solve_normal`.
 
     Yields
     ------
@@ -51,6 +53,12 @@ def load_path(
     previous = None
     for value in values:
         previous = solve_normal(
-            topography, compliance=compliance, initial=previous, **{name: value}, **options
+            topography,
+            compliance=compliance,
+            initial=previous,
+            hardness=hardness,
+            tolerance=tolerance,
+            max_iterations=max_iterations,
+            **{name: value},
         )
         yield previous

@@ -55,10 +55,12 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from .._deprecation import folded
 from ..errors import InputError
 from ..materials import Material, check_material, contact_modulus
 from . import _programme
 from .result import NormalContactResult
+from .shear_solver import DEFAULT, SOLVER_KEYWORDS, ShearSolver, folded_solver
 from .tangential_result import TangentialPathResult
 
 NORMAL_LOADINGS = ("auto", "frictional", "frictionless")
@@ -97,6 +99,7 @@ def _check_inputs(normal, material, counter_body):
         raise InputError("normal", "tangential contact needs a 2D map.", "pass a 2D topography.")
 
 
+@folded("solver", SOLVER_KEYWORDS, folded_solver)
 def solve_tangential(
     normal: NormalContactResult,
     material: Material,
@@ -106,14 +109,8 @@ def solve_tangential(
     force=None,
     counter_body: Material | None = None,
     coupling: bool = True,
-    tolerance: float = 1e-8,
-    coupling_tolerance: float = 1e-6,
-    max_iterations: int = 10_000,
-    max_coupling_iterations: int = 50,
+    solver: ShearSolver = DEFAULT,
     fields_at: str | Sequence[int] = "all",
-    precondition: bool | str = "auto",
-    workers: int | None = None,
-    method: str = "auto",
     normal_loading: str = "auto",
     loading_steps: int = 10,
     max_stick_change: float | None = None,
@@ -139,37 +136,11 @@ def solve_tangential(
     coupling : bool
         Iterate the normal-tangential coupling of dissimilar materials (default; see the module
         docstring). False gives the uncoupled (Goodman) solution.
-    tolerance : float
-        Scale-free residual of each tangential increment (and of the coupled normal solves).
-    coupling_tolerance : float
-        Relative change of p and q between coupling passes that ends a step.
-    max_iterations, max_coupling_iterations : int
-        Limits; beyond them :class:`~roughcontact.errors.ConvergenceError` is raised.
+    solver : ShearSolver
+        Numerics of the increments: tolerance, limits, preconditioning, the increment method,
+        FFT threads (:class:`~roughcontact.contact.shear_solver.ShearSolver`).
     fields_at : {"all", "last", "none"} or sequence of int
         Steps whose full fields are kept in ``states`` (per-step scalars are always kept).
-    precondition : {"auto", True, False}
-        True builds the conjugate directions from the Fourier-inverse preconditioned gradient
-        (two more FFT pairs per iteration); False gives the plain projected conjugate
-        gradients. "auto" (default) runs the plain method with at most
-        ``PLAIN_ITERATIONS`` iterations and, if it has not converged, solves the increment
-        again preconditioned. Measured: on a rough ball (sparse contact) the plain method is
-        3-8x faster; near full sliding on a smooth sphere it can stall where the
-        preconditioned one converges. Applies to ``method="cg"``; ``method="apg"`` takes
-        "auto" or False and refuses True.
-    workers : int, optional
-        FFT threads.
-    method : {"auto", "cg", "apg"}
-        Increment solver; both solve the same programme to the same residual. "cg":
-        Polonsky-Keer's projected conjugate gradients on the discs
-        (:mod:`~roughcontact.contact._shear_cg`). "apg": accelerated projected gradients with
-        constant momentum and adaptive restart (:mod:`~roughcontact.contact._shear_apg`), one
-        operator application per iteration and a rate that does not depend on the slip
-        directions staying fixed. "auto" (default): "apg" when a body has nu > 0 (the Cerruti
-        kernel couples x and y, B = sum nu_i/G_i > 0, and slipping points turn), else "cg" (and
-        "cg" whenever ``precondition=True``). Measured (``benchmarks/tangential_apg.py``): for
-        nu = 0.5 apg is 48-146x faster on a rough ball and a smooth sphere at 128^2 and 7-13x on
-        paper 001's balls; for nu = 0 cg is 2-4x faster.
-
     normal_loading : {"auto", "frictional", "frictionless"}
         How F_0 was applied (module docstring): "auto" (default) is "frictional" for a coupled
         pair (beta != 0 and ``coupling``), else "frictionless" (Goodman's start).
@@ -208,13 +179,7 @@ def solve_tangential(
         boundary=normal.boundary,
         friction_coefficient=friction_coefficient,
         coupling=coupling,
-        tolerance=tolerance,
-        coupling_tolerance=coupling_tolerance,
-        max_iterations=max_iterations,
-        max_coupling_iterations=max_coupling_iterations,
-        precondition=precondition,
-        method=method,
-        workers=workers,
+        solver=solver,
     )
     loading_mode = _loading_mode(normal_loading, stepper.coupled)
     constant = np.full(len(path), normal.force)

@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from .._deprecation import renamed
 from ..asperity.greenwood_williamson import gaussian_summits
 from ..asperity.load_unload import StatisticalLoadUnload, statistical_load_unload
 from ..asperity.parameters import AsperityParameters, asperity_parameters
@@ -86,7 +87,7 @@ def load_unload_keys() -> dict[str, Any]:
         "material": MATERIAL,
         "substrate": SUBSTRATE,
         "film_thickness": written(FILM_THICKNESS, "m"),
-        "peak_force": written(PEAK_FORCE, "N"),
+        "max_force": written(PEAK_FORCE, "N"),
         "reference_force": written(REFERENCE_FORCE, "N"),
     }
 
@@ -281,11 +282,12 @@ IslandVolumeCompression = LoadUnloadResult
 """The same result with volume plasticity (release 0.1 had two classes)."""
 
 
+@renamed(peak_force="max_force")
 def compress_island(
     topography: Topography,
     material: Material,
     *,
-    peak_force: float = PEAK_FORCE,
+    max_force: float = PEAK_FORCE,
     substrate: Material | None = None,
     film_thickness: float = FILM_THICKNESS,
     hardness: float | None = None,
@@ -299,7 +301,7 @@ def compress_island(
     depth: float | None = None,
     layers: int = 16,
 ) -> LoadUnloadResult:
-    """Load paper 002's island to ``peak_force`` with a rigid flat punch and unload it (Figs. 7-9).
+    """Load paper 002's island to ``max_force`` with a rigid flat punch and unload it (Figs. 7-9).
 
     Paper 002's scenario on :func:`roughcontact.contact.load_unload.load_unload`: force control at
     the paper's loads (0, 100, ..., 1000 uN and 25 uN, unloading back through them), interference zero at
@@ -312,7 +314,7 @@ def compress_island(
         Non-periodic heights [m] towards the punch (:func:`paper002_island` or a measured scan).
     material : Material
         The film (``get_material("SU-8")``); its hardness caps the pressure unless ``hardness``.
-    peak_force, reference_force : float
+    max_force, reference_force : float
         [N] (1000 uN and 25 uN).
     substrate : Material, optional
         The substrate (``get_material("silicon wafer")``); default: the film is a half-space.
@@ -322,7 +324,7 @@ def compress_island(
         Pressure cap [Pa] of the surface model.
     loading_forces, unloading_forces : array_like, optional
         Target loads [N]; default the paper's and back down. The loading list must end at
-        ``peak_force``.
+        ``max_force``.
     tolerance : float
         Of the contact solves.
     plasticity : {"surface", "volume"}
@@ -334,11 +336,11 @@ def compress_island(
     LoadUnloadResult
     """
     if loading_forces is None:
-        loading = force_targets(peak_force, 10, reference_force)
+        loading = force_targets(max_force, 10, reference_force)
     else:
         loading = np.asarray(loading_forces, dtype=float)
-    if loading[-1] != peak_force:
-        raise InputError("loading_forces", "must rise strictly to peak_force.", "e.g. [0, 25e-6, ..., 1e-3].")
+    if loading[-1] != max_force:
+        raise InputError("loading_forces", "must rise strictly to max_force.", "e.g. [0, 25e-6, ..., 1e-3].")
     if plasticity == "volume":
         model = VolumePlasticity(yield_strength, hardening_modulus, depth, layers)
     elif plasticity == "surface":

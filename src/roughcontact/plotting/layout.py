@@ -54,15 +54,15 @@ class ColourScale:
         return prefixed_scale(max(abs(self.low), abs(self.high)) or 1.0, unit)
 
 
-def shared_colorbar(image, axes, label: str, unit: str, scale: ColourScale, **options) -> None:
+def shared_colorbar(image, axes, label: str, unit: str, scale: ColourScale, *, shrink: float = 1.0) -> None:
     """Draw one colour bar for ``axes`` drawn with ``scale``: label, prefixed unit, what the ends clip.
 
-    ``options`` go to :meth:`matplotlib.figure.Figure.colorbar` (``shrink``, say).
+    ``shrink`` scales the bar's length (:meth:`matplotlib.figure.Figure.colorbar`).
     """
     shown = scale.prefixed(unit)[1]
     text = f"{label} ({shown})" if shown else label
     text += f"\n{scale.words}" if scale.words else ""
-    image.figure.colorbar(image, ax=axes, extend=scale.extend, label=text, **options)
+    image.figure.colorbar(image, ax=axes, extend=scale.extend, label=text, shrink=shrink)
 
 
 def clipped_limits(
@@ -115,16 +115,25 @@ def clip_words(percentiles: tuple[float, float]) -> str:
     return "full range" if (low, high) == (0, 100) else f"colours clipped to {low:g}-{high:g} percentile"
 
 
-def legend(ax: Axes, **options) -> None:
+def legend(
+    ax: Axes,
+    *,
+    fontsize: str | float | None = None,
+    loc: str = "best",
+    ncol: int = 1,
+    bbox_to_anchor: tuple[float, float] | None = None,
+) -> None:
     """Add a legend of what the axes show: labelled lines with at least one drawable point.
 
     A line whose points are all NaN (a quantity undefined for every case), or all non-positive
-    on a logarithmic axis, draws nothing and gets no entry; with no entry left, no legend.
-    ``options`` go to :meth:`matplotlib.axes.Axes.legend`.
+    on a logarithmic axis, draws nothing and gets no entry; with no entry left, no legend. The
+    keywords are :meth:`matplotlib.axes.Axes.legend`'s.
     """
     kept = [(h, label) for h, label in zip(*ax.get_legend_handles_labels(), strict=True) if _drawn(ax, h)]
     if kept:
-        ax.legend(*zip(*kept, strict=True), **options)
+        ax.legend(
+            *zip(*kept, strict=True), fontsize=fontsize, loc=loc, ncol=ncol, bbox_to_anchor=bbox_to_anchor
+        )
 
 
 def _drawn(ax: Axes, handle) -> bool:

@@ -9,7 +9,7 @@ r"""Studies: one TOML file describes a whole investigation; one command runs it,
 :mod:`~roughcontact.study.config` reads and validates the file and expands the sweeps into cases;
 :mod:`~roughcontact.study.answers` is the one entry point that runs them (in memory, or through
 :mod:`~roughcontact.study.run`, which stores each as it finishes) and renders the answer as text
-or JSON (:mod:`~roughcontact.study.display`);
+(numbers through :mod:`~roughcontact.study.display`) or JSON;
 :mod:`~roughcontact.study.outputs` and :mod:`~roughcontact.study.report` turn the stored records
 into the results table, figures and the HTML report; :mod:`~roughcontact.study.kinds` holds one
 module per model a study can name.

@@ -27,9 +27,9 @@ from typing import Any
 
 from ..errors import InputError
 from .config import Study
-from .display import analysis_document, summary_lines, table_lines
+from .display import columns, shown, text_table
 from .kind import CaseRecord
-from .outputs import StoredAnalysis, in_memory, produce, read_study, warning_lines
+from .outputs import StoredAnalysis, headline_rows, in_memory, produce, read_study, warning_lines
 from .run import RunSummary, case_progress, execute, make_task, run_study
 
 
@@ -194,3 +194,52 @@ def reusable(folder: str | Path, study: Study, *, replace: bool = False) -> bool
         )
     shutil.rmtree(folder)
     return False
+
+
+def analysis_document(analysis, tables) -> dict[str, Any]:
+    """Return an analysis as JSON-ready data: its cases' parameters, scalars and warnings, its tables."""
+    return {
+        "name": analysis.name,
+        "model": analysis.kind.name,
+        "units": dict(analysis.kind.units),
+        "cases": [
+            {
+                "case": record["case"],
+                "status": record["status"],
+                "axes": record.data.get("axes") or {},
+                "parameters": record.parameters,
+                "scalars": record.scalars,
+                "warnings": record.data.get("warnings") or [],
+            }
+            for record in analysis.records
+            if record is not None
+        ],
+        "tables": {name: rows for a, name, rows in tables if a == analysis.name},
+    }
+
+
+def summary_lines(analysis, kind) -> list[str]:
+    """Return an analysis' finished cases as lines: every scalar of one, or a table of the headline ones.
+
+    Numbers in engineering units (:mod:`roughcontact.study.display`): beside the value for one
+    case, in the column header for several.
+    """
+    records = [r for r in analysis.records if r is not None]
+    units = dict(kind.units)
+    lines = [f"{analysis.name} ({kind.name}): {kind.summary}"]
+    if len(records) == 1:
+        width = max(len(name) for name in records[0].scalars) if records[0].scalars else 0
+        lines += [
+            f"  {name:<{width}}  {shown(value, units.get(name))}"
+            for name, value in records[0].scalars.items()
+        ]
+        return lines
+    rows = headline_rows(analysis)
+    if len({row["status"] for row in rows}) == 1:
+        rows = [{k: v for k, v in row.items() if k != "status"} for row in rows]
+    return lines + table_lines(rows, indent="  ")
+
+
+def table_lines(rows: list[dict[str, Any]], indent: str = "") -> list[str]:
+    """Rows as aligned text columns in engineering units (:func:`roughcontact.study.display.columns`)."""
+    return text_table(*columns(rows), indent=indent) if rows else []

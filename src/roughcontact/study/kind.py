@@ -198,11 +198,7 @@ class figure:  # noqa: N801 - used like a function in the kinds' tables of figur
     """
 
     name: str
-    inputs: Mapping[str, Callable[[Sequence[CaseRecord], FigureContext], Any]]
-
-    def __init__(self, name: str, **inputs: Callable[[Sequence[CaseRecord], FigureContext], Any]):
-        object.__setattr__(self, "name", name)
-        object.__setattr__(self, "inputs", inputs)
+    inputs: Mapping[str, Callable[[Sequence[CaseRecord], FigureContext], Any]] = field(default_factory=dict)
 
     @property
     def draws(self) -> Callable[..., Any]:

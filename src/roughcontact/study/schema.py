@@ -234,7 +234,7 @@ class _Generated(Strict):
 
         options = self.model_dump(exclude={"generate", "shape", "size", "ra"})
         try:
-            check_arguments(self.generate, self.shape, self.size, **options)
+            check_arguments(self.generate, self.shape, self.size, options)
             if getattr(self, "ra", None) is not None:
                 positive(self.ra, "ra", example="'5 nm'")
         except InputError as error:

@@ -28,7 +28,8 @@ adhesion. J. Phys.: Condens. Matter 17, R1. doi:10.1088/0953-8984/17/1/R01
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
+from typing import Any
 
 import numpy as np
 from scipy import fft
@@ -793,13 +794,13 @@ def sphere_with_roughness(
     return Topography(body.heights + roughness.heights, body.size, periodic=False, info=info)
 
 
-def check_arguments(generator: str, shape, size, **options) -> None:
+def check_arguments(generator: str, shape, size, options: Mapping[str, Any]) -> None:
     """Run the checks the generator ``generator`` runs on its arguments, without generating anything.
 
     What a study file's validation calls for every generated topography of every case, so that
     ``roughcontact validate`` refuses what the run would (a Hurst exponent outside (0, 1], a
     sphere smaller than its grid, crossed cutoffs, ...). ``seed`` and options a generator does
-    not check are ignored.
+    not check are ignored; ``options`` are the generator's other keyword arguments.
 
     Raises
     ------

@@ -495,22 +495,22 @@ def mccool_parameters(*, m0: float, m2: float, m4: float) -> McCoolParameters:
     )
 
 
-def mccool_parameters_of(topography: Topography, **kwargs) -> McCoolParameters:
+def mccool_parameters_of(topography: Topography, *, derivative: str = "forward") -> McCoolParameters:
     """McCool parameters of a surface: :func:`spectral_moments` then :func:`mccool_parameters`.
 
     Parameters
     ----------
     topography : Topography
         Surface (heights [m]).
-    **kwargs
-        Passed to :func:`spectral_moments` (``derivative=``).
+    derivative : str
+        Finite difference of the slopes and curvatures, as in :func:`spectral_moments`.
 
     Raises
     ------
     InputError
         (field ``topography``) for a flat surface or one whose moments give alpha < 0.8968.
     """
-    moments = spectral_moments(topography, **kwargs)
+    moments = spectral_moments(topography, derivative=derivative)
     try:
         return mccool_parameters(m0=moments.m0, m2=moments.m2, m4=moments.m4)
     except InputError as error:

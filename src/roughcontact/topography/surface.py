@@ -29,6 +29,9 @@ import numpy as np
 from ..checks import no_string
 from ..errors import InputError
 
+KEEP = object()
+"""Default of :meth:`Topography.with_heights`' masks: keep the present ones (None removes them)."""
+
 
 def _frozen_mapping(info: Mapping[str, Any] | None) -> Mapping[str, Any]:
     return MappingProxyType(dict(info or {}))
@@ -169,28 +172,45 @@ class Topography:
         return tuple(np.meshgrid(*self.coordinates(), indexing="ij"))
 
     # --- derived surfaces -----------------------------------------------------------------------
-    def with_heights(self, heights: np.ndarray, *, step: str | None = None, **changes) -> Topography:
-        """Return a new topography with other heights on the same grid.
+    def with_heights(
+        self,
+        heights: np.ndarray,
+        *,
+        step: str | None = None,
+        size: float | tuple[float, ...] | None = None,
+        periodic: bool | None = None,
+        info: Mapping[str, Any] | None = None,
+        filled: np.ndarray | None | object = KEEP,
+        specks: np.ndarray | None | object = KEEP,
+    ) -> Topography:
+        """Return a new topography with other heights (on the same grid unless ``size``).
 
         Parameters
         ----------
         heights : ndarray
-            New heights [m], same shape as ``self.heights``.
+            New heights [m], same shape as ``self.heights`` unless a new ``size`` comes with them.
         step : str, optional
             Processing step appended to ``info['history']``.
-        **changes
-            Other fields to replace (``size``, ``periodic``, ``info``).
+        size, periodic, info : optional
+            Replacements of these fields (None: kept).
+        filled, specks : ndarray of bool or None, optional
+            Replacements of the masks (None: no mask; default :data:`KEEP`, the present ones).
         """
         heights = np.asarray(heights, dtype=float)
-        if "size" not in changes and heights.shape != self.shape:
+        if size is None and heights.shape != self.shape:
             raise InputError(
                 "heights",
                 f"shape {heights.shape} does not match the grid {self.shape}.",
                 "pass a new size together with a new grid.",
             )
-        info = dict(changes.pop("info", self.info))
+        info = dict(self.info if info is None else info)
         if step:
             info["history"] = (*info.get("history", ()), step)
+        changes: dict[str, Any] = {
+            name: value for name, value in (("size", size), ("periodic", periodic)) if value is not None
+        }
+        masks = {"filled": filled, "specks": specks}
+        changes |= {name: value for name, value in masks.items() if value is not KEEP}
         return replace(self, heights=heights, info=info, **changes)
 
     def __repr__(self) -> str:

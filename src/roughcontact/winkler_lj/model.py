@@ -4,8 +4,8 @@ The two rough surfaces are merged into one composite surface z_i (paper 000, Fig
 :func:`roughcontact.topography.process.combine`) that faces a rigid flat at distance d from its
 base. Each pixel is a spring (a cuboid of top area S = pixel area and height h, the Winkler layer):
 
-* eq. 1: composite modulus E (:func:`roughcontact.materials.composite_modulus`);
-* eqs. 3-4: spring stress P = E / (k h) dz, k from :func:`roughcontact.materials.winkler_factor`;
+* eq. 1: composite modulus E (:func:`roughcontact.winkler_lj.springs.composite_modulus`);
+* eqs. 3-4: spring stress P = E / (k h) dz, k from :func:`roughcontact.winkler_lj.springs.winkler_factor`;
 * eqs. 5-7: attractive stress f(l) of the n = 2, m = 8 Lennard-Jones law
   (:mod:`roughcontact.contact.lennard_jones`), with dgamma from the surface energies;
 * eq. 2: force balance sum P_i S - sum f(l_i) S = N for the separation d (default reading),
@@ -47,13 +47,21 @@ from .._deprecation import renamed
 from ..checks import positive
 from ..contact import lennard_jones as lj
 from ..errors import InputError
-from ..materials import Material, check_material, composite_modulus, winkler_factor
+from ..materials import Material, check_material
 from ..topography import Topography
 from ..topography.process import combine
-from .bem import GAP_MODELS, bem_state_at_load
+from .bem import BEM_LOAD_RTOL, GAP_MODELS, bem_state_at_load
 from .readings import Readings
 from .results import FrictionSweep, WinklerLJResult, WinklerNormalCurve
+from .springs import composite_modulus, winkler_factor
 from .viscoelastic import material_after_hold
+
+BALANCE_RTOL = 1e-9
+"""Largest force-balance residual of eq. 2 (relative to its largest term) of a converged solve.
+
+Brent's method brackets the apex overlap to a few ulps of the layer thickness, which leaves a
+residual near round-off (~1e-15); above this the solve did not converge.
+"""
 
 
 def surface_energy_of(value: float | None, body: Material | None, field_name: str) -> float:
@@ -252,8 +260,12 @@ class WinklerLJModel:
         """Largest load the layer carries: the highest spring compressed by the whole layer thickness [N]."""
         return self.net_normal_force(self.layer_thickness)
 
-    def _solve_approach(self, load: float) -> float:
+    def _solve_approach(self, load: float) -> tuple[float, int]:
+        """Return the apex overlap that balances ``load`` (eq. 2) and the evaluations of eq. 2 it took."""
+        evaluations = [0]
+
         def residual(approach: float) -> float:
+            evaluations[0] += 1
             return self.net_normal_force(approach) - load
 
         high = self.layer_thickness
@@ -269,7 +281,8 @@ class WinklerLJModel:
         rtol = 4.0 * np.finfo(float).eps
         bracket = self._local_bracket(residual, load)
         if bracket is not None:
-            return optimize.brentq(residual, *bracket, xtol=tolerance, rtol=rtol, maxiter=500)
+            root = optimize.brentq(residual, *bracket, xtol=tolerance, rtol=rtol, maxiter=500)
+            return root, evaluations[0]
         low = 0.0
         step = self.epsilon
         reach = 100.0 * max(self.topography.size)
@@ -282,7 +295,8 @@ class WinklerLJModel:
                     "(100 scan sizes) away: the surface never reaches the flat.",
                     "use adhesion_sign='attractive' (adhesion adds to the load) or a larger load.",
                 )
-        return optimize.brentq(residual, low, high, xtol=tolerance, rtol=rtol, maxiter=500)
+        root = optimize.brentq(residual, low, high, xtol=tolerance, rtol=rtol, maxiter=500)
+        return root, evaluations[0]
 
     def _overlap_for(self, force: float) -> float:
         """Apex overlap at which the springs alone carry ``force`` (inverse of the piecewise-linear sum)."""
@@ -364,7 +378,7 @@ class WinklerLJModel:
             )
         if self.gap_model == "bem":
             return self._solve_bem(load)
-        approach = self._solve_approach(load)
+        approach, evaluations = self._solve_approach(load)
         count, within = self._split(approach)  # sorted order: [0, count) mechanical, [count, within) adhesive
         n, depth = self._depth.size, self._depth
         stiffness, eps, gamma = self.spring_stiffness, self.epsilon, self.work_of_adhesion
@@ -449,6 +463,8 @@ class WinklerLJModel:
             adhesive_friction=adhesive_friction,
             mechanical_friction=mechanical_friction,
             residual=abs(balance) / scale,
+            iterations=evaluations,
+            tolerance=BALANCE_RTOL,
             max_strain=float(compression.max(initial=0.0) / self.layer_thickness),
             negative_energy_springs=negative,
             pulled_in_springs=pulled_in,
@@ -680,6 +696,8 @@ class WinklerLJModel:
             adhesive_friction=adhesive_friction,
             mechanical_friction=mechanical_friction,
             residual=abs(float(bem.force[-1]) - load) / load,
+            iterations=int(np.sum(bem.iterations)),
+            tolerance=BEM_LOAD_RTOL,
             max_strain=float(compression.max(initial=0.0) / stiffness / self.layer_thickness),
             negative_energy_springs=negative,
             pulled_in_springs=int(np.count_nonzero(adhesive & (distance <= eps))),
@@ -854,9 +872,23 @@ def solve_winkler_lj(
     counter_body: Material | None = None,
     *,
     normal_force: float,
-    **options,
+    layer_thickness: float,
+    counter_topography: Topography | None = None,
+    epsilon: float = 2e-9,
+    surface_energy: float | None = None,
+    counter_surface_energy: float | None = None,
+    readings: Readings | None = None,
+    resample: bool = False,
+    relaxation: Callable[[float], float] | None = None,
+    hold_time: float = 0.0,
+    tip_radius: float | None = None,
+    gap_model: str = "winkler",
+    bem_boundary: str = "free",
 ) -> WinklerLJResult:
-    """Friction of a surface against a flat at one normal load (paper 000); see :func:`winkler_lj_model`.
+    """Friction of a surface against a flat at one normal load (paper 000).
+
+    ``winkler_lj_model(...).solve(normal_force)``: the model's parameters are those of
+    :func:`winkler_lj_model`, which documents them.
 
     Parameters
     ----------
@@ -866,11 +898,29 @@ def solve_winkler_lj(
         The two bodies (``counter_body=None``: rigid flat).
     normal_force : float
         Normal load N [N], > 0.
-    **options
-        Keyword arguments of :func:`winkler_lj_model` (``layer_thickness`` is required).
+    layer_thickness, counter_topography, epsilon, surface_energy, counter_surface_energy, readings,
+    resample, relaxation, hold_time, tip_radius, gap_model, bem_boundary
+        As in :func:`winkler_lj_model`.
 
     Returns
     -------
     WinklerLJResult
     """
-    return winkler_lj_model(topography, material, counter_body, **options).solve(normal_force)
+    model = winkler_lj_model(
+        topography,
+        material,
+        counter_body,
+        layer_thickness=layer_thickness,
+        counter_topography=counter_topography,
+        epsilon=epsilon,
+        surface_energy=surface_energy,
+        counter_surface_energy=counter_surface_energy,
+        readings=readings,
+        resample=resample,
+        relaxation=relaxation,
+        hold_time=hold_time,
+        tip_radius=tip_radius,
+        gap_model=gap_model,
+        bem_boundary=bem_boundary,
+    )
+    return model.solve(normal_force)

@@ -69,7 +69,7 @@ class Readings:
         load, sum P - sum F = N. ``"printed"``: eq. 2 as printed, sum P + sum F = N (adhesion
         carrying load, which follows only if eq. 5 is read with the opposite sign).
     winkler_factor : {"uniaxial_strain", "paper000_eq4_printed"}
-        Denominator of eq. 4, see :func:`roughcontact.materials.winkler_factor`.
+        Denominator of eq. 4, see :func:`roughcontact.winkler_lj.springs.winkler_factor`.
     work_of_adhesion : {"girifalco_good", "printed"}
         dgamma = 2 sqrt(gamma1 gamma2) (Girifalco-Good / Berthelot: 2 gamma for identical
         surfaces) or sqrt(gamma1 gamma2) as printed below eq. 7.

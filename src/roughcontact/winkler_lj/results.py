@@ -50,7 +50,13 @@ class WinklerLJResult:
         (their sum) and ``mu`` (friction / normal_force, the coefficient of friction the model
         gives) are properties.
     residual : float
-        Force-balance residual of eq. 2 at ``separation``, relative to the largest term.
+        Force-balance residual of eq. 2 at ``separation``, relative to the largest term (with
+        ``gap_model="bem"``: the boundary-element load's relative error).
+    iterations : int
+        Evaluations of eq. 2 the root find took (with ``gap_model="bem"``: the boundary-element
+        solver's iterations over its programme).
+    tolerance : float
+        The residual a converged solve stays within (:attr:`converged`).
     max_strain : float
         Largest compression of a spring relative to the layer thickness.
     negative_energy_springs : int
@@ -95,6 +101,8 @@ class WinklerLJResult:
     topography: Topography = field(repr=False)
     gap_model: str = "winkler"
     bem: Any = field(default=None, repr=False)
+    iterations: int = 0
+    tolerance: float = 1e-9
 
     UNITS: ClassVar[dict[str, str]] = {
         "normal_force": "N",
@@ -118,6 +126,11 @@ class WinklerLJResult:
     def mu(self) -> float:
         """The coefficient of friction, friction / normal_force."""
         return self.friction / self.normal_force
+
+    @property
+    def converged(self) -> bool:
+        """True when the residual is within the solve's tolerance (a failed root find raises instead)."""
+        return bool(self.residual <= self.tolerance)
 
     def scalars(self) -> dict[str, float]:
         """Return the scalar results as a flat dictionary (SI; units in :attr:`UNITS`).
@@ -208,21 +221,45 @@ class FrictionSweep:
     adhesive_springs: np.ndarray
     bonded_springs: np.ndarray
 
+    UNITS: ClassVar[dict[str, str]] = {
+        "normal_force_min": "N",
+        "normal_force_max": "N",
+        "friction_min": "N",
+        "friction_max": "N",
+    }
+    """SI units of the dimensional scalars."""
+
+    _CURVE_UNITS: ClassVar[dict[str, str]] = {
+        "friction": "N",
+        "adhesive_friction": "N",
+        "mechanical_friction": "N",
+        "mu": "",
+        "separation": "m",
+        "mechanical_springs": "",
+        "adhesive_springs": "",
+        "bonded_springs": "",
+    }
+
+    def scalars(self) -> dict[str, float | int]:
+        """Return the sweep's span: its points, the range of the loads, of friction and of mu."""
+        return {
+            "points": int(self.normal_force.size),
+            "normal_force_min": float(np.min(self.normal_force)),
+            "normal_force_max": float(np.max(self.normal_force)),
+            "friction_min": float(np.min(self.friction)),
+            "friction_max": float(np.max(self.friction)),
+            "mu_min": float(np.min(self.mu)),
+            "mu_max": float(np.max(self.mu)),
+        }
+
     def to_xarray(self):
         """Return an ``xarray.Dataset`` indexed by ``normal_force`` [N]."""
         import xarray as xr
 
-        units = {
-            "friction": "N",
-            "adhesive_friction": "N",
-            "mechanical_friction": "N",
-            "mu": "",
-            "separation": "m",
-            "mechanical_springs": "",
-            "adhesive_springs": "",
-            "bonded_springs": "",
+        data = {
+            name: ("normal_force", getattr(self, name), {"units": unit})
+            for name, unit in self._CURVE_UNITS.items()
         }
-        data = {name: ("normal_force", getattr(self, name), {"units": unit}) for name, unit in units.items()}
         return xr.Dataset(data, coords={"normal_force": ("normal_force", self.normal_force, {"units": "N"})})
 
 

@@ -58,8 +58,9 @@ from typing import ClassVar
 
 import numpy as np
 
+from ...checks import poissons_ratio_checked, positive
 from ...errors import InputError
-from ...materials import Material, contact_modulus, get_material, reduced_modulus_to_youngs
+from ...materials import Material, contact_modulus, get_material
 from .curve import IndentationCurve, Segments, detect_segments
 from .fits import MIN_FIT_POINTS, CreepFit, UnloadingFit, fit_creep, fit_unloading, unloading_rate
 
@@ -465,3 +466,46 @@ def oliver_pharr(
             "indenter_poissons_ratio": indenter.poissons_ratio,
         },
     )
+
+
+def reduced_modulus_to_youngs(reduced_modulus: float, indenter: Material, poissons_ratio: float) -> float:
+    r"""Young's modulus of an indented sample from its reduced modulus (Oliver-Pharr) [Pa].
+
+    .. math:: \frac{1 - \nu_s^2}{E_s} = \frac{1}{E_r} - \frac{1 - \nu_i^2}{E_i}
+
+    Parameters
+    ----------
+    reduced_modulus : float
+        Measured reduced modulus E_r [Pa].
+    indenter : Material
+        Indenter tip, e.g. ``get_material("diamond berkovich")`` (1141 GPa, 0.07).
+    poissons_ratio : float
+        Poisson's ratio of the sample nu_s [-] (paper 001 takes 0.5 for the polymers).
+
+    Returns
+    -------
+    float
+        Sample Young's modulus E_s [Pa].
+
+    Raises
+    ------
+    InputError
+        A non-positive reduced modulus, an invalid Poisson's ratio, or a reduced modulus not
+        below the indenter's own E_i / (1 - nu_i^2) (the sample would need a negative compliance).
+
+    References
+    ----------
+    W. C. Oliver and G. M. Pharr, J. Mater. Res. 7 (1992) 1564-1583. doi:10.1557/JMR.1992.1564.
+    Seed paper 001, eq. 8. doi:10.1115/1.4045900
+    """
+    positive(reduced_modulus, "reduced_modulus", example="3e9", unit="Pa")
+    poissons_ratio_checked(poissons_ratio)
+    sample_compliance = 1.0 / reduced_modulus - 1.0 / contact_modulus(indenter)  # (1 - nu_i^2) / E_i
+    if sample_compliance <= 0:
+        raise InputError(
+            "reduced_modulus",
+            f"{reduced_modulus:.4g} Pa is not below the indenter's own modulus "
+            f"E_i/(1-nu_i^2) = {contact_modulus(indenter):.4g} Pa.",
+            "check the units of the reduced modulus and the indenter properties.",
+        )
+    return (1.0 - poissons_ratio**2) / sample_compliance

@@ -30,19 +30,21 @@ from collections.abc import Callable
 import numpy as np
 from scipy import optimize
 
+from ..._deprecation import renamed
 from ...errors import InputError
 from ...materials import Material, get_material
 from .curve import IndentationCurve
 from .oliver_pharr import EPSILON_BERKOVICH, berkovich_area
 
 
+@renamed(max_load="max_force")
 def synthetic_indentation_curve(
     youngs_modulus: float,
     *,
     poissons_ratio: float = 0.5,
     indenter: Material | str = "diamond berkovich",
     hardness: float = 60e6,
-    max_load: float = 10e-3,
+    max_force: float = 10e-3,
     loading_rate: float = 20e-3 / 60.0,
     unloading_rate: float | None = None,
     hold_time: float = 60.0,
@@ -58,7 +60,7 @@ def synthetic_indentation_curve(
 ) -> IndentationCurve:
     """Make a load-hold-unload curve whose Oliver-Pharr modulus with the viscous correction is known.
 
-    * Loading at ``loading_rate``: F = C d^2 (a self-similar pyramid) up to ``max_load``.
+    * Loading at ``loading_rate``: F = C d^2 (a self-similar pyramid) up to ``max_force``.
     * Hold of ``hold_time`` at F_max: creep d = d_0 + a tau^(1/3), the hold law of Feng and Ngan
       (2002) with k = 0, with a chosen so that the rate at the end of the hold is ``creep_rate``.
     * Unloading at ``unloading_rate`` (default: the loading rate): the elastic part follows
@@ -77,7 +79,7 @@ def synthetic_indentation_curve(
         As in :func:`oliver_pharr` (eq. 8 and eqs. 6-7 run backwards).
     hardness : float
         Mean contact pressure F_max / A_c [Pa] (sets the depth; 60 MPa is HDPE-like).
-    max_load : float
+    max_force : float
         F_max [N].
     loading_rate, unloading_rate : float
         |dF/dt| [N/s] (paper 001: 20 mN/min).
@@ -111,13 +113,13 @@ def synthetic_indentation_curve(
         + (1.0 - indenter.poissons_ratio**2) / indenter.youngs_modulus
     )
     # contact depth from the hardness: solve A_c(d_c) = F_max / H
-    target = max_load / hardness
+    target = max_force / hardness
     d_c = optimize.brentq(lambda x: area_function(x) - target, 1e-12, 1.0)
     s_e = 2.0 * beta / math.sqrt(math.pi) * reduced * math.sqrt(target)  # eq. 6 backwards
-    d_max = d_c + epsilon * max_load / s_e  # eq. 7
+    d_max = d_c + epsilon * max_force / s_e  # eq. 7
     m = unloading_exponent
-    d_f = d_max - m * max_load / s_e  # S_e = m F_max / (d_max - d_f)
-    alpha = max_load / (d_max - d_f) ** m
+    d_f = d_max - m * max_force / s_e  # S_e = m F_max / (d_max - d_f)
+    alpha = max_force / (d_max - d_f) ** m
     # creep law d = d0 + a tau^(1/3): rate a/3 tau^(-2/3) = creep_rate at tau = hold_time
     a = 3.0 * creep_rate * hold_time ** (2.0 / 3.0)
     d_load_end = d_max - a * hold_time ** (1.0 / 3.0)
@@ -128,18 +130,18 @@ def synthetic_indentation_curve(
             "give a smaller creep rate.",
         )
     dt = 1.0 / sampling_rate
-    t_load = max_load / loading_rate
+    t_load = max_force / loading_rate
     t1 = np.arange(0.0, t_load, dt)
     f1 = loading_rate * t1
-    d1 = d_load_end * np.sqrt(f1 / max_load)
+    d1 = d_load_end * np.sqrt(f1 / max_force)
     tau_hold = np.arange(0.0, hold_time, dt)
     t2 = t_load + tau_hold
-    f2 = np.full_like(t2, max_load)
+    f2 = np.full_like(t2, max_force)
     d2 = d_load_end + a * np.cbrt(tau_hold)
-    t_unload = max_load / unloading_rate
+    t_unload = max_force / unloading_rate
     tau_un = np.arange(0.0, t_unload + 0.5 * dt, dt)
     t3 = t_load + hold_time + tau_un
-    f3 = np.clip(max_load - unloading_rate * tau_un, 0.0, None)
+    f3 = np.clip(max_force - unloading_rate * tau_un, 0.0, None)
 
     # creep during unloading: rate a/3 (hold_time + tau)^(-2/3) * F/F_max, integrated exactly
     # (F/F_max = 1 - tau/t_unload is linear in tau)

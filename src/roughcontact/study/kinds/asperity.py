@@ -318,7 +318,7 @@ KIND = Kind(
     run=run,
     units=UNITS,
     figures={
-        "load_interference": figure("asperity.asperity_load_interference_figure", measured=measured_of),
+        "load_interference": figure("asperity.asperity_load_interference_figure", {"measured": measured_of}),
         "contact_area": figure("asperity.asperity_contact_area_figure"),
     },
     tables={"paper002": _paper002_table},

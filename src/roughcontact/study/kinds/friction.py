@@ -587,8 +587,8 @@ KIND = Kind(
     },
     figures={
         "friction_vs_load": figure("friction.friction_vs_load_figure"),
-        "mu_boxes": figure("friction.mu_boxes_figure", comparison=_comparison_or_none),
-        "mu_means": figure("friction.mu_means_figure", comparison=_comparison_or_none),
+        "mu_boxes": figure("friction.mu_boxes_figure", {"comparison": _comparison_or_none}),
+        "mu_means": figure("friction.mu_means_figure", {"comparison": _comparison_or_none}),
     },
     tables={"comparison": _comparison_table, "by_sample": _by_sample},
     compare=FrictionCompare,

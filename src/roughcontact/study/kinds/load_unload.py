@@ -1,7 +1,7 @@
 r"""Study kind ``load_unload``: elastic-perfectly-plastic load-unload of a surface against a rigid flat punch.
 
 One case is :func:`roughcontact.contact.load_unload.load_unload` (seed paper 002, sections III and
-VI, Figs. 7-9): the surface is pressed by a rigid flat to ``peak_force`` and unloaded,
+VI, Figs. 7-9): the surface is pressed by a rigid flat to ``max_force`` and unloaded,
 force-controlled, through the targets
 
 .. math:: W_k = \frac{k}{n} W_{max}, \quad k = 0 \dots n \quad (n = \text{load\_steps}),
@@ -79,7 +79,7 @@ class LoadUnloadParameters(CaseParameters):
         Substrate the film is bonded to (needs ``film_thickness``); default: a half-space.
     film_thickness : float, optional
         Film thickness [m] (paper 002: 6.3 um).
-    peak_force : float
+    max_force : float
         Peak load [N].
     reference_force : float
         Load of zero interference on loading [N] (paper 002: 25 uN; default 0, the first touch).
@@ -116,7 +116,7 @@ class LoadUnloadParameters(CaseParameters):
     material: MaterialName
     substrate: MaterialName | None = None
     film_thickness: Length | None = None
-    peak_force: Force
+    max_force: Force
     reference_force: Force = 0.0
     load_steps: int = Field(default=10, ge=1)
     hardness: Pressure | None = None
@@ -141,15 +141,15 @@ class LoadUnloadParameters(CaseParameters):
 
     @model_validator(mode="after")
     def _consistent(self) -> LoadUnloadParameters:
-        if not self.peak_force > 0:
+        if not self.max_force > 0:
             raise PydanticCustomError(
-                "quantity", "peak_force must be positive", {"fix": "e.g. peak_force = '1000 uN'"}
+                "quantity", "max_force must be positive", {"fix": "e.g. max_force = '1000 uN'"}
             )
-        if not 0 <= self.reference_force < self.peak_force:
+        if not 0 <= self.reference_force < self.max_force:
             raise PydanticCustomError(
                 "quantity",
-                "reference_force must be >= 0 and below peak_force",
-                {"fix": "e.g. reference_force = '25 uN' with peak_force = '1000 uN'"},
+                "reference_force must be >= 0 and below max_force",
+                {"fix": "e.g. reference_force = '25 uN' with max_force = '1000 uN'"},
             )
         if (self.substrate is None) != (self.film_thickness is None):
             raise PydanticCustomError(
@@ -162,7 +162,7 @@ class LoadUnloadParameters(CaseParameters):
         if not self.stress_depth >= 0:
             raise PydanticCustomError("quantity", "stress_depth must be >= 0", {"fix": "e.g. 0 or '0.5 um'"})
         if self.von_mises_loads is not None:
-            loading, _ = load_targets(self.peak_force, self.reference_force, self.load_steps)
+            loading, _ = load_targets(self.max_force, self.reference_force, self.load_steps)
             missing = [f for f in self.von_mises_loads if not np.isclose(loading, f, rtol=1e-9, atol=0).any()]
             if missing:
                 raise PydanticCustomError(
@@ -171,13 +171,13 @@ class LoadUnloadParameters(CaseParameters):
                     {
                         "missing": [float(f"{f * 1e6:.6g}") for f in missing],
                         "targets": [float(f"{f * 1e6:.6g}") for f in loading],
-                        "fix": "choose among the targets (k / load_steps x peak_force, reference_force)",
+                        "fix": "choose among the targets (k / load_steps x max_force, reference_force)",
                     },
                 )
         return self
 
 
-def load_targets(peak_force: float, reference_force: float, steps: int) -> tuple[np.ndarray, np.ndarray]:
+def load_targets(max_force: float, reference_force: float, steps: int) -> tuple[np.ndarray, np.ndarray]:
     """Return the loading targets 0, W/n, ..., W with ``reference_force`` added, and unloading ones [N].
 
     :func:`roughcontact.contact.load_unload.force_targets` and back down (with ``steps = 10``
@@ -185,14 +185,14 @@ def load_targets(peak_force: float, reference_force: float, steps: int) -> tuple
     """
     from ...contact.load_unload import force_targets
 
-    loading = force_targets(peak_force, steps, reference_force)
+    loading = force_targets(max_force, steps, reference_force)
     return loading, loading[::-1][1:]
 
 
 def _map_steps(parameters: LoadUnloadParameters, loading: np.ndarray, unloading: np.ndarray) -> list[int]:
     """Return the indices of the steps (loading, then unloading) whose von Mises maps are stored."""
     if parameters.von_mises_loads is None:
-        regular = np.linspace(0.0, parameters.peak_force, parameters.load_steps + 1)
+        regular = np.linspace(0.0, parameters.max_force, parameters.load_steps + 1)
         wanted = evenly_chosen(list(regular), MAPS_PER_BRANCH)
     else:
         wanted = parameters.von_mises_loads
@@ -227,9 +227,7 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
 
     surface = inputs.topography(parameters.topography)
     material = inputs.material(parameters.material)
-    loading, unloading = load_targets(
-        parameters.peak_force, parameters.reference_force, parameters.load_steps
-    )
+    loading, unloading = load_targets(parameters.max_force, parameters.reference_force, parameters.load_steps)
     if parameters.plasticity == "volume":
         plasticity = VolumePlasticity(
             parameters.yield_strength, parameters.hardening_modulus, parameters.depth, parameters.layers
@@ -327,12 +325,12 @@ KIND = Kind(
     units=LoadUnloadResult.UNITS | {"max_von_mises_at_peak": "Pa"},
     figures={
         "load_interference": figure(
-            "asperity.island_load_interference_figure", statistical=_statistical, measured=measured_of
+            "asperity.island_load_interference_figure", {"statistical": _statistical, "measured": measured_of}
         ),
         "von_mises": figure("asperity.island_von_mises_figure"),
         "von_mises_section": figure("asperity.von_mises_section_figure"),
     },
     compare=MeasuredCurve,
     headline=("peak_interference", "residual_interference", "peak_contact_area", "max_von_mises_at_peak"),
-    renamed={"surface": "topography"},
+    renamed={"surface": "topography", "peak_force": "max_force"},
 )

@@ -430,10 +430,10 @@ KIND = Kind(
     figures={
         "path": figure("presliding.path_figure"),
         "pressure": figure("presliding.pressure_figure"),
-        "loops": figure("presliding.loops_figure", measured=_measured_loop, title=_analysis_name),
+        "loops": figure("presliding.loops_figure", {"measured": _measured_loop, "title": _analysis_name}),
         "stick_slip": figure("presliding.stick_slip_figure"),
         "lateral_stiffness": figure(
-            "presliding.lateral_stiffness_figure", measured=_measured_loop, title=_analysis_name
+            "presliding.lateral_stiffness_figure", {"measured": _measured_loop, "title": _analysis_name}
         ),
     },
     tables={"lateral_stiffness": _lateral_stiffness_table, "measured_loop": _measured_loop_table},
