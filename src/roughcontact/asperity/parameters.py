@@ -6,7 +6,7 @@ from dataclasses import asdict, dataclass
 from typing import ClassVar
 
 from ..errors import InputError
-from ..materials import Material, contact_modulus
+from ..materials import Material, compliance_sum, contact_modulus
 from ..topography.statistics import mccool_parameters
 from . import elastic_plastic as ep
 
@@ -84,6 +84,27 @@ class AsperityParameters:
         )
 
 
+def printed_contact_modulus(a: Material, b: Material | None = None) -> float:
+    r"""E' of paper 002 eq. 7 as printed, with (1 - nu) where Hertz has (1 - nu^2) [Pa].
+
+    .. math:: \frac{1}{E'} = \frac{1 - \nu_1}{E_1} + \frac{1 - \nu_2}{E_2}
+
+    Kept only to trace the printed text (``modulus_form="paper002_eq7_printed"``): it does not
+    reproduce the paper's own numbers. For Table I (SU-8 7.64 GPa / 0.22 against diamond
+    1140 GPa / 0.07) Hertz's E* gives 7.97 GPa, which reproduces the paper's omega_c = 0.0125 um
+    (eq. 6) and psi = 1.86; this form gives 9.72 GPa; the printed value 8.31 GPa matches neither.
+
+    References
+    ----------
+    Seed paper 002, eq. 7 (printed with a typo).
+    """
+    return 1.0 / compliance_sum(a, b, lambda m: (1.0 - m.poissons_ratio) / m.youngs_modulus)
+
+
+MODULUS_FORMS = {"standard": contact_modulus, "paper002_eq7_printed": printed_contact_modulus}
+"""The readings of paper 002's E' (eq. 7): Hertz's E* (standard), or the equation as printed."""
+
+
 def asperity_parameters(
     *,
     m0: float,
@@ -107,7 +128,8 @@ def asperity_parameters(
     hardness : float, optional
         H [Pa] (default ``sample.hardness``).
     modulus_form : {"standard", "paper002_eq7_printed"}
-        Composite modulus, see :func:`roughcontact.materials.contact_modulus`.
+        E' of eq. 7: Hertz's :func:`~roughcontact.materials.contact_modulus` (default), or the
+        equation as printed, :func:`printed_contact_modulus`.
 
     Returns
     -------
@@ -122,7 +144,11 @@ def asperity_parameters(
     if hardness is None:
         raise InputError("hardness", "the sample material has no hardness.", "pass hardness= in Pa.")
     mccool = mccool_parameters(m0=m0, m2=m2, m4=m4)
-    modulus = contact_modulus(sample, counter_body, form=modulus_form)
+    if modulus_form not in MODULUS_FORMS:
+        raise InputError(
+            "modulus_form", f"unknown form {modulus_form!r}.", f"choose one of {sorted(MODULUS_FORMS)}."
+        )
+    modulus = MODULUS_FORMS[modulus_form](sample, counter_body)
     scales = dict(
         hardness=hardness,
         poissons_ratio=sample.poissons_ratio,
