@@ -31,7 +31,7 @@ OUTPUT = Path(__file__).with_name("paper001_indentation_hdpe.csv")
 PARAMETERS = {
     "youngs_modulus": 0.98e9,  # paper 001, Table 2 (HDPE)
     "poissons_ratio": 0.5,  # paper 001, text of eq. 8
-    "max_load": 10e-3,  # 10 mN
+    "max_force": 10e-3,  # 10 mN
     "loading_rate": 20e-3 / 60.0,  # 20 mN/min, loading and unloading
     "hold_time": 60.0,  # s
     "hardness": 60e6,  # assumed (HDPE-like), sets the depth
