@@ -16,7 +16,7 @@ The names of the common jobs, all in SI units (m, Pa, N, J/m^2)::
 * models: :func:`solve_normal`, :func:`solve_tangential`, :func:`solve_frictional`, :func:`load_unload`,
   :func:`solve_adhesive`, :func:`solve_winkler_lj` (paper 000), :func:`statistical_load_unload` (paper 002),
   :func:`presliding` (paper 001), :func:`analyse_loop`, :func:`oliver_pharr`;
-* studies: :func:`load_study`, :func:`run_study`;
+* studies: :func:`load_study`, :func:`answer` (in memory or into a folder), :func:`run_study`;
 * units and errors: :func:`quantity`, :class:`InputError`, :class:`UnitError`,
   :class:`UnsupportedFormatError`, :class:`ConvergenceError`.
 
@@ -51,6 +51,7 @@ _HOMES = {
     "oliver_pharr": "roughcontact.experiment.nanoindentation",
     "load_study": "roughcontact.study",
     "run_study": "roughcontact.study",
+    "answer": "roughcontact.study",
 }
 """Public name -> the module that defines it (imported on first use)."""
 
@@ -63,6 +64,7 @@ __all__ = [
     "UnsupportedFormatError",
     "__version__",
     "analyse_loop",
+    "answer",
     "contact_modulus",
     "generate",
     "get_material",

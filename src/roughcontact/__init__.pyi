@@ -41,6 +41,7 @@ from .experiment.nanoindentation import oliver_pharr as oliver_pharr
 from .materials import Material as Material
 from .materials import contact_modulus as contact_modulus
 from .materials import get_material as get_material
+from .study import answer as answer
 from .study import load_study as load_study
 from .study import run_study as run_study
 from .topography import (

@@ -565,7 +565,8 @@ def presliding(
     Parameters
     ----------
     topography : Topography
-        The ball with its spherical shape (paper Fig. 4), e.g. :func:`central_window` of a scan.
+        The ball with its spherical shape (paper Fig. 4), e.g. the
+        :func:`~roughcontact.topography.process.central_window` of a scan.
     material, counter_body : Material
         The ball and the flat (None: rigid).
     normal_force : float

@@ -35,7 +35,7 @@ from ..contact.presliding import presliding as _presliding
 from ..errors import InputError
 from ..materials import get_material
 from ..topography import Topography, generate
-from ..topography.process import crop
+from ..topography.process import central_window
 from ..units import written
 
 RADIUS = 5e-3
@@ -95,16 +95,6 @@ def roughness(ball: str, *, seed: int = 1, pixels: int = SCAN_PIXELS) -> Topogra
     return generate.sphere_with_roughness(
         (pixels, pixels), (FIELD, FIELD), radius=RADIUS, rms_height=ROUGHNESS[ball_name(ball)], seed=seed
     )
-
-
-def central_window(scan: Topography, window: int) -> Topography:
-    """Return the central ``window`` x ``window`` pixels of a scan (at its resolution), non-periodic."""
-    nx, ny = scan.shape
-    if window > min(nx, ny):
-        raise InputError("window", f"{window} px exceeds the scan ({nx} x {ny}).", "use a smaller window.")
-    hx, hy = scan.spacing
-    i, j = (nx - window) // 2, (ny - window) // 2
-    return crop(scan, ((i - 0.5) * hx, (i + window - 0.5) * hx), ((j - 0.5) * hy, (j + window - 0.5) * hy))
 
 
 Paper001Mindlin = MindlinReference

@@ -677,3 +677,17 @@ def combine(a: Topography, b: Topography, *, resample: bool = False) -> Topograp
     }
     result = Topography(heights - heights.mean(), size, periodic=periodic, info=info, **either)
     return result.with_heights(result.heights, step=f"combine(resample={resample})")
+
+
+def central_window(scan: Topography, window: int) -> Topography:
+    """Return the central ``window`` x ``window`` pixels of a scan (at its resolution), non-periodic.
+
+    What paper 001 solves of a ball's scan: only the centre touches, and the window's free
+    boundary cuts nothing that carries load (the presliding runner checks, ``check_inside``).
+    """
+    nx, ny = scan.shape
+    if window > min(nx, ny):
+        raise InputError("window", f"{window} px exceeds the scan ({nx} x {ny}).", "use a smaller window.")
+    hx, hy = scan.spacing
+    i, j = (nx - window) // 2, (ny - window) // 2
+    return crop(scan, ((i - 0.5) * hx, (i + window - 0.5) * hx), ((j - 0.5) * hy, (j + window - 0.5) * hy))

@@ -8,7 +8,7 @@ flat with a constant normal force F0 and taken through a tangential programme: p
 1. Normal contact (paper 001 eq. 4): FFT boundary elements on a free (non-periodic) grid, load
    control, complementarity p = 0 where g > 0 and p > 0 where g = 0, with the integral of p equal
    to F0. With ``window`` only the central ``window`` x ``window`` pixels are solved
-   (:func:`~roughcontact.papers.paper001.central_window`; only the centre of the ball touches,
+   (:func:`~roughcontact.topography.process.central_window`; only the centre of the ball touches,
    paper Figs. 8-9); the pressure must vanish on the window's border, else the case fails and
    asks for a larger window.
 2. The programme. Paper 001's (``stroke``): the displacement path of Fig. 6, delta_x: 0 -> d_s -> 0
@@ -262,7 +262,7 @@ def check(parameters: PreslidingParameters) -> None:
 def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
     """Run the programme on one ball at one load; scalars and dataset of :class:`PreslidingResult`."""
     from ...contact.presliding import presliding
-    from ...papers.paper001 import central_window
+    from ...topography.process import central_window
 
     surface = inputs.topography(parameters.topography)
     if parameters.window is not None:
