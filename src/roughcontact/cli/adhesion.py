@@ -10,9 +10,8 @@ hysteresis, and with ``-o`` writes the cycle, its figures and a report. ``--wink
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
-from .options import CommandStudy, add_material_options, add_output_options, new_command, options
+from .options import CommandStudy, add_output_options, add_two_bodies, new_command, options
 from .output import run_command
 
 LAW_NAMES = {"md": "maugis_dugdale", "exp": "exponential", "lj": "lennard_jones"}
@@ -38,7 +37,6 @@ def _adhesion(args: argparse.Namespace) -> int:
             "law": (args.law, "--law"),
             "interaction_range": (ranges[0], "--ranges" if args.ranges else "--range"),
             "winkler": (args.winkler or None, "--winkler"),
-            "resample": (args.resample or None, "--resample"),
             "reading": (args.reading, "--reading"),
         }
         | options(
@@ -76,9 +74,7 @@ def add_commands(commands) -> None:
         file=True,
         boundary=True,
     )
-    parser.add_argument("counter_file", nargs="?", type=Path, help="topography of the counter-body (tip)")
-    add_material_options(parser, "material", "the surface's body", "polysilicon, SiO2")
-    add_material_options(parser, "counter_body", "the flat or tip (default: rigid)", "SiO2")
+    add_two_bodies(parser, "the flat or tip (default: rigid)")
     parser.add_argument(
         "--law",
         type=_law,
@@ -110,11 +106,6 @@ def add_commands(commands) -> None:
     parser.add_argument("--steps", type=int, help="equal steps each way (default 40)")
     parser.add_argument("--jump-resolution", help="width jumps are bracketed to (default: a quarter range)")
     parser.add_argument("--film-thickness", help="the body is a film of this thickness on a rigid base")
-    parser.add_argument(
-        "--resample",
-        action="store_true",
-        help="bring two grids of different pixel size onto a common grid instead of refusing them",
-    )
     parser.add_argument(
         "--winkler", action="store_true", help="paper 000's Winkler-layer springs beside it (needs --law lj)"
     )

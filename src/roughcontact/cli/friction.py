@@ -16,8 +16,8 @@ from ..errors import InputError
 from ..papers import paper000
 from .options import (
     CommandStudy,
-    add_material_options,
     add_output_options,
+    add_two_bodies,
     new_command,
     options,
     size_argument,
@@ -69,7 +69,6 @@ def _friction(args: argparse.Namespace) -> int:
         | {
             "normal_force": (forces[0], "--normal-forces" if args.normal_forces else "--normal-force"),
             "crossover": (args.crossover or None, "--crossover"),
-            "resample": (args.resample or None, "--resample"),
             **options(args, "relaxed_modulus"),
             **(options(args, "relaxation_time", "hold_time") if args.relaxed_modulus else {}),
             **_model_keys(args),
@@ -202,9 +201,7 @@ def add_commands(commands) -> None:
         "'friction').",
         file=True,
     )
-    friction.add_argument("counter_file", nargs="?", type=Path, help="topography of the counter-body (tip)")
-    add_material_options(friction, "material", "the surface's body", "polysilicon, SiO2")
-    add_material_options(friction, "counter_body", "the counter-body (default: rigid)", "SiO2")
+    add_two_bodies(friction, "the counter-body (default: rigid)")
     friction.add_argument(
         "--normal-force",
         "--load",
@@ -223,11 +220,6 @@ def add_commands(commands) -> None:
         "--crossover",
         action="store_true",
         help="find the load where mechanical friction overtakes adhesive friction",
-    )
-    friction.add_argument(
-        "--resample",
-        action="store_true",
-        help="bring two grids of different pixel size onto a common grid instead of refusing them",
     )
     friction.add_argument(
         "--hold-time", default="0 s", help="time held in contact before sliding, e.g. '10 s'"

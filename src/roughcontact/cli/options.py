@@ -243,6 +243,22 @@ def read_file(args: argparse.Namespace):
         raise InputError("--detrend", error.problem, error.fix) from None
 
 
+def add_two_bodies(parser: argparse.ArgumentParser, counter_body: str) -> None:
+    """Add what the commands of two rough bodies share: COUNTER_FILE, both materials, ``--resample``.
+
+    ``counter_body`` says what the counter-body is (``"the flat or tip (default: rigid)"``); the
+    keys come back from :meth:`CommandStudy.two_bodies`.
+    """
+    parser.add_argument("counter_file", nargs="?", type=Path, help="topography of the counter-body (tip)")
+    add_material_options(parser, "material", "the surface's body", "polysilicon, SiO2")
+    add_material_options(parser, "counter_body", counter_body, "SiO2")
+    parser.add_argument(
+        "--resample",
+        action="store_true",
+        help="bring two grids of different pixel size onto a common grid instead of refusing them",
+    )
+
+
 def add_material_options(parser: argparse.ArgumentParser, prefix: str, what: str, names: str) -> None:
     """Add ``--PREFIX`` (a library material) and ``--PREFIX-youngs-modulus``/``--PREFIX-poissons-ratio``.
 
@@ -424,8 +440,9 @@ class CommandStudy:
     def two_bodies(self, args: argparse.Namespace) -> dict[str, tuple[Any, str]]:
         """Return the keys of FILE merged with COUNTER_FILE (when given) and their two materials.
 
-        ``topography``, ``counter_topography``, ``material`` (required) and ``counter_body``, each
-        with the option that gave it, for the commands of two rough bodies (friction, adhesion).
+        ``topography``, ``counter_topography``, ``material`` (required), ``counter_body`` and
+        ``resample``, each with the option that gave it, for the commands of two rough bodies
+        (friction, adhesion; their options from :func:`add_two_bodies`).
         """
         counter = None
         if args.counter_file is not None:
@@ -435,6 +452,7 @@ class CommandStudy:
             "counter_topography": (counter, "COUNTER_FILE"),
             "material": (self.material("material", args, required=True), "--material"),
             "counter_body": (self.material("counter_body", args), "--counter-body"),
+            "resample": (args.resample or None, "--resample"),
         }
 
     def topography(self, name: str, table: dict[str, Any], flag: str) -> str:

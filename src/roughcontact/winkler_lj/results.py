@@ -7,6 +7,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from ..contact.adhesive_result import AdhesiveResult
 from ..contact.trust import contact_shares, share_warnings
 from ..topography import Topography
 
@@ -302,14 +303,17 @@ class WinklerNormalCurve:
     parameters: dict = field(repr=False)
 
     UNITS: ClassVar[dict[str, str]] = {
-        "pull_off_force": "N",
-        "pull_off_approach": "m",
-        "max_force": "N",
-        "max_approach": "m",
-        "max_contact_area": "m^2",
-        "work_of_adhesion": "J/m^2",
-        "epsilon": "m",
-    }
+        name: AdhesiveResult.UNITS[name]
+        for name in (
+            "pull_off_force",
+            "pull_off_approach",
+            "max_force",
+            "max_approach",
+            "max_contact_area",
+            "work_of_adhesion",
+        )
+    } | {"epsilon": "m"}
+    """The cycle's vocabulary is the adhesive BEM's (:attr:`AdhesiveResult.UNITS`), side by side."""
 
     def scalars(self) -> dict[str, Any]:
         """Return the headline numbers (SI), see ``UNITS``."""
