@@ -63,6 +63,14 @@ TIP_ROUGHNESS = 0.3e-9
 HURST = 0.8
 """Hurst exponent of the synthetic scans and tip; ASSUMED."""
 
+DRAWN_RMS = 1.5e-9
+"""Rq [m] a synthetic scan is drawn at before it is rescaled to its sample's exact Ra.
+
+It sets nothing but the round-off of the rescaling (the scan's shape comes from its seed, its
+scale from the Ra); 1.5 nm is what release 0.1's example and command drew, so their scans stay the
+same to the last bit.
+"""
+
 SCANS_PER_SAMPLE = 7
 """Spots scanned (and measured) per sample (sec. 5)."""
 
@@ -202,7 +210,7 @@ def paper000_scan(roughness: float, *, shape: int = 256, seed: int = 0) -> Topog
     A periodic self-affine surface (Hurst :data:`HURST`, assumed) scaled to the sample's Ra: the
     scans of paper 000 are not published.
     """
-    scan = self_affine((shape, shape), shape * PIXEL, hurst=HURST, rms_height=roughness, seed=seed)
+    scan = self_affine((shape, shape), shape * PIXEL, hurst=HURST, rms_height=DRAWN_RMS, seed=seed)
     return scale_to_ra(scan, roughness)
 
 
