@@ -330,14 +330,6 @@ def add_output_options(parser: argparse.ArgumentParser, *, figures: bool = True)
         )
 
 
-_STUDY_PHRASES = (
-    ("; relative paths are relative to the study file", ""),
-    (r"define \[materials\.[^\]]+\] or use one of", "use a library material, one of"),
-    (r"to \[analysis\.compare\]", "to the command"),
-)
-"""What the study validation says that a command's user cannot act on, and what to say instead."""
-
-
 def _flag(name: str) -> str:
     return f"--{name.replace('_', '-')}"
 
@@ -584,8 +576,6 @@ class CommandStudy:
         """
         if not text:
             return text
-        for phrase, said in _STUDY_PHRASES:
-            text = re.sub(phrase, said, text)
         words = dict(self.words)
         for end in range(len(path), 0, -1):
             if path[:end] in self.table_words:

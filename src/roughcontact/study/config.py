@@ -356,6 +356,7 @@ class _Builder:
                 where,
                 f"file {str(value)!r} not found (looked for {path}).",
                 "correct the path; relative paths are relative to the study file.",
+                "correct the path.",
             )
             return None
         self.files.setdefault(str(path), _file_hash(path))
@@ -454,7 +455,10 @@ class _Builder:
         close = difflib.get_close_matches(str(name), known, n=1)
         fix = f"did you mean {close[0]!r}? " if close else ""
         self.problem(
-            where, f"unknown material {name!r}.", fix + f"define [materials.{name}] or use one of {known}."
+            where,
+            f"unknown material {name!r}.",
+            fix + f"define [materials.{name}] or use one of {known}.",
+            fix + f"use a library material, one of {known}.",
         )
         return None
 
