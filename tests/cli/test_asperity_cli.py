@@ -159,3 +159,9 @@ def test_bem_with_volume_plasticity_draws_the_section(capsys, tmp_path):
 def test_volume_options_need_volume_plasticity(capsys):
     status, _, err = run(capsys, "asperity", "--paper002", "--bem", "--grid", "24", "--layers", "6")
     assert status == EXIT_INPUT_ERROR and "--layers" in err and "--plasticity volume" in err
+
+
+def test_realisations_draw_paper002s_island_only(capsys):
+    status, _, err = run(capsys, "asperity", "--paper002", "--realisations", "3")
+    assert status == EXIT_INPUT_ERROR
+    assert "--realisations" in err and "add --bem --paper002" in err

@@ -262,3 +262,41 @@ def test_the_frictional_loading_is_chosen_and_sized_from_the_command_line(
     row = scalars(stdout)
     assert row["normal_loading"] == "frictionless" and row["loading_steps"] == 0
     assert row["locked_in_stick_fraction"] is None  # NaN: no frictional loading
+
+
+def test_paper001_on_realisations_of_the_ball(capsys, tmp_path):
+    """--realisations N draws N balls per load (seeds from --seed) and tables K_L's spread against Mindlin."""
+    status, stdout, err = run(
+        capsys,
+        "presliding",
+        "--paper001",
+        "--ball",
+        "POM",
+        "--normal-forces",
+        "25 mN",
+        "--pixels",
+        "128",
+        "--window",
+        "40",
+        "--steps-per-stroke",
+        "6",
+        "--cycles",
+        "2",
+        "--realisations",
+        "3",
+        "-o",
+        tmp_path / "out",
+    )
+    assert status == 0, err
+    assert "spread over 3 realisations" in stdout and "Each case ran on 3 realisations" in stdout
+    spread = (tmp_path / "out" / "tables" / "presliding_lateral_stiffness_spread.csv").read_text()
+    assert spread.count("\n") == 4 and "rough vs smooth (johnson)" in spread
+    assert (tmp_path / "out" / "figures" / "presliding_lateral_stiffness.png").exists()
+
+
+def test_realisations_of_a_measured_ball_are_refused(capsys, ball_file):
+    status, _, err = run(
+        capsys, "presliding", ball_file, *BALL_OPTIONS, "--stroke", "1 um", "--realisations", "3"
+    )
+    assert status == EXIT_INPUT_ERROR
+    assert "--realisations" in err and "realisations need a generated surface" in err

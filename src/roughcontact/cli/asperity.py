@@ -13,7 +13,14 @@ from pathlib import Path
 
 from ..errors import InputError
 from ..papers import paper002
-from .options import CommandStudy, add_material_options, add_output_options, new_command, options
+from .options import (
+    CommandStudy,
+    add_material_options,
+    add_output_options,
+    add_realisations,
+    new_command,
+    options,
+)
 from .output import run_command
 
 
@@ -52,6 +59,10 @@ def _asperity(args: argparse.Namespace) -> int:
         }
         | options(args, "hardness", "yield_strength", "modulus_form", "law", "distribution", "steps"),
     )
+    if args.realisations is not None and not (args.bem and args.paper002 and args.file is None):
+        raise InputError(
+            "--realisations", "draws paper 002's synthetic island only.", "add --bem --paper002 (no FILE)."
+        )
     if args.bem:
         index = _island(command, args, material)
     if args.measured is not None:
@@ -71,7 +82,7 @@ def _island(command: CommandStudy, args: argparse.Namespace, material: str | Non
         raise InputError("--bem", "needs a topography FILE or --paper002.", "add one, or leave out --bem.")
     if args.max_force is None and not args.paper002:
         raise InputError("--bem", "needs --max-force (and --reference-force).", "add them (or --paper002).")
-    return command.analysis(
+    index = command.analysis(
         "bem",
         "load_unload",
         {
@@ -87,6 +98,10 @@ def _island(command: CommandStudy, args: argparse.Namespace, material: str | Non
         }
         | _volume_options(args),
     )
+    if topography == "island":
+        command.set(("study", "seed"), args.seed, "--seed")
+        command.realisations(index, args, topography)
+    return index
 
 
 def _volume_options(args: argparse.Namespace) -> dict:
@@ -153,6 +168,8 @@ def add_commands(commands) -> None:
     asperity.add_argument("--steps", type=int, default=40, help="points per branch of the statistical curve")
     asperity.add_argument("--bem", action="store_true", help="also run the BEM island compression")
     asperity.add_argument("--grid", type=int, default=128, help="grid of paper 002's synthetic island")
+    asperity.add_argument("--seed", type=int, default=0, help="seed of paper 002's synthetic island")
+    add_realisations(asperity, "paper 002's synthetic island (--bem --paper002)")
     paper = paper002.load_unload_keys()
     asperity.add_argument(
         "--substrate", help=f"substrate of the film for --bem (paper 002: {paper['substrate']})"

@@ -17,6 +17,7 @@ from ..papers import paper000
 from .options import (
     CommandStudy,
     add_output_options,
+    add_realisations,
     add_two_bodies,
     new_command,
     options,
@@ -132,7 +133,7 @@ def _friction_compare(args: argparse.Namespace) -> int:
             },
         )
     else:
-        command.sweep(index, "replicate", list(range(paper000.SCANS_PER_SAMPLE)), "--seed")
+        command.sweep(index, "replicate", list(range(args.realisations)), "--realisations")
         samples = list(paper000.PAPER000_SAMPLES)
         command.zipped(
             index, {"sample": (samples, "--seed"), "topographies.scan.sample": (samples, "--seed")}
@@ -278,5 +279,10 @@ def add_commands(commands) -> None:
     )
     comparison.add_argument(
         "--grid", type=int, default=256, help="without --sample: points per side of the 20 nm-pixel scans"
+    )
+    add_realisations(
+        comparison,
+        "each sample's scan (without --sample; paper 000 scanned seven spots)",
+        paper000.SCANS_PER_SAMPLE,
     )
     _shared_options(comparison, paper=True)

@@ -310,6 +310,19 @@ def dpi_argument(text: str) -> int:
     return value
 
 
+def add_realisations(parser: argparse.ArgumentParser, what: str, default: int | None = None) -> None:
+    """Add ``--realisations N``: each case on N independent draws of ``what`` (study key ``realisations``)."""
+    parser.add_argument(
+        "--realisations",
+        type=int,
+        default=default,
+        metavar="N",
+        help=f"run each case on N independent realisations of {what}, their seeds derived from --seed, "
+        "and give every number's mean, std and 95 %% interval of the mean"
+        + (f" (default {default})" if default else " (default: one draw)"),
+    )
+
+
 def add_output_options(parser: argparse.ArgumentParser, *, figures: bool = True) -> None:
     """Add ``-o/--output``, ``--json`` and (for commands that draw) ``--dpi``."""
     parser.add_argument(
@@ -452,6 +465,21 @@ class CommandStudy:
         self.document["topographies"][name] = table
         self.flags[("topographies", name)] = flag
         return name
+
+    def realisations(self, index: int, args: argparse.Namespace, *redrawn: str) -> None:
+        """Run analysis ``index`` on ``--realisations`` draws of the generated topographies ``redrawn``.
+
+        With more than one, their fixed seed gives way to seeds derived from the study's seed
+        (``--seed``), one per realisation.
+        """
+        count = args.realisations
+        if count is None:
+            return
+        self.set(("analysis", index, "realisations"), count, "--realisations")
+        if count > 1:
+            for name in redrawn:
+                self.document["topographies"][name].pop("seed", None)
+            self.set(("study", "seed"), args.seed, "--seed")
 
     def material(self, prefix: str, args: argparse.Namespace, *, required: bool = False) -> str | None:
         """Return the study name of the material of ``--PREFIX`` options (None where none is given).

@@ -15,7 +15,14 @@ from pathlib import Path
 from ..errors import InputError
 from ..papers import paper001
 from ..units import quantity, written
-from .options import CommandStudy, add_material_options, add_output_options, new_command, options
+from .options import (
+    CommandStudy,
+    add_material_options,
+    add_output_options,
+    add_realisations,
+    new_command,
+    options,
+)
 from .output import run_command
 
 
@@ -101,6 +108,7 @@ def _presliding(args: argparse.Namespace) -> int:
     index = command.analysis("presliding", "presliding", keys)
     if zipped:
         command.zipped(index, zipped)
+    command.realisations(index, args, *dict.fromkeys(zipped.get("topography", ([], None))[0]))
     if args.measured is not None:
         command.compare(
             index,
@@ -200,6 +208,7 @@ def add_commands(commands) -> None:
         "--pixels", type=int, default=512, help="with --paper001: pixels of the 1.1 mm scan"
     )
     presliding.add_argument("--seed", type=int, default=1, help="with --paper001: seed of the roughness")
+    add_realisations(presliding, "the ball's roughness (--paper001; paper 001 measured five spots)")
     presliding.add_argument("--no-coupling", action="store_true", help="uncoupled (Goodman) solution")
     presliding.add_argument(
         "--normal-loading",

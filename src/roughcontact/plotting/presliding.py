@@ -33,6 +33,7 @@ from matplotlib.patches import Rectangle
 from ..contact.presliding import MINDLIN_READINGS as READINGS
 from ..contact.presliding import POINT_NAMES as POINTS
 from ..errors import InputError
+from ..spread import spread
 from ..units import format_si, prefixed_scale, unit_factor
 from .cases import caption, evenly_chosen, grouped, panel_per_case, with_fields
 from .layout import axes_for, colour_scale, legend, shared_colorbar
@@ -70,13 +71,16 @@ def plot_hysteresis_loops(
     simulated: Sequence[tuple],
     measured: Sequence[tuple] | None = None,
     *,
+    realisations: Sequence[Sequence[tuple]] | None = None,
     ax: Axes | None = None,
     title: str | None = None,
 ) -> Figure:
     """Draw friction hysteresis loops, friction force vs tangential displacement (Figs. 13-14).
 
     Simulated loops are thick solid lines, measured ones thin dashed lines (the paper overlays
-    the loops of five spots on the simulation).
+    the loops of five spots on the simulation). Where a simulated loop is the mean over
+    realisations, each realisation is a thin line of its colour: together they show the band
+    the draw of the surface spans.
 
     Parameters
     ----------
@@ -84,6 +88,8 @@ def plot_hysteresis_loops(
         Displacement [m] and force [N] arrays and a legend label per loop.
     measured : list of (delta, F, label), optional
         The same for measured loops.
+    realisations : list of list of (delta, F, label), optional
+        Per simulated loop, the loops of its realisations (empty for a loop of one).
     ax : matplotlib Axes, optional
         Axes to draw on.
     title : str, optional
@@ -94,8 +100,18 @@ def plot_hysteresis_loops(
     Figure
     """
     fig, ax = axes_for(ax, figsize=(5.5, 4.0))
-    for delta, force, label in _curves(simulated, "simulated"):
-        ax.plot(delta / _LENGTH_SCALE, force / _FORCE_SCALE, "-", linewidth=2.0, label=label)
+    curves = _curves(simulated, "simulated")
+    for number, (delta, force, label) in enumerate(curves):
+        (line,) = ax.plot(delta / _LENGTH_SCALE, force / _FORCE_SCALE, "-", linewidth=2.0, label=label)
+        for delta_i, force_i, _ in _curves((realisations or [[]] * len(curves))[number], "realisations"):
+            ax.plot(
+                delta_i / _LENGTH_SCALE,
+                force_i / _FORCE_SCALE,
+                "-",
+                linewidth=0.6,
+                alpha=0.45,
+                color=line.get_color(),
+            )
     for delta, force, label in _curves(measured, "measured"):
         ax.plot(delta / _LENGTH_SCALE, force / _FORCE_SCALE, "--", linewidth=1.0, alpha=0.8, label=label)
     ax.axhline(0.0, color="0.7", linewidth=0.5)
@@ -363,6 +379,8 @@ def plot_lateral_stiffness(
     measured: Mapping[str, Sequence[float]] | None = None,
     mindlin: Mapping[str, Mapping[str, Sequence[float]]] | None = None,
     *,
+    interval: Mapping[str, Sequence[float]] | None = None,
+    realisations: int = 1,
     ax: Axes | None = None,
     title: str | None = None,
 ) -> Figure:
@@ -382,6 +400,12 @@ def plot_lateral_stiffness(
         Point name (``"A"``, ``"B"``, ``"C"``) to K_L [N/m] at each load.
     mindlin : dict of str to dict of str to array_like, optional
         Normalisation (``"johnson"``, ``"printed"``) to {point: K_L [N/m] at each load}.
+    interval : dict of str to array_like, optional
+        Point name to the half width [N/m] of the 95 % interval of the simulated mean at each load
+        (``simulated`` then holds means over ``realisations``): drawn as error bars, those of A
+        and C shifted by -1 % and +1 % of the largest load so that the three do not hide each other.
+    realisations : int
+        Realisations behind each simulated mean (said in the legend).
     ax : matplotlib Axes, optional
         Axes to draw on.
     title : str, optional
@@ -416,8 +440,20 @@ def plot_lateral_stiffness(
             color=colour,
             label=f"{point} measured",
         )
-    for point, series in (simulated or {}).items():
+    dodge = 0.01 * float(np.max(load)) / _FORCE_SCALE if load.size else 0.0  # bars of A, B, C side by side
+    for number, (point, series) in enumerate((simulated or {}).items()):
         colour = POINT_COLOURS.get(point)
+        if interval is not None and point in interval:
+            ax.errorbar(
+                load / _FORCE_SCALE + (number - 1) * dodge,
+                values(series, "simulated", point),
+                yerr=values(interval[point], "interval", point),
+                fmt="o",
+                capsize=3,
+                color=colour,
+                label=f"{point} simulated, mean ± 95 % CI ({realisations} realisations)",
+            )
+            continue
         ax.plot(
             load / _FORCE_SCALE,
             values(series, "simulated", point),
@@ -578,6 +614,14 @@ def _by_force(cases) -> list:
     return sorted(cases, key=lambda r: _number(r, "normal_force"))
 
 
+def _realisations_by_load(cases) -> dict[float, list]:
+    """Return the cases of one sample by normal force: the realisations at each load, in load order."""
+    at_load: dict[float, list] = {}
+    for case in _by_force(cases):
+        at_load.setdefault(_number(case, "normal_force"), []).append(case)
+    return at_load
+
+
 @caption(
     "Friction force against tangential displacement of every case, one panel per sample, with the "
     "measured loop of [analysis.compare] where given (paper 001 Figs. 13-14)."
@@ -594,8 +638,9 @@ def loops_figure(cases, measured: MeasuredLoop | None = None, title: str = ""):
         return None
     figure, axes = new_figure(1, len(groups), width=5.5, height=4.2)
     for ax, (sample, group) in zip(axes[0], groups.items(), strict=True):
-        curves = []
-        for case in _by_force(group):
+        curves, spreads = [], []
+        for cases in _realisations_by_load(group).values():
+            case = cases[0]
             data = case.dataset()
             force, mu = _number(case, "normal_force"), _number(case, "friction_coefficient")
             label = f"{force * 1e3:g} mN, μ {mu:g}"
@@ -604,7 +649,10 @@ def loops_figure(cases, measured: MeasuredLoop | None = None, title: str = ""):
                 label = f"F_n {format_si(loads.min(), 'N')} to {format_si(loads.max(), 'N')}, μ {mu:g}"
             if data.attrs.get("control") == "force":
                 label += ", force control"
-            curves.append((np.asarray(data["delta_x"]), np.asarray(data["force_x"]), label))
+            loops = [(np.asarray(c.dataset()["delta_x"]), np.asarray(c.dataset()["force_x"])) for c in cases]
+            curve, each = _mean_loop(loops, label)
+            curves.append(curve)
+            spreads.append(each)
         overlay = []
         if measured is not None and measured.applies_to(sample):
             loop, analysis = measured.loop, measured.analysis
@@ -617,8 +665,27 @@ def loops_figure(cases, measured: MeasuredLoop | None = None, title: str = ""):
                     f"({measured.normal_force * 1e3:g} mN, shifted {-shift * 1e6:+.2f} µm)",
                 )
             )
-        plot_hysteresis_loops(curves, overlay, ax=ax, title=f"{sample or title}: friction loops")
+        plot_hysteresis_loops(
+            curves, overlay, realisations=spreads, ax=ax, title=f"{sample or title}: friction loops"
+        )
     return figure
+
+
+def _mean_loop(loops: list[tuple[np.ndarray, np.ndarray]], label: str) -> tuple[tuple, list[tuple]]:
+    """Return the loop to draw thick for one load's realisations, and the realisations to draw thin.
+
+    One realisation is itself. Several under one displacement programme (the same steps, as
+    paper 001's) give their mean force at each step, labelled with their number; programmes whose
+    steps differ (the step control inserted steps) give the first loop and say so.
+    """
+    if len(loops) == 1:
+        return (*loops[0], label), []
+    each = [(delta, force, "") for delta, force in loops]
+    first = loops[0][0]
+    if all(delta.shape == first.shape and np.allclose(delta, first, rtol=1e-9, atol=0) for delta, _ in loops):
+        mean = np.mean([force for _, force in loops], axis=0)
+        return (first, mean, f"{label}: mean of {len(loops)} realisations (thin: each)"), each
+    return (*loops[0], f"{label}: {len(loops)} realisations (thin; their steps differ)"), each[1:]
 
 
 @caption(
@@ -847,18 +914,27 @@ def lateral_stiffness_figure(cases, measured: MeasuredLoop | None = None, title:
     figure, axes = new_figure(1, len(groups), width=5.5, height=5.2)
     for number, (ax, (sample, group)) in enumerate(zip(axes[0], groups.items(), strict=True)):
         group = _by_force(group)
-        loads = [_number(r, "normal_force") for r in group]
-        simulated = {p: [_number(r, f"K_L_{p}") for r in group] for p in POINTS}
-        curves = _mindlin_curves(group, dense)
+        at_load = _realisations_by_load(group)
+        loads = list(at_load)
+        spreads = {
+            p: [spread(_number(r, f"K_L_{p}") for r in cases) for cases in at_load.values()] for p in POINTS
+        }
+        simulated = {p: [s.mean for s in spreads[p]] for p in POINTS}
+        count = max(len(cases) for cases in at_load.values())
+        interval = {p: [s.half_width for s in spreads[p]] for p in POINTS} if count > 1 else None
+        firsts = [cases[0] for cases in at_load.values()]
+        curves = _mindlin_curves(firsts, dense)
         if curves is None:  # materials differ within the sample: Mindlin at the cases' loads only
             curves = {
-                reading: {p: [_number(r, f"K_L_{p}_mindlin_{reading}") for r in group] for p in POINTS}
+                reading: {p: [_number(r, f"K_L_{p}_mindlin_{reading}") for r in firsts] for p in POINTS}
                 for reading in READINGS
             }
-            plot_lateral_stiffness(loads, simulated, mindlin=curves, ax=ax)
+            plot_lateral_stiffness(
+                loads, simulated, mindlin=curves, interval=interval, realisations=count, ax=ax
+            )
         else:
             plot_lateral_stiffness(dense, mindlin=curves, ax=ax)
-            plot_lateral_stiffness(loads, simulated, ax=ax)
+            plot_lateral_stiffness(loads, simulated, interval=interval, realisations=count, ax=ax)
         if measured is not None and measured.applies_to(sample):
             stiffness = measured.analysis.lateral_stiffness
             for point in POINTS:

@@ -29,7 +29,15 @@ from ..errors import InputError
 from .config import Study
 from .display import columns, shown, text_table
 from .kind import CaseRecord
-from .outputs import StoredAnalysis, headline_rows, in_memory, produce, read_study, warning_lines
+from .outputs import (
+    StoredAnalysis,
+    headline_rows,
+    in_memory,
+    produce,
+    read_study,
+    realisation_lines,
+    warning_lines,
+)
 from .run import RunSummary, case_progress, execute, make_task, run_study
 
 
@@ -77,8 +85,13 @@ class StudyAnswer:
         for analysis in self.analyses:
             lines += summary_lines(analysis, analysis.kind)
             for name, rows in ((n, r) for a, n, r in tables if a == analysis.name):
+                if name == "spread":
+                    headline = set(analysis.kind.headline)
+                    rows = [row for row in rows if row["quantity"] in headline] or rows
+                    name = f"spread over {analysis.realisations} realisations (headline quantities)"
                 lines.append(f"  table {name}:")
                 lines += table_lines(rows, indent="    ")
+            lines += [f"  {line}" for line in realisation_lines(analysis)]
         return lines
 
     def document(self) -> dict[str, Any]:

@@ -76,7 +76,7 @@ from .schema import (
 )
 from .sweeps import expand
 
-ANALYSIS_KEYS = ("name", "model", "sweep", "zip", "figures", "compare")
+ANALYSIS_KEYS = ("name", "model", "sweep", "zip", "figures", "compare", "realisations")
 """Keys of an ``[[analysis]]`` table that are not parameters of its model."""
 
 
@@ -148,7 +148,12 @@ class Case:
 
 @dataclass(frozen=True)
 class Analysis:
-    """An ``[[analysis]]`` table: its kind, cases, figures and comparison with measured data."""
+    """An ``[[analysis]]`` table: its kind, cases, figures and comparison with measured data.
+
+    ``realisations`` counts the distinct ``replicate`` values of its cases; ``redrawn`` names the
+    generated random topographies whose seed changes between them, ``drawn_once`` those drawn
+    with one seed in every case (every number rests on that one draw).
+    """
 
     name: str
     kind: Kind
@@ -156,6 +161,9 @@ class Analysis:
     figures: tuple[str, ...]
     compare: Strict | None
     sweep_axes: tuple[str, ...]
+    realisations: int = 1
+    redrawn: tuple[str, ...] = ()
+    drawn_once: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -230,6 +238,11 @@ def references(schema: type[BaseModel], kind: str) -> list[str]:
 def _derived_seed(study_seed: int, topography: str, sample: str, replicate: int) -> int:
     text = json.dumps([study_seed, topography, sample, replicate])
     return int(hashlib.sha256(text.encode()).hexdigest()[:8], 16)
+
+
+def _drawn(spec: Strict) -> bool:
+    """Return whether a topography is a random draw (a generated surface with a seed)."""
+    return "seed" in type(spec).model_fields and getattr(spec, "generate", None) is not None
 
 
 def _file_hash(path: Path) -> str:
@@ -528,8 +541,10 @@ class _Builder:
                 self.problem(where.child("compare"), f"model {model!r} takes no measured data.", "remove it.")
             else:
                 compare = self._compare(kind, raw["compare"], where.child("compare"))
+        realisations = self._realisations(raw, where, sweep, zipped)
+        axes_of_cases = sweep | ({"replicate": list(range(realisations))} if realisations > 1 else {})
         try:
-            rows = expand(sweep, zipped, where.label)
+            rows = expand(axes_of_cases, zipped, where.label)
         except InputError as error:
             axis = error.field.removeprefix(where.label + ".").split(".")
             self.problem(Where((*where.path, *axis), error.field), error.problem, error.fix)
@@ -547,8 +562,49 @@ class _Builder:
                 cases.append(case)
             if len(self.problems) > before + 5:  # one bad axis fails every case: say it a few times
                 break
-        sweep_axes = tuple(sweep) + tuple(zipped)
-        return Analysis(name, kind, tuple(cases), tuple(figures) if not unknown else (), compare, sweep_axes)
+        sweep_axes = tuple(a for a in (*sweep, *zipped) if a != "replicate")
+        drawn = tuple(sorted({n for case in cases for n, s in case.topographies.items() if _drawn(s)}))
+        seeds: dict[str, set[int]] = {}
+        for case in cases:
+            for surface, seed in case.seeds.items():
+                seeds.setdefault(surface, set()).add(seed)
+        counted = len({case.parameters.replicate for case in cases}) if cases else realisations
+        if realisations > 1 and cases and not any(len(seeds.get(d, ())) > 1 for d in drawn):
+            self.problem(
+                where.child("realisations"),
+                "every realisation would draw the same surfaces: no generated topography of the analysis "
+                "derives its seed from the realisation"
+                + (f" ({', '.join(drawn)} have a fixed seed)." if drawn else " (there is none)."),
+                "remove the fixed seed of the generated topography, or leave realisations out.",
+                "realisations need a generated surface without a fixed seed; leave --realisations out.",
+            )
+        return Analysis(
+            name,
+            kind,
+            tuple(cases),
+            tuple(figures) if not unknown else (),
+            compare,
+            sweep_axes,
+            counted,
+            tuple(d for d in drawn if len(seeds.get(d, ())) > 1),
+            tuple(d for d in drawn if len(seeds.get(d, ())) == 1),
+        )
+
+    def _realisations(self, raw: dict, where: Where, sweep: dict, zipped: dict) -> int:
+        """Return the analysis' ``realisations`` (1 without it); a problem where it is not a count."""
+        value = raw.get("realisations", 1)
+        if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+            problem = f"expected a whole number >= 1, got {value!r}."
+            self.problem(where.child("realisations"), problem, "e.g. realisations = 5.")
+            return 1
+        if value > 1 and ("replicate" in sweep or "replicate" in zipped):
+            self.problem(
+                where.child("realisations"),
+                "is given and replicate is swept: both set the realisations.",
+                "keep realisations = N (replicates 0 to N-1), or the replicate sweep.",
+            )
+            return 1
+        return value
 
     def _renamed(self, kind: Kind, where: Where, table: Any) -> Any:
         """Return ``table`` with the kind's deprecated keys under their names now, noting each."""

@@ -23,7 +23,14 @@ DIGITS = 4
 """Significant digits of every number shown."""
 
 PER_ROW_UNIT = ("paper", "this_case", "printed_inputs", "ours")
-"""Columns (or column-name prefixes) of a quantity table that take their row's ``unit``."""
+"""Column-name prefixes of a quantity table whose columns take their row's ``unit``."""
+
+SPREAD_COLUMNS = ("mean", "std", "ci95_low", "ci95_high", "min", "max")
+"""Columns of a spread table (:func:`roughcontact.study.outputs.spread_rows`), in their row's ``unit``."""
+
+
+def _per_row(name: str) -> bool:
+    return name.startswith(PER_ROW_UNIT) or name in SPREAD_COLUMNS
 
 
 def header(name: str, unit: str | None) -> str:
@@ -146,7 +153,7 @@ def columns(
     """
     names = list(dict.fromkeys(key for row in rows for key in row))
     names = [n for n in names if not all(blank(row.get(n)) for row in rows)]
-    if "unit" in names and any(n.startswith(PER_ROW_UNIT) for n in names):
+    if "unit" in names and any(_per_row(n) for n in names):
         names.remove("unit")  # every value cell of such a table carries its row's unit
     if len(rows) > 1 and len({str(row.get("case")) for row in rows}) == 1:
         names = [n for n in names if n != "case"]  # rows of one case: its id says nothing
@@ -155,7 +162,7 @@ def columns(
         name, unit = split_header(key)
         unit = unit or (units or {}).get(key)
         values = [row.get(key) for row in rows]
-        if key.startswith(PER_ROW_UNIT) and any("unit" in row for row in rows):
+        if _per_row(key) and any("unit" in row for row in rows):
             titles.append(name)
             row_units = [row.get("unit") or None for row in rows]
             by_column.append(

@@ -34,6 +34,12 @@ class StoredAnalysis:
     sweep_axes: tuple[str, ...]
     cases: tuple[str, ...]
     records: tuple[CaseRecord | None, ...]
+    realisations: int = 1
+    """Realisations of its generated surfaces per case (the replicates of :mod:`.spread`)."""
+    redrawn: tuple[str, ...] = ()
+    """Its generated random topographies drawn anew for each realisation."""
+    drawn_once: tuple[str, ...] = ()
+    """Its generated random topographies drawn once (one seed for every case)."""
 
     @property
     def finished(self) -> list[CaseRecord]:
@@ -89,6 +95,9 @@ def read_study(folder: str | Path) -> tuple[dict[str, Any], list[StoredAnalysis]
                 tuple(entry.get("sweep_axes", ())),
                 tuple(entry["cases"]),
                 records,
+                entry.get("realisations", 1),
+                tuple(entry.get("redrawn", ())),
+                tuple(entry.get("drawn_once", ())),
             )
         )
     return document, analyses
@@ -157,6 +166,40 @@ def headline_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
     return rows
 
 
+def spread_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
+    """One row per group of realisations and scalar: its spread over the realisations (SI).
+
+    A group is the cases that differ only in their realisation (``replicate``): same sample and
+    swept values. Each numeric scalar of the group's finished cases is summarised by
+    :func:`roughcontact.spread.spread` (n, mean, std, 95 % interval of the mean, min, max),
+    with its SI ``unit``. A scalar equal in every realisation (to 1e-9 relative: an input such as
+    the force of a force-controlled case, or a material constant) does not depend on the draw and
+    is left out. Empty for an analysis of one realisation.
+    """
+    from ..spread import spread
+
+    if analysis.realisations < 2:
+        return []
+    units = dict(analysis.kind.units)
+    groups: dict[str, tuple[dict[str, Any], list[CaseRecord]]] = {}
+    for record in analysis.finished:
+        where = {"sample": record.parameters.get("sample", "")} | axis_columns(record, units)
+        groups.setdefault(json.dumps(where, sort_keys=True, default=str), (where, []))[1].append(record)
+    rows = []
+    for where, records in groups.values():
+        names = dict.fromkeys(n for r in records for n, v in r.scalars.items() if _numeric(v))
+        for name in names:
+            summary = spread(r.scalars[name] for r in records if _numeric(r.scalars.get(name)))
+            if summary.n > 1 and summary.max - summary.min <= 1e-9 * max(abs(summary.max), abs(summary.min)):
+                continue
+            rows.append(where | {"quantity": name, "unit": units.get(name) or ""} | summary.row())
+    return rows
+
+
+def _numeric(value: Any) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
 def write_results_table(folder: str | Path) -> Path:
     """Write ``OUT/results.csv`` from the stored records; return its path."""
     folder = Path(folder).expanduser().resolve()
@@ -180,6 +223,8 @@ def produce(analyses: list[StoredAnalysis], what: str) -> tuple[list[tuple[str, 
             continue
         kind = analysis.kind
         functions = kind.tables if what == "table" else {n: kind.figures[n] for n in analysis.figures}
+        if what == "table" and analysis.realisations > 1:
+            made.append((analysis.name, "spread", spread_rows(analysis)))
         for name, function in functions.items():
             try:
                 product = function(records, context(analysis, analyses))
@@ -204,6 +249,9 @@ def in_memory(study, records: dict[str, list[CaseRecord]]) -> list[StoredAnalysi
             analysis.sweep_axes,
             tuple(case.case_id for case in analysis.cases),
             tuple(records.get(analysis.name, ())),
+            analysis.realisations,
+            analysis.redrawn,
+            analysis.drawn_once,
         )
         for analysis in study.analyses
     ]
@@ -251,3 +299,22 @@ def warning_lines(analysis) -> list[str]:
     if len(records) == 1:
         return list(cases)
     return [f"{warning} ({'; '.join(labels)})" for warning, labels in cases.items()]
+
+
+def realisation_lines(analysis: StoredAnalysis) -> list[str]:
+    """Return what an analysis' numbers rest on, where they rest on random draws of generated surfaces."""
+    lines = []
+    if analysis.redrawn and analysis.realisations > 1:
+        lines.append(
+            f"Each case ran on {analysis.realisations} realisations of the generated surface(s) "
+            f"{', '.join(analysis.redrawn)}; the spread table gives their mean, std and the 95 % "
+            "interval of the mean."
+        )
+    once = analysis.drawn_once if analysis.realisations > 1 else analysis.drawn_once + analysis.redrawn
+    if once:
+        lines.append(
+            f"Every number rests on one realisation of the generated surface(s) {', '.join(once)}: "
+            "another seed gives another answer. Add realisations = N (--realisations N) and leave their "
+            "seed out for the spread."
+        )
+    return lines

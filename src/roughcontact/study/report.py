@@ -23,6 +23,7 @@ from .outputs import (
     draw_figures,
     headline_rows,
     read_study,
+    realisation_lines,
     result_rows,
     warning_lines,
     write_results_table,
@@ -160,6 +161,7 @@ def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) 
         path = folder / "figures" / f"{analysis.name}_{name}.png"
         if path.exists():
             parts.append(_image(path, figure_caption(analysis.kind.figures[name])))
+    parts += [f"<p>{html.escape(line)}</p>" for line in realisation_lines(analysis)]
     warnings = warning_lines(analysis)
     if warnings:
         parts.append("<h3>Outside the model's range</h3><ul>")

@@ -491,6 +491,9 @@ def study_document(study: Study, folder: Path) -> dict[str, Any]:
                 "figures": list(analysis.figures),
                 "compare": _kept_compare(analysis, folder),
                 "sweep_axes": list(analysis.sweep_axes),
+                "realisations": analysis.realisations,
+                "redrawn": list(analysis.redrawn),
+                "drawn_once": list(analysis.drawn_once),
                 "cases": [case.case_id for case in analysis.cases],
             }
             for analysis in study.analyses

@@ -383,6 +383,42 @@ def _lateral_stiffness_table(records, context):
     return rows
 
 
+def _lateral_stiffness_spread_table(records, context):
+    """Per sample, load and point: K_L over the realisations against Mindlin's (paper 001's claim).
+
+    K_L's mean and 95 % interval of the mean [N/m], and the ratio to each Mindlin reading with its
+    own interval; ``rough vs smooth`` says whether the whole interval of the ratio lies below 1
+    (the rough ball is laterally softer than the smooth one at 95 % confidence), above 1, or
+    whether 1 lies within the realisations' scatter. None without realisations.
+    """
+    from ...spread import spread
+
+    groups: dict[tuple, list] = {}
+    for record in records:
+        inputs = (record.parameters.get("sample", ""), _number(record, "normal_force"))
+        groups.setdefault(inputs, []).append(record)
+    if all(len(group) < 2 for group in groups.values()):
+        return None
+    rows = []
+    for (sample, force), group in groups.items():
+        for point in POINTS:
+            stiffness = spread(_number(r, f"K_L_{point}") for r in group)
+            row = {"sample": sample, "normal_force [N]": force, "point": point, "n": stiffness.n}
+            row |= {"K_L mean [N/m]": stiffness.mean, "K_L 95% low [N/m]": stiffness.ci95_low}
+            row["K_L 95% high [N/m]"] = stiffness.ci95_high
+            for reading in READINGS:
+                ratio = spread(
+                    _ratio(_number(r, f"K_L_{point}"), _number(r, f"K_L_{point}_mindlin_{reading}"))
+                    for r in group
+                )
+                row[f"K_L / mindlin_{reading} mean"] = ratio.mean
+                row[f"K_L / mindlin_{reading} 95% low"] = ratio.ci95_low
+                row[f"K_L / mindlin_{reading} 95% high"] = ratio.ci95_high
+                row[f"rough vs smooth ({reading})"] = ratio.against(1.0)
+            rows.append(row)
+    return rows
+
+
 def _measured_loop_table(records, context):
     """Tabulate the measured loop's stroke, mu and K_L at A, B, C beside the simulated cases at its F0."""
     measured = _measured(context)
@@ -436,7 +472,11 @@ KIND = Kind(
             "presliding.lateral_stiffness_figure", {"measured": _measured_loop, "title": _analysis_name}
         ),
     },
-    tables={"lateral_stiffness": _lateral_stiffness_table, "measured_loop": _measured_loop_table},
+    tables={
+        "lateral_stiffness": _lateral_stiffness_table,
+        "lateral_stiffness_spread": _lateral_stiffness_spread_table,
+        "measured_loop": _measured_loop_table,
+    },
     compare=PreslidingCompare,
     check=check,
     headline=(

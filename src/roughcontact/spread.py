@@ -1,0 +1,110 @@
+r"""The spread of a quantity over independent realisations: mean, scatter and the interval of the mean.
+
+A prediction that rests on a generated surface depends on the draw. Run on N independent
+realisations (seeds derived from the study's seed, or measured spots of one sample), each
+quantity is summarised by
+
+.. math::
+
+    \bar x = \frac1N \sum_i x_i, \qquad
+    s = \sqrt{\frac{1}{N-1}\sum_i (x_i - \bar x)^2}, \qquad
+    \bar x \pm t_{0.975,\,N-1}\, \frac{s}{\sqrt N}
+
+(the sample mean, the sample standard deviation and Student's 95 % confidence interval of the
+mean), with the smallest and largest value. The interval is that of the *mean* over realisations:
+it shrinks as 1/sqrt(N); the scatter of one realisation is ``std``. Values that are not finite
+(a failed or undefined case) are left out and ``n`` counts the others.
+
+References
+----------
+Student (W. S. Gosset), "The probable error of a mean", Biometrika 6 (1908) 1-25.
+doi:10.1093/biomet/6.1.1
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+CONFIDENCE = 0.95
+"""Level of the confidence interval of the mean."""
+
+
+@dataclass(frozen=True)
+class Spread:
+    """Summary of one quantity over realisations (its unit is the values').
+
+    Attributes
+    ----------
+    n : int
+        Number of finite values.
+    mean, std : float
+        Sample mean and standard deviation (ddof = 1; NaN for n < 2).
+    ci95_low, ci95_high : float
+        Student's 95 % confidence interval of the mean (NaN for n < 2).
+    min, max : float
+        Smallest and largest value.
+    """
+
+    n: int
+    mean: float
+    std: float
+    ci95_low: float
+    ci95_high: float
+    min: float
+    max: float
+
+    @property
+    def half_width(self) -> float:
+        """Half the width of the confidence interval of the mean."""
+        return 0.5 * (self.ci95_high - self.ci95_low)
+
+    def against(self, reference: float) -> str:
+        """Say where ``reference`` lies for the mean: ``below``/``above`` it, or within its interval.
+
+        ``"below"`` when the whole 95 % interval of the mean lies below ``reference`` (the mean is
+        smaller than the reference at that confidence), ``"above"`` when it lies above, else
+        ``"within the scatter"``; ``"one realisation"`` where there is no interval (n < 2).
+        """
+        if not self.n > 1 or not math.isfinite(self.half_width):
+            return "one realisation"
+        if self.ci95_high < reference:
+            return "below"
+        if self.ci95_low > reference:
+            return "above"
+        return "within the scatter"
+
+    def row(self) -> dict[str, float | int]:
+        """Return the summary as a table row (its keys are the attribute names)."""
+        return asdict(self)
+
+
+def spread(values: Iterable[float]) -> Spread:
+    """Summarise ``values`` (one per realisation) by mean, std, 95 % interval of the mean, min and max.
+
+    Parameters
+    ----------
+    values : iterable of float
+        One value per realisation; NaN and infinite values are left out.
+
+    Returns
+    -------
+    Spread
+        With ``n = 0`` and NaN everywhere when no value is finite.
+    """
+    from scipy import stats
+
+    array = np.asarray([float(v) for v in values], dtype=float)
+    array = array[np.isfinite(array)]
+    n = int(array.size)
+    if n == 0:
+        return Spread(0, *(math.nan,) * 6)
+    mean = float(array.mean())
+    if n == 1:
+        return Spread(1, mean, math.nan, math.nan, math.nan, mean, mean)
+    std = float(array.std(ddof=1))
+    half = float(stats.t.ppf(0.5 + CONFIDENCE / 2, n - 1)) * std / math.sqrt(n)
+    return Spread(n, mean, std, mean - half, mean + half, float(array.min()), float(array.max()))

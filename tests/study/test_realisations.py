@@ -1,0 +1,150 @@
+"""Realisations as an axis of a study: N independent draws per case, and the spread of every scalar."""
+
+import csv
+import math
+import tomllib
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from roughcontact.spread import spread
+from roughcontact.study import answer
+from roughcontact.study.config import StudyError, build_study
+from roughcontact.study.outputs import spread_rows
+
+STUDY = """
+[study]
+name = "realisations"
+seed = 3
+
+[topographies.scan]
+generate = "self_affine"
+shape = 32
+size = "2 um"
+hurst = 0.8
+rms_height = "5 nm"
+
+[[analysis]]
+name = "contact"
+model = "normal"
+topography = "scan"
+material = "polysilicon"
+realisations = 4
+
+[analysis.sweep]
+mean_pressure = ["10 MPa", "40 MPa"]
+"""
+
+
+def _study(tmp_path, text=STUDY):
+    return build_study(tomllib.loads(text), folder=tmp_path, text=text, source="realisations")
+
+
+# --- the summary of one quantity -------------------------------------------------------------------
+
+
+def test_spread_of_a_known_sample():
+    values = [1.0, 2.0, 3.0, 4.0, 5.0]
+    s = spread(values)
+    assert (s.n, s.mean, s.min, s.max) == (5, 3.0, 1.0, 5.0)
+    assert s.std == pytest.approx(math.sqrt(2.5), rel=1e-14)
+    # Student's t_{0.975, 4} = 2.7764451051977987 (tables)
+    assert s.half_width == pytest.approx(2.7764451051977987 * math.sqrt(2.5) / math.sqrt(5), rel=1e-12)
+
+
+def test_spread_interval_covers_the_true_mean_at_its_level():
+    """Over many normal samples of 5, the 95 % interval of the mean holds the true mean 95 % of the time."""
+    rng = np.random.default_rng(0)
+    trials = 4000
+    covered = sum(
+        s.ci95_low <= 10.0 <= s.ci95_high for s in (spread(rng.normal(10.0, 2.0, 5)) for _ in range(trials))
+    )
+    assert covered / trials == pytest.approx(0.95, abs=3 * math.sqrt(0.95 * 0.05 / trials))
+
+
+def test_spread_leaves_out_undefined_values_and_says_one_value_has_no_scatter():
+    s = spread([2.0, math.nan, math.inf])
+    assert s.n == 1 and s.mean == 2.0 and math.isnan(s.std) and math.isnan(s.ci95_low)
+    assert spread([]).n == 0 and math.isnan(spread([]).mean)
+
+
+@settings(max_examples=50, deadline=None)
+@given(st.lists(st.floats(-1e6, 1e6, allow_nan=False), min_size=2, max_size=30))
+def test_spread_is_ordered(values):
+    s = spread(values)
+    rounding = 1e-12 * max(abs(v) for v in values)  # the mean of equal values may round past them
+    assert s.min - rounding <= s.mean <= s.max + rounding
+    assert s.ci95_low - rounding <= s.mean <= s.ci95_high + rounding
+    assert s.std >= 0
+
+
+# --- the study key ----------------------------------------------------------------------------------
+
+
+def test_realisations_make_cases_with_their_own_draws(tmp_path):
+    study = _study(tmp_path)
+    (analysis,) = study.analyses
+    assert len(analysis.cases) == 8 and analysis.realisations == 4
+    assert [c.parameters.replicate for c in analysis.cases] == [0, 1, 2, 3] * 2
+    assert len({c.seeds["scan"] for c in analysis.cases}) == 4  # one draw per realisation ...
+    assert analysis.cases[0].seeds == analysis.cases[4].seeds  # ... the same at every load
+    assert analysis.redrawn == ("scan",) and analysis.drawn_once == ()
+    assert analysis.sweep_axes == ("mean_pressure",)
+
+
+def test_spread_table_per_load_over_the_realisations(tmp_path):
+    result = answer(_study(tmp_path), tmp_path / "out")
+    rows = spread_rows(result.analyses[0])
+    approach = [r for r in rows if r["quantity"] == "approach"]
+    assert len(approach) == 2 and all(r["n"] == 4 and r["unit"] == "m" for r in approach)
+    records = [r for r in result.analyses[0].records if r.parameters["mean_pressure"] == 10e6]
+    expected = spread(r.scalars["approach"] for r in records)
+    assert approach[0]["mean"] == expected.mean and approach[0]["ci95_high"] == expected.ci95_high
+    assert not [r for r in rows if r["quantity"] == "force"]  # the control does not depend on the draw
+    with (tmp_path / "out" / "tables" / "contact_spread.csv").open() as handle:
+        stored = list(csv.DictReader(handle))
+    assert len(stored) == len(rows)
+    lines = "\n".join(result.text_lines())
+    assert "spread over 4 realisations" in lines and "Each case ran on 4 realisations" in lines
+    assert "Each case ran on 4 realisations" in (tmp_path / "out" / "report.html").read_text()
+
+
+def test_a_partly_run_ensemble_resumes(tmp_path):
+    answer(_study(tmp_path, STUDY.replace("realisations = 4", "realisations = 2")), tmp_path / "out")
+    more = answer(_study(tmp_path), tmp_path / "out", resume=True)
+    assert (more.summary.skipped, more.summary.done) == (4, 4)
+    assert {r.parameters["replicate"] for r in more.analyses[0].records} == {0, 1, 2, 3}
+
+
+def test_one_draw_says_so(tmp_path):
+    result = answer(_study(tmp_path, STUDY.replace("realisations = 4", "")))
+    assert not spread_rows(result.analyses[0])
+    assert any(
+        "rests on one realisation of the generated surface(s) scan" in line for line in result.text_lines()
+    )
+
+
+@pytest.mark.parametrize(
+    ("change", "message"),
+    [
+        ("realisations = 0", "expected a whole number >= 1"),
+        ("realisations = 2.5", "expected a whole number >= 1"),
+        ("realisations = 4\nsweep.replicate = [0, 1]", "replicate is swept"),
+    ],
+)
+def test_realisations_refused(tmp_path, change, message):
+    text = STUDY.replace("realisations = 4", change).replace(
+        "[analysis.sweep]\nmean_pressure", "sweep.mean_pressure"
+    )
+    with pytest.raises(StudyError, match=message):
+        _study(tmp_path, text)
+
+
+def test_realisations_of_a_fixed_seed_are_refused(tmp_path):
+    text = STUDY.replace('rms_height = "5 nm"', 'rms_height = "5 nm"\nseed = 7')
+    with pytest.raises(
+        StudyError, match="every realisation would draw the same surfaces.*scan have a fixed seed"
+    ):
+        _study(tmp_path, text)
