@@ -148,3 +148,34 @@ def test_realisations_of_a_fixed_seed_are_refused(tmp_path):
         StudyError, match="every realisation would draw the same surfaces.*scan have a fixed seed"
     ):
         _study(tmp_path, text)
+
+
+# --- figures of realisations ------------------------------------------------------------------------
+
+
+def test_cases_are_grouped_by_all_but_their_realisation():
+    from roughcontact.plotting.cases import ResultCase, realisations_of
+
+    cases = [
+        ResultCase(f"force=10 uN, replicate={r}", {}, None, {"force": 1e-5, "replicate": r}) for r in range(3)
+    ] + [ResultCase("force=20 uN, replicate=0", {}, None, {"force": 2e-5, "replicate": 0})]
+    groups = realisations_of(cases)
+    assert list(groups) == ["force=10 uN", "force=20 uN"]
+    assert [len(g) for g in groups.values()] == [3, 1]
+
+
+def test_mean_load_interference_curve_and_its_range():
+    from roughcontact.plotting.asperity import _mean_curve
+
+    force = np.array([0.0, 1e-4, 2e-4, 1e-4, 0.0])
+    branch = np.array(["loading"] * 3 + ["unloading"] * 2)
+    curves = [
+        {"force": force * (1 + 1e-7 * k), "branch": branch, "approach": np.arange(5.0) * (k + 1)}
+        for k in range(3)
+    ]
+    mean = _mean_curve(curves)
+    np.testing.assert_allclose(mean["approach"], np.arange(5.0) * 2)
+    np.testing.assert_allclose(mean["approach_min"], np.arange(5.0))
+    np.testing.assert_allclose(mean["approach_max"], np.arange(5.0) * 3)
+    other = {"force": force[:4], "branch": branch[:4], "approach": np.arange(4.0)}
+    assert _mean_curve([curves[0], other]) is curves[0]  # other programmes: no mean is made up

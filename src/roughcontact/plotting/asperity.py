@@ -9,7 +9,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ..units import format_si, unit_factor
-from .cases import caption, evenly_chosen, with_fields
+from .cases import caption, evenly_chosen, realisations_of, with_fields
 from .contact import plot_von_mises
 from .layout import axes_for, legend
 
@@ -31,7 +31,9 @@ def plot_load_interference(
     ----------
     curves : dict of str to dict
         Label -> curve dict with "branch", "approach" [m] and "force" [N] (``.curve()`` of a
-        :class:`~roughcontact.asperity.StatisticalLoadUnload` or an island compression).
+        :class:`~roughcontact.asperity.StatisticalLoadUnload` or an island compression); a curve
+        that is the mean over realisations also has "approach_min" and "approach_max" [m], the
+        range of the realisations at each load, shaded.
     critical_interference : float
         omega_c [m] for the abscissa.
     ax : Axes, optional
@@ -53,6 +55,12 @@ def plot_load_interference(
                 x = np.asarray(curve["approach"])[keep] / critical_interference
                 load = np.asarray(curve["force"])[keep] / _LOAD_SCALE
                 ax.plot(x, load, style, color=color, label=f"{label}, {branch}")
+                if "approach_min" in curve:
+                    low, high = (
+                        np.asarray(curve[k])[keep] / critical_interference
+                        for k in ("approach_min", "approach_max")
+                    )
+                    ax.fill_betweenx(load, low, high, color=color, alpha=0.15, linewidth=0)
     if measured is not None:
         x = np.asarray(measured["approach"]) / critical_interference
         ax.plot(x, np.asarray(measured["force"]) / _LOAD_SCALE, "k.", ms=3, label="measured")
@@ -220,15 +228,45 @@ def island_load_interference_figure(cases, statistical=None, measured=None):
     drawn, up to two); ``measured`` as for :func:`asperity_load_interference_figure`.
     """
     curves, used = _asperity_curves(statistical or {})
-    own = evenly_chosen(with_fields(cases), 5 - len(curves))
-    for case in own:
-        curve = curve_of(case)
+    own = evenly_chosen(list(realisations_of(with_fields(cases)).items()), 5 - len(curves))
+    for label, group in own:
+        curve = _mean_curve([c for c in map(curve_of, group) if c is not None])
         if curve is not None:
-            model = f"{case.parameters.get('plasticity', 'surface')} plasticity"
-            curves[f"BEM island ({model})" if len(own) == 1 else f"BEM ({model}), {case.label}"] = curve
+            model = f"BEM island ({group[0].parameters.get('plasticity', 'surface')} plasticity)"
+            if len(own) > 1 and label:
+                model += f", {label}"
+            if len(group) > 1:
+                model += f", mean of {len(group)} realisations (band: their range)"
+            curves[model] = curve
     if not curves:
         return None
     return draw_load_interference(curves, common_omega_c(used), measured)
+
+
+def _mean_curve(curves: list[dict]) -> dict | None:
+    """Return the mean load-interference curve of realisations under one force programme, with its range.
+
+    The curves must share their forces (to 1e-4: each is reached to its solver's tolerance) and
+    branches (the same programme); the mean and range are of the interference at each force. One
+    curve is returned as it is; None for none, and the first curve where the programmes differ.
+    """
+    if len(curves) < 2:
+        return curves[0] if curves else None
+    first = curves[0]
+    same = all(
+        c["force"].shape == first["force"].shape
+        and np.array_equal(c["branch"], first["branch"])
+        and np.allclose(c["force"], first["force"], rtol=1e-4, atol=1e-6 * np.max(np.abs(first["force"])))
+        for c in curves
+    )
+    if not same:
+        return first
+    approaches = np.array([c["approach"] for c in curves])
+    return first | {
+        "approach": approaches.mean(axis=0),
+        "approach_min": approaches.min(axis=0),
+        "approach_max": approaches.max(axis=0),
+    }
 
 
 def _first_case_panels(cases, name: str, *, height: float):

@@ -163,6 +163,23 @@ def grouped(cases: Sequence[FigureCase], key: str = "sample") -> dict[str, list[
     return groups
 
 
+def realisations_of(cases: Sequence[FigureCase]) -> dict[str, list[FigureCase]]:
+    """Return the cases grouped by everything but their realisation, each group by its label without it.
+
+    Cases that differ only in ``replicate`` (the realisations of a study's generated surfaces)
+    are one group; the key is the label of its cases with ``replicate=...`` left out.
+    """
+    groups: dict[str, list[FigureCase]] = {}
+    for case in cases:
+        inputs = {k: v for k, v in case.parameters.items() if k != "replicate"}
+        key = repr(sorted(inputs.items(), key=lambda item: item[0]))
+        groups.setdefault(key, []).append(case)
+    return {
+        ", ".join(p for p in group[0].label.split(", ") if not p.startswith("replicate=")): group
+        for group in groups.values()
+    }
+
+
 def with_fields(cases: Sequence[FigureCase]) -> list[FigureCase]:
     """Return the cases that hold fields and curves."""
     return [case for case in cases if case.has_fields]
