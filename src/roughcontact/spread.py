@@ -23,6 +23,8 @@ doi:10.1093/biomet/6.1.1
 
 from __future__ import annotations
 
+import hashlib
+import json
 import math
 from collections.abc import Iterable
 from dataclasses import asdict, dataclass
@@ -31,6 +33,17 @@ import numpy as np
 
 CONFIDENCE = 0.95
 """Level of the confidence interval of the mean."""
+
+
+def realisation_seed(base: int, *keys: str | int) -> int:
+    """Return the seed of one realisation: a hash of the base seed and what names the draw.
+
+    A study derives the seed of a generated topography from (study seed, topography name,
+    sample, replicate); Python routes to the same scenario (paper 000's scans) call this with the
+    same keys and draw the same surfaces. 32 bits of SHA-256 of the JSON list ``[base, *keys]``.
+    """
+    text = json.dumps([base, *keys])
+    return int(hashlib.sha256(text.encode()).hexdigest()[:8], 16)
 
 
 @dataclass(frozen=True)

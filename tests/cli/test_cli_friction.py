@@ -140,3 +140,23 @@ def test_friction_compare_paper000_synthetic_case_runs(capsys):
     status, out, err = run(capsys, "friction-compare", EXAMPLE, "--grid", "64")
     assert status == 0, err
     assert "pearson_r" in out and "Ra 1.7 nm" in out
+
+
+def test_friction_compare_gives_the_example_csvs_stated_p_values(capsys, table):
+    """One realisation set: the command's scans are paper000_simulation()'s, the CSV was built on them."""
+    import numpy as np
+
+    from roughcontact.papers.paper000 import paper000_simulation
+
+    status, out, err = run(capsys, "friction-compare", EXAMPLE, "--json")
+    assert status == 0, err
+    rows = {row["sample"]: row for row in table(out, "comparison")}
+    header = EXAMPLE.read_text()
+    assert "0.13, 0.12, 0.79" in header
+    for sample, p_value in {"Ra 1.45 nm": 0.13, "Ra 1.49 nm": 0.12, "Ra 1.7 nm": 0.79}.items():
+        assert rows[sample]["p_value"] == pytest.approx(p_value, abs=1e-4)  # the CSV keeps 6 decimals of mu
+    simulated = paper000_simulation()
+    for sample, values in simulated.items():
+        assert rows[sample]["simulated_mean"] == pytest.approx(float(np.mean(values)), rel=1e-12)
+    (trend,) = table(out, "ra_trend")
+    assert trend["n"] == 21 and trend["trend"] == "within the scatter"  # synthetic scans: mu flat in Ra

@@ -106,15 +106,17 @@ def test_example_end_to_end_reproduces_section_iv_and_draws_kke_against_bem(cli,
     assert "kke" in report and "bem" in report and "paper002" in report
     assert report.count("data:image/png;base64") >= 4
 
-    # The combined figure (paper 002 Fig. 7): the KKE curve of the other analysis, both BEM
-    # replicates and the measured points, on the KKE analysis' omega_c.
+    # The combined figure (paper 002 Fig. 7): the KKE curve of the other analysis, the mean of both
+    # BEM replicates and the measured points, on the KKE analysis' omega_c.
     _, analyses = read_study(out)
     analysis = next(a for a in analyses if a.name == "bem")
     figure = analysis.kind.figures["load_interference"](analysis.finished, context(analysis, analyses))
     ax = figure.axes[0]
     labels = [line.get_label() for line in ax.get_lines()]
     assert "KKE (kogut_etsion), loading" in labels and "KKE (kogut_etsion), unloading" in labels
-    assert sum(label.startswith("BEM") for label in labels) == 4  # two replicates x two branches
+    bem = [label for label in labels if label.startswith("BEM")]  # the mean of the two replicates
+    assert len(bem) == 2 and all("mean of 2 realisations" in label for label in bem)
+    assert len(ax.collections) == 2  # the range of the replicates shaded, loading and unloading
     assert "measured" in labels
     assert ax.get_xlabel() == "interference ω/ω_c"
     kke_loading = ax.get_lines()[labels.index("KKE (kogut_etsion), loading")]

@@ -278,7 +278,10 @@ def add_commands(commands) -> None:
         "--seed", type=int, default=0, help="without --sample: seed of the synthetic scans"
     )
     comparison.add_argument(
-        "--grid", type=int, default=256, help="without --sample: points per side of the 20 nm-pixel scans"
+        "--grid",
+        type=int,
+        default=paper000.SCAN_PIXELS,
+        help=f"without --sample: points per side of the 20 nm-pixel scans (default {paper000.SCAN_PIXELS})",
     )
     add_realisations(
         comparison,

@@ -23,6 +23,7 @@ from .._deprecation import renamed
 from ..contact.adhesive import solve_adhesive
 from ..contact.interaction import LennardJones
 from ..materials import Material, get_material
+from ..spread import realisation_seed
 from ..topography import Topography
 from ..topography.generate import self_affine, sphere_with_roughness
 from ..topography.process import scale_to_ra
@@ -35,6 +36,9 @@ PAPER000_SAMPLES: Mapping[str, float] = {"Ra 1.45 nm": 1.45e-9, "Ra 1.49 nm": 1.
 
 PIXEL = 20e-9
 """Scan step of paper 000 [m] (the spring size S = PIXEL^2)."""
+
+SCAN_PIXELS = 250
+"""Points per side of paper 000's scans (5 um at 20 nm steps)."""
 
 MATERIAL, TIP_MATERIAL = "polysilicon", "SiO2"
 """The library materials of the samples and of the tip (sec. 4)."""
@@ -160,13 +164,13 @@ def paper000_model(
     )
 
 
-def paper000_tip(*, shape: int = 256, rms_height: float = TIP_ROUGHNESS, seed: int = 0) -> Topography:
+def paper000_tip(*, shape: int = SCAN_PIXELS, rms_height: float = TIP_ROUGHNESS, seed: int = 0) -> Topography:
     """Return a synthetic AFM tip of paper 000: a paraboloid of radius 1 um with roughness, 20 nm pixels.
 
     Parameters
     ----------
     shape : int
-        Grid points per side (256: 5.12 um, close to the paper's 5 um scans).
+        Grid points per side (250: the paper's 5 um scans).
     rms_height : float
         Rq of the tip roughness [m].
     seed : int
@@ -182,7 +186,9 @@ def paper000_tip(*, shape: int = 256, rms_height: float = TIP_ROUGHNESS, seed: i
     )
 
 
-def paper000_scans(roughness: float, *, count: int = 7, shape: int = 256, seed: int = 0) -> list[Topography]:
+def paper000_scans(
+    roughness: float, *, count: int = 7, shape: int = SCAN_PIXELS, seed: int = 0
+) -> list[Topography]:
     """Return ``count`` synthetic polysilicon scans of exact Ra ``roughness``, 20 nm pixels.
 
     Parameters
@@ -204,7 +210,7 @@ def paper000_scans(roughness: float, *, count: int = 7, shape: int = 256, seed: 
     return [paper000_scan(roughness, shape=shape, seed=seed + i) for i in range(count)]
 
 
-def paper000_scan(roughness: float, *, shape: int = 256, seed: int = 0) -> Topography:
+def paper000_scan(roughness: float, *, shape: int = SCAN_PIXELS, seed: int = 0) -> Topography:
     """Return one synthetic polysilicon scan of exact Ra ``roughness`` [m], 20 nm pixels, ``shape`` per side.
 
     A periodic self-affine surface (Hurst :data:`HURST`, assumed) scaled to the sample's Ra: the
@@ -223,7 +229,7 @@ def paper000_simulation(
     scans: Mapping[str, Sequence[Topography]] | None = None,
     tip: Topography | None = None,
     count: int = SCANS_PER_SAMPLE,
-    shape: int = 256,
+    shape: int = SCAN_PIXELS,
     seed: int = 0,
 ) -> dict[str, np.ndarray]:
     """Return the simulated mu per scan for the three polysilicon samples of paper 000 against the SiO2 tip.
@@ -237,11 +243,14 @@ def paper000_simulation(
     readings : Readings, optional
         Readings of the disputed equations.
     scans : mapping of str to sequence of Topography, optional
-        Measured scans per sample; default synthetic ones (:func:`paper000_scans`).
+        Measured scans per sample; default synthetic ones (:func:`paper000_scan`), scan ``i`` of
+        a sample drawn with ``realisation_seed(seed, "scan", sample, i)``
+        (:func:`roughcontact.spread.realisation_seed`): the scans of the study
+        ``examples/paper000.toml`` and of ``roughcontact friction-compare`` with the same seed.
     tip : Topography, optional
-        Measured tip topography on the scans' grid; default :func:`paper000_tip`.
+        Measured tip topography on the scans' grid; default :func:`paper000_tip` of seed ``seed``.
     count, shape, seed : int
-        Size of the synthetic data set: scans per sample, grid points per side, first seed.
+        Size of the synthetic data set: scans per sample, grid points per side, the study seed.
 
     Returns
     -------
@@ -250,8 +259,11 @@ def paper000_simulation(
     """
     if scans is None:
         scans = {
-            name: paper000_scans(roughness, count=count, shape=shape, seed=seed + 100 * k)
-            for k, (name, roughness) in enumerate(PAPER000_SAMPLES.items())
+            name: [
+                paper000_scan(roughness, shape=shape, seed=realisation_seed(seed, "scan", name, replicate))
+                for replicate in range(count)
+            ]
+            for name, roughness in PAPER000_SAMPLES.items()
         }
     if tip is None:
         tip = paper000_tip(shape=next(iter(scans.values()))[0].shape[0], seed=seed)

@@ -60,6 +60,7 @@ from pydantic import BaseModel
 from .._files import read_text
 from ..errors import InputError, MissingMetadataError, UndefinedPointsError
 from ..materials import MATERIALS, Material, get_material
+from ..spread import realisation_seed
 from ..topography import Topography
 from ..topography.io import channel_of
 from ..units import format_si
@@ -233,11 +234,6 @@ def references(schema: type[BaseModel], kind: str) -> list[str]:
         for name in schema.model_fields
         if any(isinstance(m, Reference) and m.kind == kind for m in field_metadata(schema, name))
     ]
-
-
-def _derived_seed(study_seed: int, topography: str, sample: str, replicate: int) -> int:
-    text = json.dumps([study_seed, topography, sample, replicate])
-    return int(hashlib.sha256(text.encode()).hexdigest()[:8], 16)
 
 
 def _drawn(spec: Strict) -> bool:
@@ -491,7 +487,9 @@ class _Builder:
         if spec is None:
             return
         if "seed" in type(spec).model_fields and spec.seed is None:
-            seed = _derived_seed(self.section.seed if self.section else 0, name, case.sample, case.replicate)
+            seed = realisation_seed(
+                self.section.seed if self.section else 0, name, case.sample, case.replicate
+            )
             spec = spec.model_copy(update={"seed": seed})
         found[name] = spec
         if isinstance(spec, Combined):

@@ -349,7 +349,7 @@ class Paper000Scan(Strict):
     generate: Literal["paper000_scan"]
     ra: Length | None = None
     sample: str | None = None
-    shape: int = Field(default=256, ge=2)
+    shape: int = Field(default=250, ge=2)
     seed: int | None = None
 
     @model_validator(mode="after")
@@ -391,7 +391,7 @@ class Paper000Tip(Strict):
     """Paper 000's rough SiO2 sphere, 20 nm pixels (:func:`~roughcontact.papers.paper000.paper000_tip`)."""
 
     generate: Literal["paper000_tip"]
-    shape: int = Field(default=256, ge=2)
+    shape: int = Field(default=250, ge=2)
     seed: int | None = None
 
     grid = Paper000Scan.grid

@@ -96,6 +96,7 @@ from pydantic_core import PydanticCustomError
 from ...errors import InputError
 from ...papers import paper000
 from ...plotting.cases import at_load, by_sample, grouped, loads_of
+from ...topography import statistics
 from ...winkler_lj import WinklerLJResult
 from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind, figure, fill_from_paper
 from ..schema import Force, Length, MaterialName, Pressure, Strict, SurfaceEnergy, Time, TopographyName
@@ -423,6 +424,7 @@ def run(parameters: FrictionParameters, inputs) -> CaseOutput:
     ):
         scalars[name] = constants[name]
     scalars["load_capacity"] = model.load_capacity()
+    scalars["surface_ra"] = statistics.ra(inputs.topography(parameters.topography))
     if parameters.crossover:
         scalars["crossover_load"] = model.crossover_load()
     return CaseOutput(scalars, _cropped(result), tuple(result.range_warnings()))
@@ -544,6 +546,48 @@ def _by_sample(records, context):
     return rows if any(row["n"] > 1 for row in rows) else None
 
 
+def _ra_trend(records, context):
+    """Whether simulated mu changes with the samples' Ra beyond the scatter of the realisations.
+
+    Per load, over every case: the least-squares slope of mu against the Ra of the sample's
+    surface (``surface_ra``) with its 95 % interval and p value (``scipy.stats.linregress``),
+    and the one-way ANOVA of mu across the samples (``scipy.stats.f_oneway``). ``trend`` says
+    ``mu rises with Ra`` / ``mu falls with Ra`` where the slope's interval excludes 0, else
+    ``within the scatter``. None with fewer than two samples or without realisations.
+    """
+    from scipy import stats
+
+    rows = []
+    for load in loads_of(records):
+        chosen = [r for r in at_load(records, load) if r.scalars.get("surface_ra") is not None]
+        samples = grouped(chosen)
+        if len(samples) < 2 or len(chosen) <= len(samples):
+            continue
+        ra = np.array([float(r.scalars["surface_ra"]) for r in chosen])
+        mu = np.array([float(r.scalars["mu"]) for r in chosen])
+        if np.ptp(ra) <= 1e-12 * ra.max():
+            continue
+        fit = stats.linregress(ra, mu)
+        half = float(stats.t.ppf(0.975, ra.size - 2)) * fit.stderr
+        anova = stats.f_oneway(*[[float(r.scalars["mu"]) for r in group] for group in samples.values()])
+        low, high = fit.slope - half, fit.slope + half
+        trend = "mu rises with Ra" if low > 0 else "mu falls with Ra" if high < 0 else "within the scatter"
+        rows.append(
+            {
+                "normal_force [N]": load,
+                "samples": len(samples),
+                "n": ra.size,
+                "dmu_dRa [1/m]": fit.slope,
+                "dmu_dRa 95% low [1/m]": low,
+                "dmu_dRa 95% high [1/m]": high,
+                "slope_p_value": fit.pvalue,
+                "anova_p_value": float(anova.pvalue),
+                "trend": trend,
+            }
+        )
+    return rows or None
+
+
 class FrictionCompare(Strict):
     """The ``[analysis.compare]`` table of a friction analysis: measured mu per sample.
 
@@ -584,13 +628,14 @@ KIND = Kind(
         "work_of_adhesion": "J/m^2",
         "spring_stiffness": "Pa/m",
         "spring_area": "m^2",
+        "surface_ra": "m",
     },
     figures={
         "friction_vs_load": figure("friction.friction_vs_load_figure"),
         "mu_boxes": figure("friction.mu_boxes_figure", {"comparison": _comparison_or_none}),
         "mu_means": figure("friction.mu_means_figure", {"comparison": _comparison_or_none}),
     },
-    tables={"comparison": _comparison_table, "by_sample": _by_sample},
+    tables={"comparison": _comparison_table, "by_sample": _by_sample, "ra_trend": _ra_trend},
     compare=FrictionCompare,
     headline=("mu", "adhesive_friction", "mechanical_friction", "adhesive_to_mechanical", "crossover_load"),
     renamed={
