@@ -36,7 +36,8 @@ REDUCED = {
     "layers = 16": "layers = 8",
     "steps = 40": "steps = 8",
     "load_steps = 10": "load_steps = 5",
-    "replicate = [0, 1, 2]": "replicate = [0, 1]",
+    "realisations = 5                # five realisations of the synthetic": "realisations = 2 #",
+    "realisations = 5                # five realisations of the island": "realisations = 1 #",
     "# [analysis.compare]\n# measured_curve": "[analysis.compare]\nmeasured_curve",
 }
 # Section IV of paper 002 as printed (eqs. 4, 5, 6, 9); the standard E' reproduces them.
@@ -81,6 +82,15 @@ def test_example_end_to_end_reproduces_section_iv_and_draws_kke_against_bem(cli,
         assert float(row["max_pressure [Pa]"]) <= SU8.hardness
     # the two replicates are two realisations of the island (derived seeds)
     assert bem[0]["peak_interference [m]"] != bem[1]["peak_interference [m]"]
+    # KKE's peak against the BEM's over its realisations, with its interval and a verdict
+    (against,) = read_table(out / "tables" / "bem_against_statistical.csv")
+    peaks = [float(row["peak_interference [m]"]) for row in bem]
+    assert float(against["bem_peak_interference mean [m]"]) == pytest.approx(np.mean(peaks), rel=1e-12)
+    assert float(against["statistical_peak_interference [m]"]) == float(kke["peak_interference [m]"])
+    low, high = (float(against[f"bem_peak_interference 95% {end} [m]"]) for end in ("low", "high"))
+    peak = float(kke["peak_interference [m]"])
+    expected = "over-predicts" if high < peak else "under-predicts" if low > peak else "within the scatter"
+    assert against["statistical model"] == expected and against["n"] == "2"
     # plasticity in the volume: the yield strength of Table I, and stress left at zero load
     assert float(volume["yield_strength [Pa]"]) == SU8.yield_strength
     assert float(volume["max_residual_von_mises [Pa]"]) > 0

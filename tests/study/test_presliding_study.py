@@ -26,7 +26,8 @@ ZIP = 'normal_force = ["25 mN", "50 mN", "75 mN", "25 mN", "50 mN", "75 mN"]'
 """The example's loads; paper001 = true adds Table 1's stroke and mu to each."""
 SMALL = {
     "shape = 256": "shape = 128",
-    "window = 64 ": "window = 40 ",
+    "window = 128 ": "window = 40 ",
+    "realisations = 5 ": "realisations = 1 ",
     "cycles = 4 ": "cycles = 2 ",
     "steps_per_stroke = 24": "steps_per_stroke = 12",
     'sample = ["HDPE", "HDPE", "HDPE", "POM", "POM", "POM"]': 'sample = ["HDPE", "HDPE", "POM"]',
@@ -191,11 +192,12 @@ def test_bad_values_are_refused_naming_the_field(cli, shrunk, tmp_path, replacem
 def test_the_full_resolution_example_is_paper001_at_the_papers_pixels(examples):
     """examples/paper001_full.toml differs from paper001.toml only in the grid and the window."""
     coarse, full = load_study(examples / "paper001.toml"), load_study(examples / "paper001_full.toml")
-    assert len(full.cases) == len(coarse.cases) == 6
-    for a, b in zip(coarse.cases, full.cases, strict=True):
-        assert a.axes == b.axes and a.materials == b.materials
-        assert b.parameters.window == 448 and a.parameters.window == 64
-        assert b.parameters.model_copy(update={"window": 64}) == a.parameters
+    first = [case for case in coarse.cases if case.parameters.replicate == 0]  # coarse: five balls per load
+    assert len(full.cases) == len(first) == 6 and len(coarse.cases) == 30
+    for a, b in zip(first, full.cases, strict=True):
+        assert {k: v for k, v in a.axes.items() if k != "replicate"} == b.axes and a.materials == b.materials
+        assert b.parameters.window == 448 and a.parameters.window == 128
+        assert b.parameters.model_copy(update={"window": 128}) == a.parameters
         for name, ball in b.topographies.items():
             assert ball.shape == 1024 and a.topographies[name].shape == 256
             assert (

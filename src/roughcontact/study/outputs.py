@@ -172,9 +172,9 @@ def spread_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
     A group is the cases that differ only in their realisation (``replicate``): same sample and
     swept values. Each numeric scalar of the group's finished cases is summarised by
     :func:`roughcontact.spread.spread` (n, mean, std, 95 % interval of the mean, min, max),
-    with its SI ``unit``. A scalar equal in every realisation (to 1e-9 relative: an input such as
-    the force of a force-controlled case, or a material constant) does not depend on the draw and
-    is left out. Empty for an analysis of one realisation.
+    with its SI ``unit``. A scalar equal in every realisation to 1e-6 relative (an input such as
+    the force of a force-controlled case, reached to its solver's tolerance, or a material
+    constant) does not depend on the draw and is left out. Empty for an analysis of one realisation.
     """
     from ..spread import spread
 
@@ -190,7 +190,7 @@ def spread_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
         names = dict.fromkeys(n for r in records for n, v in r.scalars.items() if _numeric(v))
         for name in names:
             summary = spread(r.scalars[name] for r in records if _numeric(r.scalars.get(name)))
-            if summary.n > 1 and summary.max - summary.min <= 1e-9 * max(abs(summary.max), abs(summary.min)):
+            if summary.n > 1 and summary.max - summary.min <= 1e-6 * max(abs(summary.max), abs(summary.min)):
                 continue
             rows.append(where | {"quantity": name, "unit": units.get(name) or ""} | summary.row())
     return rows

@@ -316,6 +316,48 @@ def _statistical(records, context) -> dict[str, list]:
     return {name: list(cases) for name, (model, cases) in context.others.items() if model == "asperity"}
 
 
+def _against_statistical(records, context):
+    """Return the BEM's peak interference over its realisations against each statistical (KKE) prediction.
+
+    Per group of realisations (cases that differ only in ``replicate``) and per case of the
+    study's ``asperity`` analyses: the BEM's mean peak interference with its 95 % interval, the
+    statistical peak, both over the statistical omega_c, and ``statistical model`` saying whether it
+    over- or under-predicts the BEM's mean at 95 % confidence, or lies within the realisations'
+    scatter (paper 002 sec. V: "KKE slightly over-predicts"). None without an asperity analysis.
+    """
+    from ...plotting.cases import realisations_of
+    from ...spread import spread
+
+    statistical = [(name, case) for name, cases in _statistical(records, context).items() for case in cases]
+    statistical = [(n, c) for n, c in statistical if c.scalars.get("peak_interference") is not None]
+    if not statistical:
+        return None
+    verdicts = {"below": "over-predicts", "above": "under-predicts"}
+    rows = []
+    for label, group in realisations_of(records).items():
+        bem = spread(r.scalars.get("peak_interference", float("nan")) for r in group)
+        for name, case in statistical:
+            peak, omega_c = (
+                float(case.scalars["peak_interference"]),
+                float(case.scalars["critical_interference"]),
+            )
+            rows.append(
+                {
+                    "bem": label or context.analysis,
+                    "statistical": f"{name} ({case.parameters.get('law', '')})",
+                    "n": bem.n,
+                    "bem_peak_interference mean [m]": bem.mean,
+                    "bem_peak_interference 95% low [m]": bem.ci95_low,
+                    "bem_peak_interference 95% high [m]": bem.ci95_high,
+                    "statistical_peak_interference [m]": peak,
+                    "bem_peak_over_omega_c": bem.mean / omega_c,
+                    "statistical_peak_over_omega_c": peak / omega_c,
+                    "statistical model": verdicts.get(bem.against(peak), bem.against(peak)),
+                }
+            )
+    return rows
+
+
 KIND = Kind(
     name="load_unload",
     summary="elastic-plastic load-unload of a surface or a film island against a rigid flat punch "
@@ -330,6 +372,7 @@ KIND = Kind(
         "von_mises": figure("asperity.island_von_mises_figure"),
         "von_mises_section": figure("asperity.von_mises_section_figure"),
     },
+    tables={"against_statistical": _against_statistical},
     compare=MeasuredCurve,
     headline=("peak_interference", "residual_interference", "peak_contact_area", "max_von_mises_at_peak"),
     renamed={"surface": "topography", "peak_force": "max_force"},
