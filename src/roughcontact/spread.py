@@ -90,6 +90,20 @@ class Spread:
             return "above"
         return "within the scatter"
 
+    def prediction(self) -> tuple[float, float]:
+        r"""Return the 95 % prediction interval of one more realisation (NaN for n < 2).
+
+        :math:`\bar x \pm t_{0.975, N-1}\, s \sqrt{1 + 1/N}`: where a single new draw (or one
+        measurement of a spot, if the model holds) falls 95 % of the time. Compare one measured
+        value with this, not with the interval of the mean.
+        """
+        if self.n < 2:
+            return math.nan, math.nan
+        from scipy import stats
+
+        half = float(stats.t.ppf(0.5 + CONFIDENCE / 2, self.n - 1)) * self.std * math.sqrt(1 + 1 / self.n)
+        return self.mean - half, self.mean + half
+
     def row(self) -> dict[str, float | int]:
         """Return the summary as a table row (its keys are the attribute names)."""
         return asdict(self)

@@ -179,3 +179,26 @@ def test_mean_load_interference_curve_and_its_range():
     np.testing.assert_allclose(mean["approach_max"], np.arange(5.0) * 3)
     other = {"force": force[:4], "branch": branch[:4], "approach": np.arange(4.0)}
     assert _mean_curve([curves[0], other]) is curves[0]  # other programmes: no mean is made up
+
+
+def test_prediction_interval_of_one_more_realisation():
+    s = spread([1.0, 2.0, 3.0, 4.0, 5.0])
+    low, high = s.prediction()
+    half = 2.7764451051977987 * math.sqrt(2.5) * math.sqrt(1 + 1 / 5)
+    assert (low, high) == (pytest.approx(3.0 - half, rel=1e-12), pytest.approx(3.0 + half, rel=1e-12))
+    assert all(math.isnan(v) for v in spread([1.0]).prediction())
+
+
+def test_one_measured_loop_against_the_realisations_scatter():
+    from roughcontact.study.kinds.presliding import _realisations_row
+
+    simulated = [
+        {"sample": "HDPE", "normal_force [N]": 0.025} | {f"K_L_{p} [N/m]": value for p in "ABC"}
+        for value in (30e3, 35e3, 40e3, 45e3, 50e3)
+    ]
+    row = _realisations_row(simulated, {"A": 40e3, "B": 80e3, "C": 20e3})  # 40 +- 24.0 kN/m
+    assert row["K_L_A [N/m]"] == pytest.approx(40e3) and row["K_L_B simulated / measured"] == pytest.approx(
+        0.5
+    )
+    inside = "measured in the realisations' 95% prediction"
+    assert (row[f"K_L_A {inside}"], row[f"K_L_B {inside}"], row[f"K_L_C {inside}"]) == (True, False, True)

@@ -453,7 +453,30 @@ def _measured_loop_table(records, context):
             simulated[f"K_L_{point} [N/m]"] = value
             simulated[f"K_L_{point} simulated / measured"] = _ratio(value, analysis.lateral_stiffness[point])
         rows.append(simulated)
+    if len(rows) > 2:
+        rows.append(_realisations_row(rows[1:], analysis.lateral_stiffness))
     return rows
+
+
+def _realisations_row(simulated: list[dict], measured: Mapping[str, float]) -> dict:
+    """Return the simulated cases' mean K_L and whether the measured K_L lies within their scatter.
+
+    The measured loop is one spot: it is compared with the 95 % prediction interval of one
+    realisation (:meth:`roughcontact.spread.Spread.prediction`), not with the interval of the mean.
+    """
+    from ...spread import spread
+
+    row = {"source": f"simulated: mean of {len(simulated)} realisations", "sample": simulated[0]["sample"]}
+    row["normal_force [N]"] = simulated[0]["normal_force [N]"]
+    for point in POINTS:
+        summary = spread(r[f"K_L_{point} [N/m]"] for r in simulated)
+        low, high = summary.prediction()
+        row[f"K_L_{point} [N/m]"] = summary.mean
+        row[f"K_L_{point} simulated / measured"] = _ratio(summary.mean, measured[point])
+        row[f"K_L_{point} measured in the realisations' 95% prediction"] = bool(
+            low <= measured[point] <= high
+        )
+    return row
 
 
 KIND = Kind(
