@@ -140,7 +140,10 @@ def test_demo_runs_the_embedded_study_and_writes_its_report(capsys, tmp_path):
     afm = next(row for row in rows if row["analysis"] == "afm_scan")
     assert float(afm["size_x [m]"]) == pytest.approx(600e-9)  # the scan's size, from its file
     friction = [row for row in rows if row["analysis"] == "paper000_friction"]
-    assert [row["sample"] for row in friction] == ["Ra 1.45 nm", "Ra 1.49 nm", "Ra 1.7 nm"]
+    samples = ["Ra 1.45 nm", "Ra 1.49 nm", "Ra 1.7 nm"]  # five realisations of each: mu with its spread
+    assert [row["sample"] for row in friction] == samples * 5
+    assert sorted({row["replicate"] for row in friction}) == ["0", "1", "2", "3", "4"]
+    assert (tmp_path / "tables" / "paper000_friction_spread.csv").exists()
     assert all(0 < float(row["mu"]) < 5 for row in friction)
     with (tmp_path / "tables" / "paper002_kke_paper002.csv").open() as handle:
         paper002 = {row["quantity"]: row for row in csv.DictReader(handle)}
