@@ -11,7 +11,9 @@ quantity is summarised by
     \bar x \pm t_{0.975,\,N-1}\, \frac{s}{\sqrt N}
 
 (the sample mean, the sample standard deviation and Student's 95 % confidence interval of the
-mean), with the smallest and largest value. The interval is that of the *mean* over realisations:
+mean), with the smallest and largest value. The other uncertainty of a computed number, that of
+its grid, is estimated by :func:`convergence_order` (observed order and Richardson extrapolation
+over three grids). The interval is that of the *mean* over realisations:
 it shrinks as 1/sqrt(N); the scatter of one realisation is ``std``. Values that are not finite
 (a failed or undefined case) are left out and ``n`` counts the others.
 
@@ -135,3 +137,30 @@ def spread(values: Iterable[float]) -> Spread:
     std = float(array.std(ddof=1))
     half = float(stats.t.ppf(0.5 + CONFIDENCE / 2, n - 1)) * std / math.sqrt(n)
     return Spread(n, mean, std, mean - half, mean + half, float(array.min()), float(array.max()))
+
+
+def convergence_order(sizes: list[float], values: list[float]) -> tuple[float, float] | None:
+    r"""Return the observed order of convergence and the Richardson extrapolation of three grids.
+
+    ``sizes`` are the three finest pixel sizes h (any order), ``values`` the quantity on each.
+    Solves :math:`(w_3 - w_2)/(w_2 - w_1) = (h_3^p - h_2^p)/(h_2^p - h_1^p)` for p (h1 < h2 < h3)
+    and extrapolates :math:`w_0 = w_1 - (w_2 - w_1)\, h_1^p / (h_2^p - h_1^p)`. None with fewer
+    than three grids, or where the differences do not shrink monotonically (no asymptotic range).
+    """
+    from scipy import optimize
+
+    if len(sizes) < 3:
+        return None
+    (h1, w1), (h2, w2), (h3, w3) = sorted(zip(sizes, values, strict=True))[:3]
+    ratio = (w3 - w2) / (w2 - w1) if w2 != w1 else float("inf")
+    if not (math.isfinite(ratio) and ratio > 0):
+        return None
+
+    def excess(p: float) -> float:
+        return (h3**p - h2**p) / (h2**p - h1**p) - ratio
+
+    try:
+        p = optimize.brentq(excess, 1e-3, 10.0)
+    except ValueError:
+        return None
+    return p, w1 - (w2 - w1) * h1**p / (h2**p - h1**p)

@@ -243,6 +243,50 @@ def island_load_interference_figure(cases, statistical=None, measured=None):
     return draw_load_interference(curves, common_omega_c(used), measured)
 
 
+@caption(
+    "Peak interference at the peak load against the number of grid points of the island (paper 002 "
+    "Fig. 6): mean and standard deviation over the realisations at each grid, with the observed order "
+    "of convergence and the Richardson extrapolation of the three finest grids."
+)
+def mesh_convergence_figure(cases):
+    """Draw paper 002's Fig. 6: the peak interference against the grid points (None for one grid)."""
+    from ..spread import convergence_order, spread
+    from .layout import legend
+
+    grids: dict[int, list[float]] = {}
+    for case in cases:
+        if case.scalars.get("grid_points") is not None:
+            grids.setdefault(int(case.scalars["grid_points"]), []).append(
+                float(case.scalars["peak_interference"])
+            )
+    if len(grids) < 2:
+        return None
+    points = sorted(grids)
+    spreads = [spread(grids[n]) for n in points]
+    means = np.array([s.mean for s in spreads])
+    errors = np.array([0.0 if not np.isfinite(s.std) else s.std for s in spreads])
+    fig, ax = axes_for(None, figsize=(5.5, 4.0))
+    count = max(s.n for s in spreads)
+    label = "BEM island" + (f", mean ± std of {count} realisations" if count > 1 else "")
+    ax.errorbar(points, means * 1e9, yerr=errors * 1e9, fmt="o-", capsize=3, label=label)
+    order = convergence_order([1 / np.sqrt(n) for n in points[-3:]], list(means[-3:]))
+    if order is not None:
+        p, extrapolated = order
+        ax.axhline(
+            extrapolated * 1e9,
+            color="0.4",
+            linestyle="--",
+            linewidth=1.0,
+            label=f"Richardson extrapolation {extrapolated * 1e9:.4g} nm (observed order {p:.2f})",
+        )
+    ax.set_xscale("log")
+    ax.set_xlabel("grid points (elements)")
+    ax.set_ylabel("peak interference ω_max (nm)")
+    ax.grid(True, alpha=0.3)
+    legend(ax, fontsize="small")
+    return fig
+
+
 def _mean_curve(curves: list[dict]) -> dict | None:
     """Return the mean load-interference curve of realisations under one force programme, with its range.
 

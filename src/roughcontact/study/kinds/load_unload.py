@@ -260,6 +260,10 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
             for i in sorted({*chosen, peak_index})
         }
     scalars = compression.scalars() | {"max_von_mises_at_peak": float(maps[peak_index].max())}
+    scalars |= {
+        "grid_points": int(surface.heights.size),
+        "pixel_size": float(surface.size[0] / surface.shape[0]),
+    }
     dataset = compression.to_xarray()
     dataset.attrs["stress_depth"] = stress_depth
     dataset.attrs["plasticity"] = parameters.plasticity
@@ -316,6 +320,50 @@ def _statistical(records, context) -> dict[str, list]:
     return {name: list(cases) for name, (model, cases) in context.others.items() if model == "asperity"}
 
 
+def _mesh_convergence(records, context):
+    """Return the peak interference against the grid (paper 002 Fig. 6) and its order of convergence.
+
+    Per grid (``grid_points``; the mean over the realisations at each), the peak interference;
+    with three grids or more, the finest row adds the observed order and the Richardson
+    extrapolation of the three finest (:func:`roughcontact.spread.convergence_order`) and the
+    finest grid's relative distance from it. Another grid is the same surface only with a
+    generator of ``modes = "wavevector"`` (one realisation at any resolution). None with fewer
+    than two grids.
+    """
+    from ...spread import convergence_order, spread
+
+    grids: dict[int, list] = {}
+    for record in records:
+        if record.scalars.get("grid_points") is not None:
+            grids.setdefault(int(record.scalars["grid_points"]), []).append(record)
+    if len(grids) < 2:
+        return None
+    rows = []
+    for points, group in sorted(grids.items()):
+        peak = spread(float(r.scalars["peak_interference"]) for r in group)
+        rows.append(
+            {
+                "grid_points": points,
+                "pixel_size [m]": float(group[0].scalars["pixel_size"]),
+                "n": peak.n,
+                "peak_interference [m]": peak.mean,
+                "peak_interference std [m]": peak.std,
+            }
+        )
+    order = convergence_order(
+        [row["pixel_size [m]"] for row in rows[-3:]], [row["peak_interference [m]"] for row in rows[-3:]]
+    )
+    if order is not None:
+        p, extrapolated = order
+        finest = rows[-1]
+        finest["observed_order"] = p
+        finest["extrapolated_peak_interference [m]"] = extrapolated
+        finest["finest_relative_error"] = abs(finest["peak_interference [m]"] - extrapolated) / abs(
+            extrapolated
+        )
+    return rows
+
+
 def _against_statistical(records, context):
     """Return the BEM's peak interference over its realisations against each statistical (KKE) prediction.
 
@@ -364,15 +412,16 @@ KIND = Kind(
     "(FFT-BEM, force control, paper 002 Figs. 7-9)",
     parameters=LoadUnloadParameters,
     run=run,
-    units=LoadUnloadResult.UNITS | {"max_von_mises_at_peak": "Pa"},
+    units=LoadUnloadResult.UNITS | {"max_von_mises_at_peak": "Pa", "pixel_size": "m"},
     figures={
         "load_interference": figure(
             "asperity.island_load_interference_figure", {"statistical": _statistical, "measured": measured_of}
         ),
         "von_mises": figure("asperity.island_von_mises_figure"),
+        "mesh_convergence": figure("asperity.mesh_convergence_figure"),
         "von_mises_section": figure("asperity.von_mises_section_figure"),
     },
-    tables={"against_statistical": _against_statistical},
+    tables={"against_statistical": _against_statistical, "mesh_convergence": _mesh_convergence},
     compare=MeasuredCurve,
     headline=("peak_interference", "residual_interference", "peak_contact_area", "max_von_mises_at_peak"),
     renamed={"surface": "topography", "peak_force": "max_force"},
