@@ -3,7 +3,9 @@
 import math
 
 import numpy as np
+import pytest
 
+from roughcontact.errors import InputError
 from roughcontact.papers import paper000, paper001, paper002
 
 
@@ -40,6 +42,24 @@ def test_paper001_table1_and_the_reference():
         material=paper001.get_material("HDPE"),
     )
     assert reference.contact_radius > 0
+
+
+@pytest.mark.parametrize("ball", ["HDPE", "POM"])
+def test_paper001_ball_flattened_rms_is_table2s(ball):
+    from roughcontact.topography.process import level
+    from roughcontact.topography.statistics import rq
+
+    drawn = paper001.roughness(ball, seed=1, pixels=256)
+    flattened = paper001.roughness(ball, seed=1, pixels=256, rms="flattened")
+    table2 = paper001.ROUGHNESS[ball]
+    # the release's ball: the drawn roughness has Table 2's RMS, the sphere fit takes 16-17 % of it
+    assert drawn.info["rms"] == "drawn" and rq(level(drawn, "sphere")) < 0.9 * table2
+    # measured: HDPE +0.02 %, POM +0.09 % after one rescaling (the fit is nearly linear in the heights)
+    assert flattened.info["rms"] == "flattened"
+    assert rq(level(flattened, "sphere")) == pytest.approx(table2, rel=2e-3, abs=0)
+    with pytest.raises(InputError) as error:
+        paper001.roughness(ball, rms="table2")
+    assert error.value.field == "rms"
 
 
 def test_paper002_island_compression_is_the_one_load_unload():
