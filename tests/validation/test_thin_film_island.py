@@ -13,14 +13,38 @@ ISLAND = paper002_island(40, seed=3)
 RUN = compress_island(ISLAND, SU8, substrate=SILICON, tolerance=1e-9)
 
 
-def test_synthetic_island_has_the_papers_rms_height_on_its_top():
-    top = ISLAND.heights[ISLAND.heights > paper002.FILM_THICKNESS / 2]
+def test_gaussian_stand_in_has_the_papers_rms_height_on_its_top():
+    island = paper002_island(40, seed=3, roughness="gaussian")
+    top = island.heights[island.heights > paper002.FILM_THICKNESS / 2]
     assert np.sqrt(np.mean((top - top.mean()) ** 2)) == pytest.approx(
         np.sqrt(paper002.MOMENTS["m0"]), rel=1e-12, abs=0
     )
-    assert ISLAND.size[0] == pytest.approx(30e-6, rel=1e-12, abs=0)
+    assert island.size[0] == pytest.approx(30e-6, rel=1e-12, abs=0)
     # Gaussian ACF: m2 = 2 m0 / xi^2 gives the paper's m2 for xi = 1.36 um
-    assert ISLAND.info["correlation_length"] == pytest.approx(1.3618e-6, rel=1e-4, abs=0)
+    assert island.info["correlation_length"] == pytest.approx(1.3618e-6, rel=1e-4, abs=0)
+
+
+def test_moments_stand_in_is_one_island_on_every_grid_with_the_papers_moments():
+    """The default stand-in: paper 002's three moments in expectation, the same field on every grid."""
+    from roughcontact.topography.process import crop
+    from roughcontact.topography.statistics import spectral_moments
+
+    coarse, fine = paper002_island(96, seed=3), paper002_island(384, seed=3)
+    assert coarse.info["roughness"] == "moments" and not coarse.info["resolved"]
+    # 96 px over the 30 um window hold every mode of the band (q_s: 1.07 um): the fine island at
+    # every 4th point is the coarse one
+    np.testing.assert_allclose(fine.heights[::4, ::4], coarse.heights, rtol=0, atol=1e-9 * np.sqrt(2.13e-15))
+    # the tops' moments, averaged over realisations (one draw scatters 12 % in m0, 5 % in m2)
+    margin = 2.5e-6 + 0.2e-6  # the top, off its edges
+    tops = [
+        spectral_moments(
+            crop(paper002_island(384, seed=seed), (margin, 30e-6 - margin), (margin, 30e-6 - margin))
+        )
+        for seed in range(24)
+    ]
+    for name in ("m0", "m2", "m4"):
+        mean = np.mean([getattr(t, name) for t in tops])
+        assert mean == pytest.approx(paper002.MOMENTS[name], rel=0.1), name
 
 
 def test_every_step_carries_its_target_load_and_never_exceeds_the_hardness():

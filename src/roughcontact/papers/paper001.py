@@ -92,18 +92,17 @@ def presliding_keys(ball: str, normal_force: float | None) -> dict[str, Any]:
     return keys
 
 
-def roughness(ball: str, *, seed: int = 1, pixels: int = SCAN_PIXELS, rms: str = "drawn") -> Topography:
+def roughness(ball: str, *, seed: int = 1, pixels: int = SCAN_PIXELS, rms: str = "flattened") -> Topography:
     """Generate a ball scan: sphere R = 5 mm plus self-affine roughness of Table 2's rms (1.1 mm field).
 
     ``rms`` says which surface has Table 2's RMS (HDPE 3.17 um, POM 0.67 um):
 
-    * ``"drawn"`` (default; the balls of earlier releases, on which the example study's results
-      rest): the self-affine roughness as drawn, before the sphere is added. Removing the fitted
-      sphere (:func:`~roughcontact.topography.process.level` with ``"sphere"``, what
-      ``roughcontact inspect --detrend sphere`` applies) takes the roughness' longest waves with
-      it, so the flattened RMS is 10-25 % below Table 2 (seed 1: 16 % at 256 pixels, 10 % at 512,
-      24 % at 1024; HDPE 2.66, 2.85 and 2.40 um).
-    * ``"flattened"``: the scan after that sphere removal, as the paper reports it (Fig. 5,
+    * ``"drawn"`` (the balls of releases up to 0.2): the self-affine roughness as drawn, before
+      the sphere is added. Removing the fitted sphere (:func:`~roughcontact.topography.process.level`
+      with ``"sphere"``, what ``roughcontact inspect --detrend sphere`` applies) takes the
+      roughness' longest waves with it, so the flattened RMS is 10-25 % below Table 2 (seed 1:
+      16 % at 256 pixels, 10 % at 512, 24 % at 1024; HDPE 2.66, 2.85 and 2.40 um).
+    * ``"flattened"`` (default): the scan after that sphere removal, as the paper reports it (Fig. 5,
       Table 2). The ball is drawn, flattened, and drawn again with the same seed and its roughness
       rescaled by Table 2's RMS over the flattened one. The fit is linear in the heights but for
       the cap's nonlinearity and the paraboloid body's own residual against a sphere, so one

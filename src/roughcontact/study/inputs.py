@@ -45,7 +45,7 @@ def build_topography(spec: Strict, resolve) -> Topography:
     if isinstance(spec, Paper002Island):
         from ..papers.paper002 import paper002_island
 
-        return paper002_island(spec.shape, seed=spec.seed, margin=spec.margin)
+        return paper002_island(spec.shape, seed=spec.seed, margin=spec.margin, roughness=spec.roughness)
     if isinstance(spec, Paper000Scan | Paper000Tip):
         from ..papers import paper000
 
@@ -55,7 +55,7 @@ def build_topography(spec: Strict, resolve) -> Topography:
     if isinstance(spec, Paper001Ball):
         from ..papers.paper001 import roughness
 
-        return roughness(spec.ball, seed=spec.seed, pixels=spec.shape)
+        return roughness(spec.ball, seed=spec.seed, pixels=spec.shape, rms=spec.rms)
     options = {k: v for k, v in spec.model_dump().items() if k not in _GENERATOR_ONLY}
     shape, size = options.pop("shape"), options.pop("size")
     surface = getattr(generate, spec.generate)(shape, size, **options)

@@ -253,6 +253,11 @@ class _Seeded(_Generated):
     )
 
 
+Modes = Literal["grid", "wavevector"]
+"""How a random surface is drawn (:data:`roughcontact.topography.generate.MODES`): white noise on the
+grid, or one draw per wavevector (the same surface on every grid: a mesh-convergence study)."""
+
+
 class SelfAffine(_Seeded):
     """:func:`~roughcontact.topography.generate.self_affine`; ``ra`` rescales to an exact Ra afterwards."""
 
@@ -264,6 +269,7 @@ class SelfAffine(_Seeded):
     short_cutoff: Length | None = None
     long_cutoff: Length | None = None
     rolloff: float | None = None
+    modes: Modes = "grid"
 
 
 class GaussianRandom(_Seeded):
@@ -272,6 +278,19 @@ class GaussianRandom(_Seeded):
     generate: Literal["gaussian_random"]
     rms_height: Length
     correlation_length: Length
+    modes: Modes = "grid"
+
+
+class MatchedMoments(_Seeded):
+    """:func:`~roughcontact.topography.generate.matched_moments`: given spectral moments (paper 002)."""
+
+    generate: Literal["matched_moments"]
+    m0: Area
+    m2: float
+    m4: InverseArea
+    hurst: float = 0.8
+    modes: Modes = "wavevector"
+    coarse: Literal["refuse", "truncate"] = "refuse"
 
 
 class Sphere(_Generated):
@@ -292,6 +311,7 @@ class SphereWithRoughness(_Seeded):
     kind: Literal["sphere", "paraboloid"] = "paraboloid"
     short_cutoff: Length | None = None
     long_cutoff: Length | None = None
+    modes: Modes = "grid"
 
 
 class Sinusoid(_Generated):
@@ -327,6 +347,8 @@ class RaisedIsland(_Seeded):
     thickness: Length
     rms_height: Length = 0.0
     hurst: float = 0.8
+    short_cutoff: Length | None = None
+    modes: Modes = "grid"
 
 
 class Paper002Island(Strict):
@@ -336,6 +358,8 @@ class Paper002Island(Strict):
     shape: GridShape = (64, 64)
     seed: int | None = None
     margin: Length = 2.5e-6
+    roughness: Literal["moments", "gaussian"] = "moments"
+    """The paper's three moments (one surface on every grid) or release 0.2's Gaussian stand-in."""
 
 
 class Paper000Scan(Strict):
@@ -405,6 +429,8 @@ class Paper001Ball(Strict):
     shape: int = Field(default=1024, ge=2)
     """Pixels across the field (the paper's scans: 1024)."""
     seed: int | None = None
+    rms: Literal["flattened", "drawn"] = "flattened"
+    """Table 2's RMS after the fitted sphere is removed (as the paper measures it), or as drawn."""
 
     @property
     def grid(self) -> tuple[tuple[int, int], tuple[float, float]]:
@@ -424,6 +450,7 @@ class Combined(Strict):
 GENERATED = (
     SelfAffine,
     GaussianRandom,
+    MatchedMoments,
     Sphere,
     SphereWithRoughness,
     Sinusoid,

@@ -722,7 +722,7 @@ def _lattice_band(
     }
 
 
-def _matched_moments_arguments(shape, size, m0, m2, m4, hurst, modes="wavevector"):
+def _matched_moments_arguments(shape, size, m0, m2, m4, hurst, modes="wavevector", coarse="refuse"):
     """Check the arguments of :func:`matched_moments` and solve its band (see :func:`check_arguments`)."""
     shape, size = _grid(shape, size)
     if len(shape) != 2:
@@ -746,10 +746,18 @@ def _matched_moments_arguments(shape, size, m0, m2, m4, hurst, modes="wavevector
             f"the bandwidth alpha = m0 m4 / m2^2 = {bandwidth:.4g}: {floor}.",
             "check m0, m2 and m4 (their units: m^2, -, 1/m^2); this generator needs alpha >= 2.",
         )
+    if coarse not in ("refuse", "truncate"):
+        raise InputError("coarse", f"unknown choice {coarse!r}.", "use 'refuse' or 'truncate'.")
+    if coarse == "truncate" and modes != "wavevector":
+        raise InputError(
+            "coarse",
+            "'truncate' keeps one field on every grid, which needs modes='wavevector'.",
+            "use modes='wavevector', or coarse='refuse'.",
+        )
     band = _lattice_band(size, m0, m2, m4, hurst)
     wavelength = 2.0 * math.pi / band["q_short"]
     pixels = [wavelength * n / s for n, s in zip(shape, size, strict=True)]
-    if min(pixels) < MIN_PIXELS_PER_SHORT_WAVELENGTH:
+    if min(pixels) < MIN_PIXELS_PER_SHORT_WAVELENGTH and coarse == "refuse":
         needed = tuple(math.ceil(MIN_PIXELS_PER_SHORT_WAVELENGTH * s / wavelength) for s in size)
         raise InputError(
             "shape",
@@ -770,6 +778,7 @@ def matched_moments(
     hurst: float = 0.8,
     seed: int | None = None,
     modes: str = "wavevector",
+    coarse: str = "refuse",
 ) -> Topography:
     r"""Make a self-affine map whose expected spectral moments m0, m2, m4 are given (paper 002 eqs. 1-3).
 
@@ -824,6 +833,11 @@ def matched_moments(
     modes : {"wavevector", "grid"}
         One draw per wavevector (default: the same surface on every grid that resolves q_s) or
         white noise on the grid (then Rq is exactly sqrt(m0), m2 and m4 in expectation).
+    coarse : {"refuse", "truncate"}
+        A grid with fewer than 19 pixels per shortest wavelength: refused (default), or, with
+        ``modes="wavevector"``, drawn as the same field truncated at the grid's Nyquist
+        wavevector (``info["resolved"]`` False): the coarse grids of a mesh-convergence study,
+        whose finite-difference moments then read low.
 
     Returns
     -------
@@ -848,7 +862,11 @@ def matched_moments(
     doi:10.1088/2051-672X/aa51f8
     """
     shape, size, m0, m2, m4, hurst, modes, band = _matched_moments_arguments(
-        shape, size, m0, m2, m4, hurst, modes
+        shape, size, m0, m2, m4, hurst, modes, coarse
+    )
+    wavelength = 2.0 * math.pi / band["q_short"]
+    resolved = (
+        min(wavelength * n / s for n, s in zip(shape, size, strict=True)) >= MIN_PIXELS_PER_SHORT_WAVELENGTH
     )
     surface = self_affine(
         shape,
@@ -869,6 +887,7 @@ def matched_moments(
         "m2": m2,
         "m4": m4,
         **band,
+        "resolved": resolved,
     }
     return Topography(surface.heights, size, periodic=True, info=info)
 
@@ -1385,6 +1404,7 @@ def check_arguments(generator: str, shape, size, options: Mapping[str, Any]) -> 
             options["m4"],
             options.get("hurst", 0.8),
             options.get("modes", "wavevector"),
+            options.get("coarse", "refuse"),
         )
     elif generator in ("sphere", "sphere_with_roughness"):
         kind = options.get("kind", "sphere" if generator == "sphere" else "paraboloid")
