@@ -26,25 +26,19 @@ def test_gaussian_stand_in_has_the_papers_rms_height_on_its_top():
 
 def test_moments_stand_in_is_one_island_on_every_grid_with_the_papers_moments():
     """The default stand-in: paper 002's three moments in expectation, the same field on every grid."""
-    from roughcontact.topography.process import crop
-    from roughcontact.topography.statistics import spectral_moments
-
     coarse, fine = paper002_island(96, seed=3), paper002_island(384, seed=3)
     assert coarse.info["roughness"] == "moments" and not coarse.info["resolved"]
     # 96 px over the 30 um window hold every mode of the band (q_s: 1.07 um): the fine island at
     # every 4th point is the coarse one
     np.testing.assert_allclose(fine.heights[::4, ::4], coarse.heights, rtol=0, atol=1e-9 * np.sqrt(2.13e-15))
     # the tops' moments, averaged over realisations (one draw scatters 12 % in m0, 5 % in m2)
-    margin = 2.5e-6 + 0.2e-6  # the top, off its edges
-    tops = [
-        spectral_moments(
-            crop(paper002_island(384, seed=seed), (margin, 30e-6 - margin), (margin, 30e-6 - margin))
-        )
-        for seed in range(24)
-    ]
-    for name in ("m0", "m2", "m4"):
-        mean = np.mean([getattr(t, name) for t in tops])
-        assert mean == pytest.approx(paper002.MOMENTS[name], rel=0.1), name
+    tops = [paper002.island_top_moments(paper002_island(384, seed=seed)) for seed in range(24)]
+    # measured: m0 -1.6 %, m2 -1.6 %, m4 -3.0 % (78 nm pixels: the second difference reads m4 low);
+    # tolerance ~3 standard errors of the 24-draw mean (m0 2.3 %, m2 0.7 %, m4 0.6 %) plus that bias
+    for name, tolerance in (("m0", 0.08), ("m2", 0.03), ("m4", 0.05)):
+        mean = np.mean([top[f"top_{name}"] for top in tops])
+        assert mean == pytest.approx(paper002.MOMENTS[name], rel=tolerance), name
+        assert tops[0][f"paper_{name}"] == paper002.MOMENTS[name]
 
 
 def test_every_step_carries_its_target_load_and_never_exceeds_the_hardness():

@@ -305,6 +305,35 @@ def paper002_island(
     return flat.with_heights(heights, step="Gaussian-correlated roughness with paper 002's m0, m2", info=info)
 
 
+def island_top_moments(island: Topography, *, edge: float = 0.2e-6) -> dict[str, float]:
+    """Return the spectral moments (eqs. 1-3) and bandwidth of a stand-in island's top, beside the paper's.
+
+    The top is the window of the island (heights above half the film thickness) less ``edge`` [m]
+    on each side (the step of the side walls). Keys ``top_m0``, ``top_m2``, ``top_m4``,
+    ``top_bandwidth`` (this draw, finite differences of
+    :func:`~roughcontact.topography.statistics.spectral_moments`) and ``paper_m0`` ... (printed).
+    """
+    from ..topography.process import crop
+    from ..topography.statistics import spectral_moments
+
+    top = island.heights > 0.5 * FILM_THICKNESS
+    if not top.any():
+        raise InputError("topography", "no island top (nothing above half the film thickness).", None)
+    spacing = [s / n for s, n in zip(island.size, island.shape, strict=True)]
+    box = [np.flatnonzero(top.any(axis=1 - axis)) for axis in (0, 1)]
+    window = [(b[0] * h + edge, (b[-1] + 1) * h - edge) for b, h in zip(box, spacing, strict=True)]
+    moments = spectral_moments(crop(island, *window))
+    printed = MOMENTS["m0"] * MOMENTS["m4"] / MOMENTS["m2"] ** 2
+    return {
+        "top_m0": moments.m0,
+        "top_m2": moments.m2,
+        "top_m4": moments.m4,
+        "top_bandwidth": moments.m0 * moments.m4 / moments.m2**2,
+        **{f"paper_{name}": value for name, value in MOMENTS.items()},
+        "paper_bandwidth": printed,
+    }
+
+
 IslandCompression = LoadUnloadResult
 """What :func:`compress_island` returns, with either plastic model: the one load-unload result."""
 

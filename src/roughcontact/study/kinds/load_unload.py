@@ -264,6 +264,10 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
         "grid_points": int(surface.heights.size),
         "pixel_size": float(surface.size[0] / surface.shape[0]),
     }
+    if surface.info.get("generator") == "raised_island" and "m4" in surface.info:  # paper 002's stand-in
+        from ...papers.paper002 import island_top_moments
+
+        scalars |= island_top_moments(surface)
     dataset = compression.to_xarray()
     dataset.attrs["stress_depth"] = stress_depth
     dataset.attrs["plasticity"] = parameters.plasticity
@@ -412,7 +416,9 @@ KIND = Kind(
     "(FFT-BEM, force control, paper 002 Figs. 7-9)",
     parameters=LoadUnloadParameters,
     run=run,
-    units=LoadUnloadResult.UNITS | {"max_von_mises_at_peak": "Pa", "pixel_size": "m"},
+    units=LoadUnloadResult.UNITS
+    | {"max_von_mises_at_peak": "Pa", "pixel_size": "m"}
+    | {f"{who}_{m}": unit for who in ("top", "paper") for m, unit in (("m0", "m^2"), ("m4", "1/m^2"))},
     figures={
         "load_interference": figure(
             "asperity.island_load_interference_figure", {"statistical": _statistical, "measured": measured_of}
