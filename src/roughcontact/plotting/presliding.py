@@ -35,7 +35,7 @@ from ..contact.presliding import POINT_NAMES as POINTS
 from ..errors import InputError
 from ..spread import spread
 from ..units import format_si, prefixed_scale, unit_factor
-from .cases import caption, evenly_chosen, grouped, panel_per_case, with_fields
+from .cases import caption, evenly_chosen, grouped, panel_per_case, realisations_of, with_fields
 from .layout import axes_for, colour_scale, legend, shared_colorbar
 
 _LENGTH_UNIT, _FORCE_UNIT, _STIFFNESS_UNIT = "µm", "mN", "mN/µm"  # fixed, as in paper 001 Figs. 13-15
@@ -803,8 +803,10 @@ def path_figure(cases):
     """Draw the tangential displacement programme, step by step, with the last loop (Fig. 6).
 
     Cases that share one programme draw one line; the points A, B, C of the first case are marked.
+    The realisations of a case share its programme (the step control may insert other steps in
+    each): the first realisation's is drawn.
     """
-    chosen = with_fields(cases)
+    chosen = [group[0] for group in realisations_of(with_fields(cases)).values()]
     if not chosen:
         return None
     first = chosen[0].dataset()

@@ -327,8 +327,9 @@ def _statistical(records, context) -> dict[str, list]:
 def _mesh_convergence(records, context):
     """Return the peak interference against the grid (paper 002 Fig. 6) and its order of convergence.
 
-    Per grid (``grid_points``; the mean over the realisations at each), the peak interference;
-    with three grids or more, the finest row adds the observed order and the Richardson
+    Per grid (``grid_points``; the mean over the realisations at each), the peak interference and
+    its relative change from the next coarser grid; with three grids or more, the finest row adds
+    the observed order and the Richardson
     extrapolation of the three finest (:func:`roughcontact.spread.convergence_order`) and the
     finest grid's relative distance from it. Another grid is the same surface only with a
     generator of ``modes = "wavevector"`` (one realisation at any resolution). None with fewer
@@ -352,6 +353,9 @@ def _mesh_convergence(records, context):
                 "n": peak.n,
                 "peak_interference [m]": peak.mean,
                 "peak_interference std [m]": peak.std,
+                "change_from_coarser": abs(peak.mean / rows[-1]["peak_interference [m]"] - 1)
+                if rows
+                else None,
             }
         )
     order = convergence_order(
