@@ -9,7 +9,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ..units import format_si, unit_factor
-from .cases import caption, evenly_chosen, realisations_of, with_fields
+from .cases import caption, evenly_chosen, grouped, realisations_of, with_fields
 from .contact import plot_von_mises
 from .layout import axes_for, legend
 
@@ -245,8 +245,9 @@ def island_load_interference_figure(cases, statistical=None, measured=None):
 
 @caption(
     "Peak interference at the peak load against the number of grid points of the island (paper 002 "
-    "Fig. 6): mean and standard deviation over the realisations at each grid, with the observed order "
-    "of convergence and the Richardson extrapolation of the three finest grids."
+    "Fig. 6): mean and standard deviation over the realisations at each grid, each realisation (the "
+    "same surface on every grid) as a thin line, with the observed order of convergence and the "
+    "Richardson extrapolation of the three finest grids where they converge monotonically."
 )
 def mesh_convergence_figure(cases):
     """Draw paper 002's Fig. 6: the peak interference against the grid points (None for one grid)."""
@@ -269,6 +270,22 @@ def mesh_convergence_figure(cases):
     count = max(s.n for s in spreads)
     label = "BEM island" + (f", mean ± std of {count} realisations" if count > 1 else "")
     ax.errorbar(points, means * 1e9, yerr=errors * 1e9, fmt="o-", capsize=3, label=label)
+    if count > 1:  # each realisation is one surface on every grid: its own line
+        for number, (_, group) in enumerate(grouped(cases, "replicate").items()):
+            own = sorted(
+                (int(c.scalars["grid_points"]), float(c.scalars["peak_interference"])) for c in group
+            )
+            ax.plot(
+                *zip(*[(n, w * 1e9) for n, w in own], strict=True),
+                "-",
+                color="0.6",
+                linewidth=0.8,
+                label="each realisation" if number == 0 else None,
+            )
+    change = abs(means[-1] / means[-2] - 1)
+    ax.set_title(
+        f"finest grid {points[-1]} points: {100 * change:.2g} % from the next coarser", fontsize="medium"
+    )
     order = convergence_order([1 / np.sqrt(n) for n in points[-3:]], list(means[-3:]))
     if order is not None:
         p, extrapolated = order
