@@ -202,3 +202,24 @@ def test_one_measured_loop_against_the_realisations_scatter():
     )
     inside = "measured in the realisations' 95% prediction"
     assert (row[f"K_L_A {inside}"], row[f"K_L_B {inside}"], row[f"K_L_C {inside}"]) == (True, False, True)
+
+
+def test_area_load_with_realisations_draws_means_and_intervals():
+    from roughcontact.plotting.cases import ResultCase
+    from roughcontact.plotting.contact import area_load_figure
+
+    cases = [
+        ResultCase(
+            f"p={p}, replicate={r}",
+            {"mean_pressure": p, "contact_fraction": 0.01 * p / 1e6 + 0.002 * r},
+            None,
+            {"mean_pressure": p, "replicate": r},
+        )
+        for p in (10e6, 40e6)
+        for r in range(4)
+    ]
+    ax = area_load_figure(cases).axes[0]
+    (label,) = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert label == "mean ± 95 % CI of 4 realisations"
+    mean_line = ax.get_lines()[0]
+    np.testing.assert_allclose(mean_line.get_ydata(), [10.3, 40.3])  # % of nominal: 0.1 + 0.003 mean

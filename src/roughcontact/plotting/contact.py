@@ -11,7 +11,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ..units import format_si, prefixed_scale
-from .cases import caption, evenly_chosen, grouped, scalar_series, with_fields
+from .cases import caption, evenly_chosen, grouped, realisations_of, scalar_series, with_fields
 from .layout import axes_for, legend
 
 
@@ -147,7 +147,12 @@ def contact_maps_figure(cases):
 
 
 def _curve_of_cases(cases, x: str, y: str, scales: tuple[float, float], labels: tuple[str, str, str]):
-    """One scalar against another over the cases, a line per sample (None for fewer than 2 cases)."""
+    """One scalar against another over the cases, a line per sample (None for fewer than 2 cases).
+
+    Cases that differ only in their realisation are one point: the means with their 95 % intervals
+    as error bars (both ways), each realisation a small faint dot of the line's colour.
+    """
+    from ..spread import spread
     from .layout import legend, new_figure
 
     if len(cases) < 2:
@@ -156,12 +161,38 @@ def _curve_of_cases(cases, x: str, y: str, scales: tuple[float, float], labels: 
     ax = axes[0][0]
     groups = grouped(cases)
     for sample, group in groups.items():
+        realisations = list(realisations_of(group).values())
+        if all(len(r) == 1 for r in realisations):
+            abscissa, ordinate = scalar_series(group, x, y)
+            ax.plot(abscissa * scales[0], ordinate * scales[1], "o-", label=sample or None)
+            continue
+        spreads = [
+            (spread(float(c.scalars[x]) for c in r), spread(float(c.scalars[y]) for c in r))
+            for r in realisations
+        ]
+        spreads.sort(key=lambda pair: pair[0].mean)
+        count = max(sx.n for sx, _ in spreads)
+        (line,) = ax.plot(
+            [sx.mean * scales[0] for sx, _ in spreads],
+            [sy.mean * scales[1] for _, sy in spreads],
+            "-",
+            label=f"{sample + ': ' if sample else ''}mean ± 95 % CI of {count} realisations",
+        )
+        ax.errorbar(
+            [sx.mean * scales[0] for sx, _ in spreads],
+            [sy.mean * scales[1] for _, sy in spreads],
+            xerr=[np.nan_to_num(sx.half_width) * scales[0] for sx, _ in spreads],
+            yerr=[np.nan_to_num(sy.half_width) * scales[1] for _, sy in spreads],
+            fmt="o",
+            capsize=3,
+            color=line.get_color(),
+        )
         abscissa, ordinate = scalar_series(group, x, y)
-        ax.plot(abscissa * scales[0], ordinate * scales[1], "o-", label=sample or None)
+        ax.plot(abscissa * scales[0], ordinate * scales[1], ".", alpha=0.35, color=line.get_color())
     ax.set_xlabel(labels[0])
     ax.set_ylabel(labels[1])
     ax.set_title(labels[2])
-    if any(groups):
+    if ax.get_legend_handles_labels()[1]:  # samples, or what the realisations' marks mean
         legend(ax)
     return figure
 
