@@ -59,6 +59,8 @@ def test_example_runs_end_to_end(cli, shrunk, tmp_path):
         rows, (25e-3, 75e-3, 25e-3), (2.805e-6, 3.697e-6, 2.7e-6), (0.153, 0.129, 0.108), strict=True
     ):
         assert float(row["normal_force [N]"]) == pytest.approx(force)
+        # the generated ball has Table 2's RMS after its fitted sphere is removed, as the paper measures
+        assert float(row["flattened_rq [m]"]) == pytest.approx(float(row["table2_rq [m]"]), rel=5e-3)
         # the last loop spans the stroke and slides at mu F0 (both directions), as the path prescribes
         assert float(row["stroke_from_loop [m]"]) == pytest.approx(stroke, rel=1e-9)
         assert float(row["mu_from_loop"]) == pytest.approx(mu, rel=1e-3)

@@ -148,6 +148,16 @@ def roughness(ball: str, *, seed: int = 1, pixels: int = SCAN_PIXELS, rms: str =
     return Topography(ball_scan.heights, ball_scan.size, periodic=False, info={**ball_scan.info, "rms": rms})
 
 
+def flattened_roughness(scan: Topography, ball: str) -> dict[str, float]:
+    """Return a ball scan's RMS after the fitted sphere is removed, beside Table 2's (paper 001).
+
+    The flattening is :func:`~roughcontact.topography.process.level` with ``"sphere"``, what the
+    paper does to its scans and ``roughcontact inspect --detrend sphere`` applies. Keys
+    ``flattened_rq`` (this scan) and ``table2_rq`` [m].
+    """
+    return {"flattened_rq": rq(level(scan, "sphere")), "table2_rq": ROUGHNESS[ball_name(ball)]}
+
+
 Paper001Mindlin = MindlinReference
 """Paper 001's Mindlin reference: :class:`roughcontact.contact.presliding.MindlinReference`."""
 

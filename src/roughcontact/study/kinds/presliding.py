@@ -264,9 +264,8 @@ def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
     from ...contact.presliding import presliding
     from ...topography.process import central_window
 
-    surface = inputs.topography(parameters.topography)
-    if parameters.window is not None:
-        surface = central_window(surface, parameters.window)
+    scan = inputs.topography(parameters.topography)
+    surface = scan if parameters.window is None else central_window(scan, parameters.window)
     if parameters.path is not None:
         from ...contact.paths import read_programme_csv
 
@@ -296,7 +295,10 @@ def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
         label=ball if parameters.normal_force is None else f"{ball} at {parameters.normal_force * 1e3:g} mN",
         **programme,
     )
-    return CaseOutput(result.scalars(), result.to_xarray())
+    scalars = result.scalars()
+    if scan.info.get("rms") in ("drawn", "flattened") and parameters.sample in paper001.ROUGHNESS:
+        scalars |= paper001.flattened_roughness(scan, parameters.sample)  # a generated ball of paper 001
+    return CaseOutput(scalars, result.to_xarray())
 
 
 # --- figures and tables (from stored records only) -----------------------------------------------
@@ -485,7 +487,7 @@ KIND = Kind(
     "last-loop K_L at A, B, C vs Mindlin",
     parameters=PreslidingParameters,
     run=run,
-    units=PreslidingResult.UNITS,
+    units=PreslidingResult.UNITS | {"flattened_rq": "m", "table2_rq": "m"},
     figures={
         "path": figure("presliding.path_figure"),
         "pressure": figure("presliding.pressure_figure"),
