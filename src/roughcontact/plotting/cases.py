@@ -167,10 +167,14 @@ def realisations_of(cases: Sequence[FigureCase]) -> dict[str, list[FigureCase]]:
     """Return the cases grouped by everything but their realisation, each group by its label without it.
 
     Cases that differ only in ``replicate`` (the realisations of a study's generated surfaces)
-    are one group; the key is the label of its cases with ``replicate=...`` left out.
+    are one group; the key is the label of its cases with ``replicate=...`` left out. A case
+    without a ``replicate`` parameter (a result drawn from Python) is a group of its own.
     """
     groups: dict[str, list[FigureCase]] = {}
-    for case in cases:
+    for number, case in enumerate(cases):
+        if "replicate" not in case.parameters:
+            groups[f"case {number}"] = [case]
+            continue
         inputs = {k: v for k, v in case.parameters.items() if k != "replicate"}
         key = repr(sorted(inputs.items(), key=lambda item: item[0]))
         groups.setdefault(key, []).append(case)
