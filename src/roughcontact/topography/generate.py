@@ -66,6 +66,7 @@ __all__ = [
     "flat_punch",
     "gaussian_random",
     "matched_moments",
+    "matched_psd",
     "raised_island",
     "self_affine",
     "sinusoid",
@@ -890,6 +891,111 @@ def matched_moments(
         "resolved": resolved,
     }
     return Topography(surface.heights, size, periodic=True, info=info)
+
+
+def _lattice_variance(psd: Callable[[np.ndarray], np.ndarray], shape, size) -> float:
+    """Return sum over the grid's nonzero wavevectors of C(|q|) / area (Jacobs et al. 2017 normalisation)."""
+    magnitude = _wavevector_magnitude(shape, size)
+    weights = np.full(magnitude.shape, 2.0)  # the real FFT's half plane: each column stands for two
+    weights[..., 0] = 1.0
+    if shape[-1] % 2 == 0:
+        weights[..., -1] = 1.0
+    nonzero = magnitude > 0
+    return float(np.sum(weights[nonzero] * psd(magnitude[nonzero])) / math.prod(size))
+
+
+def _log_binned_psd(topography: Topography, ratio: float) -> tuple[np.ndarray, np.ndarray]:
+    """Return the mean |q| and mean 2D PSD of a map over rings of |q| growing by ``ratio`` (none empty)."""
+    if not ratio > 1:
+        raise InputError("bin_ratio", f"must be > 1, got {ratio!r}.", "e.g. 1.1 (10 % wide rings).")
+    qx, qy, psd = statistics.psd_2d(topography)
+    magnitude = np.hypot(qx[:, None], qy[None, :]).ravel()
+    values = psd.ravel()
+    keep = magnitude > 0
+    magnitude, values = magnitude[keep], values[keep]
+    index = np.floor(np.log(magnitude / magnitude.min()) / math.log(ratio) + 1e-9).astype(int)
+    counts = np.bincount(index)
+    filled = counts > 0
+    q = np.bincount(index, weights=magnitude)[filled] / counts[filled]
+    return q, np.bincount(index, weights=values)[filled] / counts[filled]
+
+
+def matched_psd(
+    template: Topography,
+    *,
+    shape: int | tuple[int, int] | None = None,
+    size: float | tuple[float, float] | None = None,
+    seed: int | None = None,
+    bin_ratio: float = 1.1,
+) -> Topography:
+    r"""Make a random map with the radially averaged PSD of a measured scan (a stand-in for more spots).
+
+    The template's isotropic PSD :math:`C(q)` is its 2D PSD
+    (:func:`~roughcontact.topography.statistics.psd_2d`, default window) averaged over rings of
+    |q| that grow by ``bin_ratio`` (narrow: a ring's mean C is C at its mean q to a few per cent
+    even where C falls as q^-3.6; the lowest rings hold single lattice circles), interpolated
+    linearly in log q - log C; below its lowest wavevector it continues flat (a roll-off plateau:
+    the scan says nothing about longer waves), beyond its last ring with power it is zero. White
+    noise on the new grid is filtered by :math:`\sqrt{C}` (:func:`self_affine`'s
+    ``modes="grid"``, random phases and Rayleigh amplitudes) and scaled so that its *expected* Rq
+    is the template's times :math:`\sqrt{S_\mathrm{new} / S_\mathrm{template}}`, S the sum of
+    the interpolated C over each grid's wavevectors divided by its area: on the template's own
+    grid the template's Rq, on a larger or finer one the variance the PSD adds there. One draw's
+    Rq scatters about it as another spot's would (forcing it exact would bias every other ring:
+    the few longest waves carry most of the variance). The
+    template's anisotropy and non-Gaussian heights are not reproduced (isotropic, Gaussian).
+
+    Parameters
+    ----------
+    template : Topography
+        A measured map (levelled as it is to be used).
+    shape, size : optional
+        Grid (an int: square) and size [m] of the new surface; default the template's.
+    seed : int, optional
+        Seed of ``numpy.random.default_rng``.
+    bin_ratio : float
+        Ratio of the outer to the inner |q| of a ring of the template's radial PSD (> 1).
+
+    Returns
+    -------
+    Topography
+        Periodic surface with zero mean; ``info`` records the template's name and Rq.
+
+    Raises
+    ------
+    InputError
+        A profile template (``template``), or a grid that holds no wavevector of the band.
+
+    References
+    ----------
+    Jacobs, Junge and Pastewka (2017) doi:10.1088/2051-672X/aa51f8
+    """
+    if template.dim != 2:
+        raise InputError("template", "matched_psd needs a map (an isotropic 2D PSD).", "give a 2D scan.")
+    shape = template.shape if shape is None else (shape, shape) if isinstance(shape, int) else shape
+    shape, size = _grid(shape, template.size if size is None else size)
+    q, psd = _log_binned_psd(template, bin_ratio)
+    keep = psd > 1e-12 * psd.max()  # round-off beyond a band's end is no power
+    log_q, log_c = np.log(q[keep]), np.log(psd[keep])
+
+    def interpolated(magnitude: np.ndarray) -> np.ndarray:
+        inside = magnitude <= q[keep].max() * math.sqrt(bin_ratio)  # to the outer edge of its last ring
+        values = np.exp(np.interp(np.log(np.maximum(magnitude, q[keep].min())), log_q, log_c))
+        return np.where(inside, values, 0.0)
+
+    heights = _filtered_noise(shape, size, interpolated, seed, "shape")
+    variance = _lattice_variance(interpolated, shape, size)
+    ratio = variance / _lattice_variance(interpolated, template.shape, template.size)
+    target = statistics.rq(template) * math.sqrt(ratio)
+    # white noise of unit variance filtered by sqrt(C): E[mean h^2] = sum over the full grid of C / N
+    expected = variance * math.prod(size) / math.prod(shape)
+    info = {
+        "name": f"matched PSD of {template.info.get('name', 'a scan')}",
+        "generator": "matched_psd",
+        "seed": seed,
+        "template_rq": statistics.rq(template),
+    }
+    return Topography(heights * target / math.sqrt(expected), size, periodic=True, info=info)
 
 
 # --- deterministic shapes ------------------------------------------------------------------------
