@@ -223,3 +223,24 @@ def test_area_load_with_realisations_draws_means_and_intervals():
     assert label == "mean ± 95 % CI of 4 realisations"
     mean_line = ax.get_lines()[0]
     np.testing.assert_allclose(mean_line.get_ydata(), [10.3, 40.3])  # % of nominal: 0.1 + 0.003 mean
+
+
+def test_measured_spots_of_one_sample_are_its_realisations(tmp_path):
+    """Files zipped with replicate: one group per sample and load, its spread over the files."""
+    from roughcontact.topography import generate
+    from roughcontact.topography.native import save_topography
+
+    for number in range(3):
+        scan = generate.self_affine((32, 32), 2e-6, hurst=0.8, rms_height=5e-9, seed=10 + number)
+        save_topography(scan, tmp_path / f"spot{number}.nc")
+    text = STUDY.replace(
+        'generate = "self_affine"\nshape = 32\nsize = "2 um"\nhurst = 0.8\nrms_height = "5 nm"',
+        'file = "spot0.nc"\nperiodic = true',
+    ).replace(
+        "realisations = 4",
+        "[analysis.zip]\nreplicate = [0, 1, 2]\n"
+        '"topographies.scan.file" = ["spot0.nc", "spot1.nc", "spot2.nc"]',
+    )
+    result = answer(_study(tmp_path, text), tmp_path / "out")
+    approach = [r for r in spread_rows(result.analyses[0]) if r["quantity"] == "approach"]
+    assert len(approach) == 2 and all(r["n"] == 3 for r in approach)  # per load, over the three spots

@@ -170,11 +170,13 @@ def spread_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
     """One row per group of realisations and scalar: its spread over the realisations (SI).
 
     A group is the cases that differ only in their realisation (``replicate``): same sample and
-    swept values. Each numeric scalar of the group's finished cases is summarised by
-    :func:`roughcontact.spread.spread` (n, mean, std, 95 % interval of the mean, min, max),
-    with its SI ``unit``. A scalar equal in every realisation to 1e-6 relative (an input such as
-    the force of a force-controlled case, reached to its solver's tolerance, or a material
-    constant) does not depend on the draw and is left out. Empty for an analysis of one realisation.
+    swept values, a swept ``topographies.NAME.file`` aside (the measured spots of one sample,
+    zipped with ``replicate``, are its realisations). Each numeric scalar of the group's finished
+    cases is summarised by :func:`roughcontact.spread.spread` (n, mean, std, 95 % interval of the
+    mean, min, max), with its SI ``unit``. A scalar equal in every realisation to 1e-6 relative (an
+    input such as the force of a force-controlled case, reached to its solver's tolerance, or a
+    material constant) does not depend on the draw and is left out. Empty for an analysis of one
+    realisation.
     """
     from ..spread import spread
 
@@ -183,7 +185,9 @@ def spread_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
     units = dict(analysis.kind.units)
     groups: dict[str, tuple[dict[str, Any], list[CaseRecord]]] = {}
     for record in analysis.finished:
-        where = {"sample": record.parameters.get("sample", "")} | axis_columns(record, units)
+        where = {"sample": record.parameters.get("sample", "")} | {
+            k: v for k, v in axis_columns(record, units).items() if not k.endswith(".file")
+        }  # measured spots of one sample (a file zipped with the replicate) are its realisations
         groups.setdefault(json.dumps(where, sort_keys=True, default=str), (where, []))[1].append(record)
     rows = []
     for where, records in groups.values():
