@@ -63,3 +63,19 @@ def test_a_commands_folder_is_resumed_only_for_the_same_study(tmp_path):
     with pytest.raises(InputError, match="other options"):
         reusable(folder, other)
     assert reusable(folder, other, replace=True) is False and not folder.exists()
+
+
+def test_provenance_and_report_state_materials_and_every_dependency(tmp_path):
+    """What a methods section needs: each material's properties as used, every dependency's version."""
+    import json
+
+    result = answer(_study(tmp_path), tmp_path / "out")
+    provenance = json.loads((tmp_path / "out" / "provenance.json").read_text())
+    assert {"numpy", "SurfaceTopography", "matplotlib", "numba", "pyFFTW", "dask"} <= set(
+        provenance["packages"]
+    )
+    (material,) = provenance["materials"]
+    assert material["material"] == "polysilicon" and material["youngs_modulus [Pa]"] == 110e9
+    assert material["poissons_ratio"] == 0.22
+    report = result.report.read_text()
+    assert "Materials as used" in report and "youngs_modulus (GPa)" in report

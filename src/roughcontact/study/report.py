@@ -234,13 +234,17 @@ def write_report(folder: str | Path, *, redraw: bool = True, dpi: int = 150) -> 
         parts.append("<h2>Measured topographies</h2><ul>")
         parts += [f"<li>{html.escape(preparation_line(n, p))}</li>" for n, p in prepared.items()]
         parts.append("</ul>")
+    materials = provenance.get("materials") or []
+    if materials:
+        parts.append("<h2>Materials as used</h2>")
+        parts.append(_table(materials))
     for analysis in analyses:
         parts.append(_analysis_section(folder, analysis, [r for r in rows if r["analysis"] == analysis.name]))
     parts.append("<h2>Provenance</h2>")
     inputs = provenance.get("input_files", {})
     if inputs:
         parts.append(_table([{"file": path, "sha256": digest} for path, digest in inputs.items()]))
-    shown = {k: v for k, v in provenance.items() if k not in ("input_files", "seeds")}
+    shown = {k: v for k, v in provenance.items() if k not in ("input_files", "seeds", "materials")}
     parts.append(f"<pre>{html.escape(json.dumps(shown, indent=2))}</pre>")
     study_file = folder / "study.toml"
     if study_file.exists():

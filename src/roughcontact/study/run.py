@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import contextlib
 import hashlib
+import json
 import logging
 import os
 import platform
@@ -501,20 +502,60 @@ def study_document(study: Study, folder: Path) -> dict[str, Any]:
     }
 
 
+def materials_used(study: Study) -> list[dict[str, Any]]:
+    """Return every material the study's cases use, as used: its study name and properties (SI).
+
+    One row per distinct (name, properties): a sweep of a material's modulus gives one row per value.
+    """
+    rows: dict[str, dict[str, Any]] = {}
+    for case in study.cases:
+        for name, material in case.materials.items():
+            row = {
+                "material": name,
+                "library entry": material.name,
+                "youngs_modulus [Pa]": material.youngs_modulus,
+                "poissons_ratio": material.poissons_ratio,
+                "hardness [Pa]": material.hardness,
+                "yield_strength [Pa]": material.yield_strength,
+                "surface_energy [J/m^2]": material.surface_energy,
+                "source": material.source,
+            }
+            rows.setdefault(json.dumps(row, sort_keys=True, default=str), row)
+    return list(rows.values())
+
+
+def dependency_versions() -> dict[str, str]:
+    """Return the installed version of every dependency roughcontact declares (for a methods section).
+
+    Read from the package's metadata (``pyproject.toml``'s ``dependencies``, optional extras left
+    out), so a dependency added there is reported without a change here.
+    """
+    import re
+    from importlib import metadata
+
+    versions = {}
+    for requirement in metadata.requires("roughcontact") or ():
+        if "extra ==" in requirement:
+            continue
+        name = re.match(r"[A-Za-z0-9_.\-]+", requirement).group(0)
+        try:
+            versions[name] = metadata.version(name)
+        except metadata.PackageNotFoundError:
+            versions[name] = "not installed"
+    return versions
+
+
 def write_summary_files(study: Study, folder: Path, summary: RunSummary, started: datetime) -> None:
     """Write ``results.csv`` (every case, pending ones marked) and ``provenance.json``."""
     from .outputs import write_results_table
 
     write_results_table(folder)
-    import numpy
-    import scipy
-    import xarray
-
     document = {
         "roughcontact": _version(),
         "python": sys.version.split()[0],
         "platform": platform.platform(),
-        "packages": {"numpy": numpy.__version__, "scipy": scipy.__version__, "xarray": xarray.__version__},
+        "packages": dependency_versions(),
+        "materials": materials_used(study),
         "command": sys.argv,
         "study_file": None if study.path is None else str(study.path),
         "study_sha256": hashlib.sha256(study.text.encode()).hexdigest(),
