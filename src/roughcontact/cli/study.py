@@ -269,8 +269,11 @@ def add_commands(commands) -> None:
          (("name",), {"nargs": "?", "help": "a model, e.g. normal"})),
         ("report", _report, "write OUT/report.html: the tables and figures of a study on one offline page",
          (("folder",), {"type": Path, "help": "the output folder of 'roughcontact run'"})),
-        ("demo", _demo, "run the embedded demo study (examples/demo.toml) and write its report",
-         (("-o", "--output"), {"type": output_folder, "default": Path("demo-output"), "help": "folder"})),
+        ("demo", _demo, "run the embedded demo study (examples/demo.toml: an AFM scan's statistics, normal "
+         "contact, the three papers on small grids) and write its report",
+         (("-o", "--output"), {"type": output_folder, "default": Path("demo-output"),
+                                "help": "folder of its results and report.html (default demo-output)"})),
     )  # fmt: skip
     for name, handler, summary, (flags, keywords) in simple:
-        new_command(commands, name, handler, summary).add_argument(*flags, **keywords)
+        description = summary[0].upper() + summary[1:] + "."
+        new_command(commands, name, handler, summary, description).add_argument(*flags, **keywords)
