@@ -469,12 +469,12 @@ def test_matched_moments_refuses_what_it_cannot_match(shape, size, changes, fiel
 
 def test_matched_psd_reproduces_a_scans_psd_over_an_ensemble():
     """Each ring of the template's radial PSD is met on average; the mean square height too."""
-    from roughcontact.topography.generate import _log_binned_psd, matched_psd
+    from roughcontact.topography.generate import matched_psd
 
     template = generate.self_affine((128, 128), 2e-6, hurst=0.8, rms_height=2e-9, seed=1)
-    q, target = _log_binned_psd(template, 1.1)
+    q, target = statistics.psd_radial(template, ring_ratio=1.1)
     draws = [matched_psd(template, seed=seed) for seed in range(100)]
-    mean = np.mean([_log_binned_psd(draw, 1.1)[1] for draw in draws], axis=0)
+    mean = np.mean([statistics.psd_radial(draw, ring_ratio=1.1)[1] for draw in draws], axis=0)
     # measured: median ring ratio 1.003, rings 0.85-1.13 (the few modes of a ring scatter); mean Rq^2 -0.6 %
     assert np.median(mean / target) == pytest.approx(1.0, abs=0.02)
     assert np.all(np.abs(mean / target - 1) < 0.25)
@@ -494,5 +494,5 @@ def test_matched_psd_on_another_grid_and_refusals():
         matched_psd(profile)
     assert error.value.field == "template"
     with pytest.raises(InputError) as error:
-        matched_psd(template, bin_ratio=1.0)
-    assert error.value.field == "bin_ratio"
+        matched_psd(template, ring_ratio=1.0)
+    assert error.value.field == "ring_ratio"

@@ -904,36 +904,20 @@ def _lattice_variance(psd: Callable[[np.ndarray], np.ndarray], shape, size) -> f
     return float(np.sum(weights[nonzero] * psd(magnitude[nonzero])) / math.prod(size))
 
 
-def _log_binned_psd(topography: Topography, ratio: float) -> tuple[np.ndarray, np.ndarray]:
-    """Return the mean |q| and mean 2D PSD of a map over rings of |q| growing by ``ratio`` (none empty)."""
-    if not ratio > 1:
-        raise InputError("bin_ratio", f"must be > 1, got {ratio!r}.", "e.g. 1.1 (10 % wide rings).")
-    qx, qy, psd = statistics.psd_2d(topography)
-    magnitude = np.hypot(qx[:, None], qy[None, :]).ravel()
-    values = psd.ravel()
-    keep = magnitude > 0
-    magnitude, values = magnitude[keep], values[keep]
-    index = np.floor(np.log(magnitude / magnitude.min()) / math.log(ratio) + 1e-9).astype(int)
-    counts = np.bincount(index)
-    filled = counts > 0
-    q = np.bincount(index, weights=magnitude)[filled] / counts[filled]
-    return q, np.bincount(index, weights=values)[filled] / counts[filled]
-
-
 def matched_psd(
     template: Topography,
     *,
     shape: int | tuple[int, int] | None = None,
     size: float | tuple[float, float] | None = None,
     seed: int | None = None,
-    bin_ratio: float = 1.1,
+    ring_ratio: float = 1.1,
 ) -> Topography:
     r"""Make a random map with the radially averaged PSD of a measured scan (a stand-in for more spots).
 
-    The template's isotropic PSD :math:`C(q)` is its 2D PSD
-    (:func:`~roughcontact.topography.statistics.psd_2d`, default window) averaged over rings of
-    |q| that grow by ``bin_ratio`` (narrow: a ring's mean C is C at its mean q to a few per cent
-    even where C falls as q^-3.6; the lowest rings hold single lattice circles), interpolated
+    The template's isotropic PSD :math:`C(q)` is its radial PSD
+    (:func:`~roughcontact.topography.statistics.psd_radial`, default window) over rings of |q|
+    that grow by ``ring_ratio`` (narrow: a ring's mean C is C at its mean q to a few per cent even
+    where C falls as q^-3.6; the lowest rings hold single lattice circles), interpolated
     linearly in log q - log C; below its lowest wavevector it continues flat (a roll-off plateau:
     the scan says nothing about longer waves), beyond its last ring with power it is zero. White
     noise on the new grid is filtered by :math:`\sqrt{C}` (:func:`self_affine`'s
@@ -953,7 +937,7 @@ def matched_psd(
         Grid (an int: square) and size [m] of the new surface; default the template's.
     seed : int, optional
         Seed of ``numpy.random.default_rng``.
-    bin_ratio : float
+    ring_ratio : float
         Ratio of the outer to the inner |q| of a ring of the template's radial PSD (> 1).
 
     Returns
@@ -974,12 +958,12 @@ def matched_psd(
         raise InputError("template", "matched_psd needs a map (an isotropic 2D PSD).", "give a 2D scan.")
     shape = template.shape if shape is None else (shape, shape) if isinstance(shape, int) else shape
     shape, size = _grid(shape, template.size if size is None else size)
-    q, psd = _log_binned_psd(template, bin_ratio)
+    q, psd = statistics.psd_radial(template, ring_ratio=ring_ratio)
     keep = psd > 1e-12 * psd.max()  # round-off beyond a band's end is no power
     log_q, log_c = np.log(q[keep]), np.log(psd[keep])
 
     def interpolated(magnitude: np.ndarray) -> np.ndarray:
-        inside = magnitude <= q[keep].max() * math.sqrt(bin_ratio)  # to the outer edge of its last ring
+        inside = magnitude <= q[keep].max() * math.sqrt(ring_ratio)  # to the outer edge of its last ring
         values = np.exp(np.interp(np.log(np.maximum(magnitude, q[keep].min())), log_q, log_c))
         return np.where(inside, values, 0.0)
 

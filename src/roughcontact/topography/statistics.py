@@ -636,7 +636,12 @@ def psd_2d(
 
 
 def psd_radial(
-    topography: Topography, nbins: int | None = None, *, window: str | None = "default", workers: int = -1
+    topography: Topography,
+    nbins: int | None = None,
+    *,
+    ring_ratio: float | None = None,
+    window: str | None = "default",
+    workers: int = -1,
 ) -> tuple[np.ndarray, np.ndarray]:
     r"""Radially averaged 2D power spectral density :math:`C^\mathrm{iso}(q)` of a map.
 
@@ -654,6 +659,10 @@ def psd_radial(
         A map (heights [m]).
     nbins : int, optional
         Number of bins; default ``max(shape) // 2``.
+    ring_ratio : float, optional
+        Instead of equal-width bins, rings whose outer |q| is ``ring_ratio`` (> 1) times their inner
+        one, from the lowest wavevector up: narrow on a log scale, so a ring's mean C is C at its
+        mean q even where C falls steeply, and the lowest rings hold single lattice circles.
     window, workers
         As in :func:`psd_2d`.
 
@@ -668,6 +677,8 @@ def psd_radial(
     ----------
     Jacobs, Junge and Pastewka (2017) doi:10.1088/2051-672X/aa51f8
     """
+    if ring_ratio is not None and not ring_ratio > 1:
+        raise InputError("ring_ratio", f"must be > 1, got {ring_ratio!r}.", "e.g. 1.1 (10 % wide rings).")
     qx, qy, psd = psd_2d(topography, window=window, workers=workers)
     if nbins is None:
         nbins = max(topography.shape) // 2
@@ -677,7 +688,11 @@ def psd_radial(
     values = psd.ravel()
     keep = magnitude > 0
     magnitude, values = magnitude[keep], values[keep]
-    index = np.minimum((magnitude / magnitude.max() * nbins).astype(int), nbins - 1)
+    if ring_ratio is None:
+        index = np.minimum((magnitude / magnitude.max() * nbins).astype(int), nbins - 1)
+    else:
+        index = np.floor(np.log(magnitude / magnitude.min()) / np.log(ring_ratio) + 1e-9).astype(int)
+        nbins = int(index.max()) + 1
     counts = np.bincount(index, minlength=nbins)
     filled = counts > 0
     q = np.bincount(index, weights=magnitude, minlength=nbins)[filled] / counts[filled]
