@@ -169,28 +169,29 @@ def headline_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
 def spread_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
     """One row per group of realisations and scalar: its spread over the realisations (SI).
 
-    A group is the cases that differ only in their realisation (``replicate``): same sample and
-    swept values, a swept ``topographies.NAME.file`` aside (the measured spots of one sample,
-    zipped with ``replicate``, are its realisations). Each numeric scalar of the group's finished
-    cases is summarised by :func:`roughcontact.spread.spread` (n, mean, std, 95 % interval of the
-    mean, min, max), with its SI ``unit``. A scalar equal in every realisation to 1e-6 relative (an
-    input such as the force of a force-controlled case, reached to its solver's tolerance, or a
-    material constant) does not depend on the draw and is left out. Empty for an analysis of one
+    A group is the cases whose parameters differ only in their realisation (``replicate``:
+    :func:`roughcontact.plotting.cases.realisations_of`), so measured spots of one sample (files
+    zipped with ``replicate``) are its realisations too; a row names the group by its sample and
+    the swept values its cases share. Each numeric scalar of the group's finished cases is
+    summarised by :func:`roughcontact.spread.spread` (n, mean, std, 95 % interval of the mean,
+    min, max), with its SI ``unit``. A scalar equal in every realisation to 1e-6 relative (an input
+    such as the force of a force-controlled case, reached to its solver's tolerance, or a material
+    constant) does not depend on the draw and is left out. Empty for an analysis of one
     realisation.
     """
+    from ..plotting.cases import realisations_of
     from ..spread import spread
 
     if analysis.realisations < 2:
         return []
     units = dict(analysis.kind.units)
-    groups: dict[str, tuple[dict[str, Any], list[CaseRecord]]] = {}
-    for record in analysis.finished:
-        where = {"sample": record.parameters.get("sample", "")} | {
-            k: v for k, v in axis_columns(record, units).items() if not k.endswith(".file")
-        }  # measured spots of one sample (a file zipped with the replicate) are its realisations
-        groups.setdefault(json.dumps(where, sort_keys=True, default=str), (where, []))[1].append(record)
+    groups = []
+    for records in realisations_of(analysis.finished).values():
+        axes = [axis_columns(record, units) for record in records]
+        shared = {k: v for k, v in axes[0].items() if all(a.get(k) == v for a in axes)}
+        groups.append(({"sample": records[0].parameters.get("sample", "")} | shared, records))
     rows = []
-    for where, records in groups.values():
+    for where, records in groups:
         names = dict.fromkeys(n for r in records for n, v in r.scalars.items() if _numeric(v))
         for name in names:
             summary = spread(r.scalars[name] for r in records if _numeric(r.scalars.get(name)))
