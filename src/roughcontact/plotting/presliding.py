@@ -614,12 +614,9 @@ def _by_force(cases) -> list:
     return sorted(cases, key=lambda r: _number(r, "normal_force"))
 
 
-def _realisations_by_load(cases) -> dict[float, list]:
-    """Return the cases of one sample by normal force: the realisations at each load, in load order."""
-    at_load: dict[float, list] = {}
-    for case in _by_force(cases):
-        at_load.setdefault(_number(case, "normal_force"), []).append(case)
-    return at_load
+def _realisations_by_load(cases) -> list[list]:
+    """Return the realisations of each case (:func:`~.cases.realisations_of`), in load order."""
+    return sorted(realisations_of(cases).values(), key=lambda group: _number(group[0], "normal_force"))
 
 
 @caption(
@@ -639,7 +636,7 @@ def loops_figure(cases, measured: MeasuredLoop | None = None, title: str = ""):
     figure, axes = new_figure(1, len(groups), width=5.5, height=4.2)
     for ax, (sample, group) in zip(axes[0], groups.items(), strict=True):
         curves, spreads = [], []
-        for cases in _realisations_by_load(group).values():
+        for cases in _realisations_by_load(group):
             case = cases[0]
             data = case.dataset()
             force, mu = _number(case, "normal_force"), _number(case, "friction_coefficient")
@@ -915,16 +912,13 @@ def lateral_stiffness_figure(cases, measured: MeasuredLoop | None = None, title:
     dense = np.linspace(low, high, 50)
     figure, axes = new_figure(1, len(groups), width=5.5, height=5.2)
     for number, (ax, (sample, group)) in enumerate(zip(axes[0], groups.items(), strict=True)):
-        group = _by_force(group)
         at_load = _realisations_by_load(group)
-        loads = list(at_load)
-        spreads = {
-            p: [spread(_number(r, f"K_L_{p}") for r in cases) for cases in at_load.values()] for p in POINTS
-        }
+        firsts = [cases[0] for cases in at_load]
+        loads = [_number(case, "normal_force") for case in firsts]
+        spreads = {p: [spread(_number(r, f"K_L_{p}") for r in cases) for cases in at_load] for p in POINTS}
         simulated = {p: [s.mean for s in spreads[p]] for p in POINTS}
-        count = max(len(cases) for cases in at_load.values())
+        count = max(len(cases) for cases in at_load)
         interval = {p: [s.half_width for s in spreads[p]] for p in POINTS} if count > 1 else None
-        firsts = [cases[0] for cases in at_load.values()]
         curves = _mindlin_curves(firsts, dense)
         if curves is None:  # materials differ within the sample: Mindlin at the cases' loads only
             curves = {

@@ -393,16 +393,15 @@ def _lateral_stiffness_spread_table(records, context):
     (the rough ball is laterally softer than the smooth one at 95 % confidence), above 1, or
     whether 1 lies within the realisations' scatter. None without realisations.
     """
+    from ...plotting.cases import realisations_of
     from ...spread import spread
 
-    groups: dict[tuple, list] = {}
-    for record in records:
-        inputs = (record.parameters.get("sample", ""), _number(record, "normal_force"))
-        groups.setdefault(inputs, []).append(record)
-    if all(len(group) < 2 for group in groups.values()):
+    groups = list(realisations_of(records).values())
+    if all(len(group) < 2 for group in groups):
         return None
     rows = []
-    for (sample, force), group in groups.items():
+    for group in groups:
+        sample, force = group[0].parameters.get("sample", ""), _number(group[0], "normal_force")
         for point in POINTS:
             stiffness = spread(_number(r, f"K_L_{point}") for r in group)
             row = {"sample": sample, "normal_force [N]": force, "point": point, "n": stiffness.n}
