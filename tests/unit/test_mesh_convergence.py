@@ -2,6 +2,7 @@
 
 from types import SimpleNamespace
 
+import numpy as np
 import pytest
 
 from roughcontact.spread import convergence_order
@@ -40,7 +41,9 @@ def test_fig6_from_python_cases():
     from roughcontact.plotting.cases import ResultCase
 
     def case(n, peak):
-        return ResultCase(f"{n}", {"grid_points": n, "peak_interference": peak})
+        return ResultCase(
+            f"{n}", {"grid_points": n, "pixel_size": 1e-6 / np.sqrt(n), "peak_interference": peak}
+        )
 
     cases = [case(n * n, 40e-9 + 8e-9 / n**2 + d) for n in (32, 64, 128) for d in (-1e-10, 1e-10)]
     ax = mesh_convergence_figure(cases).axes[0]

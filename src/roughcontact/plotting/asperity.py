@@ -243,6 +243,54 @@ def island_load_interference_figure(cases, statistical=None, measured=None):
     return draw_load_interference(curves, common_omega_c(used), measured)
 
 
+def mesh_convergence(cases) -> list[dict] | None:
+    """Return the peak interference against the grid (paper 002 Fig. 6) and its order of convergence.
+
+    Per grid (``grid_points``, pixel ``pixel_size``; the mean over the realisations at each), the
+    peak interference, its standard deviation and its relative change from the next coarser grid;
+    with three grids or more, the finest row adds the observed order and the Richardson
+    extrapolation of the three finest (:func:`roughcontact.spread.convergence_order`) and the
+    finest grid's relative distance from it, where the three converge monotonically. Another grid
+    is the same surface only with a generator of ``modes = "wavevector"`` (one realisation at any
+    resolution). None with fewer than two grids.
+    """
+    from ..spread import convergence_order, spread
+
+    grids: dict[int, list] = {}
+    for case in cases:
+        if case.scalars.get("grid_points") is not None:
+            grids.setdefault(int(case.scalars["grid_points"]), []).append(case)
+    if len(grids) < 2:
+        return None
+    rows = []
+    for points, group in sorted(grids.items()):
+        peak = spread(float(c.scalars["peak_interference"]) for c in group)
+        rows.append(
+            {
+                "grid_points": points,
+                "pixel_size [m]": float(group[0].scalars["pixel_size"]),
+                "n": peak.n,
+                "peak_interference [m]": peak.mean,
+                "peak_interference std [m]": peak.std,
+                "change_from_coarser": abs(peak.mean / rows[-1]["peak_interference [m]"] - 1)
+                if rows
+                else None,
+            }
+        )
+    finest = rows[-3:]
+    order = convergence_order(
+        [r["pixel_size [m]"] for r in finest], [r["peak_interference [m]"] for r in finest]
+    )
+    if order is not None:
+        p, extrapolated = order
+        rows[-1]["observed_order"] = p
+        rows[-1]["extrapolated_peak_interference [m]"] = extrapolated
+        rows[-1]["finest_relative_error"] = abs(rows[-1]["peak_interference [m]"] - extrapolated) / abs(
+            extrapolated
+        )
+    return rows
+
+
 @caption(
     "Peak interference at the peak load against the number of grid points of the island (paper 002 "
     "Fig. 6): mean and standard deviation over the realisations at each grid, each realisation (the "
@@ -251,23 +299,16 @@ def island_load_interference_figure(cases, statistical=None, measured=None):
 )
 def mesh_convergence_figure(cases):
     """Draw paper 002's Fig. 6: the peak interference against the grid points (None for one grid)."""
-    from ..spread import convergence_order, spread
     from .layout import legend
 
-    grids: dict[int, list[float]] = {}
-    for case in cases:
-        if case.scalars.get("grid_points") is not None:
-            grids.setdefault(int(case.scalars["grid_points"]), []).append(
-                float(case.scalars["peak_interference"])
-            )
-    if len(grids) < 2:
+    rows = mesh_convergence(cases)
+    if rows is None:
         return None
-    points = sorted(grids)
-    spreads = [spread(grids[n]) for n in points]
-    means = np.array([s.mean for s in spreads])
-    errors = np.array([0.0 if not np.isfinite(s.std) else s.std for s in spreads])
+    points = [row["grid_points"] for row in rows]
+    means = np.array([row["peak_interference [m]"] for row in rows])
+    errors = np.nan_to_num(np.array([row["peak_interference std [m]"] for row in rows]))
     fig, ax = axes_for(None, figsize=(5.5, 4.0))
-    count = max(s.n for s in spreads)
+    count = max(row["n"] for row in rows)
     label = "BEM island" + (f", mean ± std of {count} realisations" if count > 1 else "")
     ax.errorbar(points, means * 1e9, yerr=errors * 1e9, fmt="o-", capsize=3, label=label)
     if count > 1:  # each realisation is one surface on every grid: its own line
@@ -282,13 +323,12 @@ def mesh_convergence_figure(cases):
                 linewidth=0.8,
                 label="each realisation" if number == 0 else None,
             )
-    change = abs(means[-1] / means[-2] - 1)
+    change = rows[-1]["change_from_coarser"]
     ax.set_title(
         f"finest grid {points[-1]} points: {100 * change:.2g} % from the next coarser", fontsize="medium"
     )
-    order = convergence_order([1 / np.sqrt(n) for n in points[-3:]], list(means[-3:]))
-    if order is not None:
-        p, extrapolated = order
+    if "observed_order" in rows[-1]:
+        extrapolated, p = rows[-1]["extrapolated_peak_interference [m]"], rows[-1]["observed_order"]
         ax.axhline(
             extrapolated * 1e9,
             color="0.4",

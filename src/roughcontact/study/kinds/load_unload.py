@@ -325,51 +325,10 @@ def _statistical(records, context) -> dict[str, list]:
 
 
 def _mesh_convergence(records, context):
-    """Return the peak interference against the grid (paper 002 Fig. 6) and its order of convergence.
+    """Return paper 002's Fig. 6 as a table (:func:`roughcontact.plotting.asperity.mesh_convergence`)."""
+    from ...plotting.asperity import mesh_convergence
 
-    Per grid (``grid_points``; the mean over the realisations at each), the peak interference and
-    its relative change from the next coarser grid; with three grids or more, the finest row adds
-    the observed order and the Richardson
-    extrapolation of the three finest (:func:`roughcontact.spread.convergence_order`) and the
-    finest grid's relative distance from it. Another grid is the same surface only with a
-    generator of ``modes = "wavevector"`` (one realisation at any resolution). None with fewer
-    than two grids.
-    """
-    from ...spread import convergence_order, spread
-
-    grids: dict[int, list] = {}
-    for record in records:
-        if record.scalars.get("grid_points") is not None:
-            grids.setdefault(int(record.scalars["grid_points"]), []).append(record)
-    if len(grids) < 2:
-        return None
-    rows = []
-    for points, group in sorted(grids.items()):
-        peak = spread(float(r.scalars["peak_interference"]) for r in group)
-        rows.append(
-            {
-                "grid_points": points,
-                "pixel_size [m]": float(group[0].scalars["pixel_size"]),
-                "n": peak.n,
-                "peak_interference [m]": peak.mean,
-                "peak_interference std [m]": peak.std,
-                "change_from_coarser": abs(peak.mean / rows[-1]["peak_interference [m]"] - 1)
-                if rows
-                else None,
-            }
-        )
-    order = convergence_order(
-        [row["pixel_size [m]"] for row in rows[-3:]], [row["peak_interference [m]"] for row in rows[-3:]]
-    )
-    if order is not None:
-        p, extrapolated = order
-        finest = rows[-1]
-        finest["observed_order"] = p
-        finest["extrapolated_peak_interference [m]"] = extrapolated
-        finest["finest_relative_error"] = abs(finest["peak_interference [m]"] - extrapolated) / abs(
-            extrapolated
-        )
-    return rows
+    return mesh_convergence(records)
 
 
 def _against_statistical(records, context):
