@@ -169,3 +169,14 @@ def test_the_examples_type_no_paper_number():
     }.items():
         code = "\n".join(line.split("#")[0] for line in (EXAMPLES / name).read_text().splitlines())
         assert not [value for value in typed if value in code], name
+
+
+@pytest.mark.parametrize(
+    "name", sorted(p.name for p in (Path(__file__).parents[2] / "examples").glob("*.toml"))
+)
+def test_every_example_study_validates(name):
+    """Each shipped study (paper002_mesh.toml included) builds all its cases without a problem."""
+    from roughcontact.study import load_study
+
+    study = load_study(Path(__file__).parents[2] / "examples" / name)
+    assert study.cases and not study.notes
