@@ -360,21 +360,9 @@ class RealFFT2:
     def quadratic_form_weights(self, kernel: np.ndarray) -> np.ndarray:
         """Return the weights w that make :meth:`power_staged` equal f . irfft2(kernel * rfft2(f)).
 
-        By Parseval's theorem, for a real field f (zero-padded to ``shape``, N points) and a real
-        multiplier K with K(q) = K(-q), sum_x f K f = (1/N) sum over the full spectrum of
-        K |f^|^2; on the rfft2 half-spectrum the columns 0 < j < shape[1]/2 stand for two
-        modes each (j and -j), the column 0 and, for an even width, the Nyquist column for one.
-        So w = m_j K / N with that multiplicity m_j.
+        See :func:`quadratic_form_weights`; in :attr:`real_dtype`.
         """
-        kernel = np.asarray(kernel)
-        if kernel.shape != self.spectrum_shape or np.iscomplexobj(kernel):
-            raise InputError("kernel", f"must be a real array of shape {self.spectrum_shape}.")
-        multiplicity = np.full(self.spectrum_shape[1], 2.0)
-        multiplicity[0] = 1.0
-        if self.shape[1] % 2 == 0:
-            multiplicity[-1] = 1.0
-        weights = kernel * multiplicity / (self.shape[0] * self.shape[1])
-        return np.ascontiguousarray(weights, dtype=self.real_dtype)
+        return quadratic_form_weights(self.shape, kernel, self.real_dtype)
 
     def inverse(self, spectrum: np.ndarray) -> np.ndarray:
         """Return irfft2 of a half-spectrum on ``shape``, cropped to ``input_shape`` (a new float64 array)."""
@@ -382,6 +370,27 @@ class RealFFT2:
             result = np.empty(self.input_shape)
             np.multiply(self._backward(spectrum), 1.0 / self.size, out=result)
         return result
+
+
+def quadratic_form_weights(shape: tuple[int, int], kernel: np.ndarray, dtype=np.float64) -> np.ndarray:
+    """Return the weights w with sum w |rfft2(f)|^2 = f . irfft2(kernel * rfft2(f)) on a ``shape`` grid.
+
+    By Parseval's theorem, for a real field f (zero-padded to ``shape``, N points) and a real
+    multiplier K with K(q) = K(-q), sum_x f K f = (1/N) sum over the full spectrum of
+    K |f^|^2; on the rfft2 half-spectrum the columns 0 < j < shape[1]/2 stand for two
+    modes each (j and -j), the column 0 and, for an even width, the Nyquist column for one.
+    So w = m_j K / N with that multiplicity m_j.
+    """
+    spectrum_shape = (shape[0], shape[1] // 2 + 1)
+    kernel = np.asarray(kernel)
+    if kernel.shape != spectrum_shape or np.iscomplexobj(kernel):
+        raise InputError("kernel", f"must be a real array of shape {spectrum_shape}.")
+    multiplicity = np.full(spectrum_shape[1], 2.0)
+    multiplicity[0] = 1.0
+    if shape[1] % 2 == 0:
+        multiplicity[-1] = 1.0
+    weights = kernel * multiplicity / (shape[0] * shape[1])
+    return np.ascontiguousarray(weights, dtype=dtype)
 
 
 @nb.njit(cache=True, nogil=True)

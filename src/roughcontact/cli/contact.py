@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from .options import CommandStudy, add_material_options, add_output_options, new_command, options
+from .options import CommandStudy, add_device, add_material_options, add_output_options, new_command, options
 from .output import run_command
 
 
@@ -30,6 +30,8 @@ def _contact(args: argparse.Namespace) -> int:
             spelled={"mean_pressure": "--pressure"},
         ),
     )
+    if args.device is not None:
+        command.set(("study", "device"), args.device, "--device")
     return run_command(command, args)
 
 
@@ -56,4 +58,5 @@ def add_commands(commands) -> None:
     contact.add_argument(
         "--stress-depths", nargs="+", metavar="DEPTH", help="von Mises maps at these depths, e.g. '20 nm'"
     )
+    add_device(contact)
     add_output_options(contact)

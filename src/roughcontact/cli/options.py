@@ -122,6 +122,15 @@ def file_options(*, required: bool = True, periodic: bool = True) -> argparse.Ar
     return parent
 
 
+def add_device(parser: argparse.ArgumentParser) -> None:
+    """Add ``--device cpu|gpu``: where the normal contact solves run (a study's ``[study] device``)."""
+    parser.add_argument(
+        "--device",
+        choices=("cpu", "gpu"),
+        help="run the normal contact solver on the CPU (default) or a CUDA GPU (needs roughcontact[gpu])",
+    )
+
+
 def new_command(
     commands,
     name: str,

@@ -8,11 +8,12 @@ writes the table, provenance, figures and the HTML report.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import sys
 from pathlib import Path
 
 from ..errors import InputError
-from .options import EXIT_CASES_FAILED, EXIT_INTERRUPTED, new_command, output_folder
+from .options import EXIT_CASES_FAILED, EXIT_INTERRUPTED, add_device, new_command, output_folder
 
 
 def _describe(study) -> list[str]:
@@ -106,6 +107,12 @@ def _run(args: argparse.Namespace) -> int:
     if args.workers is not None or args.scheduler is not None:
         _quiet_dask(args.verbose)
     study = load_study(args.study)
+    if args.device is not None:  # the command line overrides [study] device
+        if args.device == "gpu":
+            from .._device import resolve_device
+
+            resolve_device("gpu")  # no GPU here: the user hears it now, not from every case
+        study = dataclasses.replace(study, device=args.device)
     _notes(study)
     print("\n".join(_describe(study)))
     return run_and_report(
@@ -261,6 +268,7 @@ def add_commands(commands) -> None:
         "--worker-storage", type=Path, help="folder the workers write the fields to (only scalars come back)"
     )
     run.add_argument("--no-progress", action="store_true", help="no progress bar")
+    add_device(run)
 
     simple = (  # name, handler, summary, its one argument (flags, keywords)
         ("validate", _validate, "check a study file and list its cases without computing anything",

@@ -43,6 +43,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from .._device import namespace, to_host
 from ..elasticity.halfspace import SurfaceCompliance
 from ..errors import ConvergenceError
 from . import _constrained_cg
@@ -86,7 +87,8 @@ def contact_box(
     the grid. None when the box's area would exceed :data:`BOX_AREA` of the grid's (the whole grid
     is as cheap) or there is no contact.
     """
-    rows, columns = np.flatnonzero(contact.any(axis=1)), np.flatnonzero(contact.any(axis=0))
+    rows = np.flatnonzero(to_host(contact.any(axis=1)))  # the rows and columns of a GPU array come over
+    columns = np.flatnonzero(to_host(contact.any(axis=0)))
     if rows.size == 0:
         return None
     extent = ((int(rows[0]), int(rows[-1]) + 1), (int(columns[0]), int(columns[-1]) + 1))
@@ -130,7 +132,7 @@ def solve(
     """
     counted = [0]
     start = initial_pressure
-    if start is None or not np.any(start > 0):
+    if start is None or not bool((start > 0).any()):
         start = _coarse_answer(operator, separation, pixel_area, problem)
     boxed = _on_box(operator, separation, pixel_area, start, problem, counted)
     whole = _constrained_cg.solve(
@@ -162,7 +164,7 @@ def _on_box(operator, separation, pixel_area, start, problem, counted) -> np.nda
         **problem,
     )
     counted[0] += inner.iterations
-    pressure = np.zeros(separation.shape)
+    pressure = namespace(separation).zeros(separation.shape)
     pressure[box] = inner.pressure
     return pressure
 
@@ -199,7 +201,7 @@ def _coarse_answer(operator, separation, pixel_area, problem) -> np.ndarray | No
             ).pressure
     except ConvergenceError:  # e.g. a small max_iterations: only the warm start is lost
         return None
-    fine = np.zeros(shape)
+    fine = namespace(separation).zeros(shape)
     rows, columns = coarse_shape
     blocks = fine[: 2 * rows, : 2 * columns].reshape(rows, 2, columns, 2)
     blocks[...] = pressure[:, None, :, None]  # a view of ``fine`` (splitting axes never copies)

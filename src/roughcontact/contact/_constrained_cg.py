@@ -77,6 +77,12 @@ counts, pressures within 5e-11 of the peak on 256^2 to 1024^2 self-affine surfac
 tolerance 1e-10, 5e-14 on a free Hertz case). The
 returned pressure and gap are from the same iterate (never a mixed state).
 
+On the GPU (an operator with ``device="gpu"``) the same iteration runs on CuPy arrays: the
+passes are :mod:`roughcontact.contact._cg_kernels_gpu`'s CUDA kernels, with the same arguments
+and results, and the transforms cuFFT's. The fields are float64, or float32 with the
+operator's ``precision="single"`` (the sums stay float64); the returned fields stay on the
+device, for the caller to copy (:func:`roughcontact._device.to_host`).
+
 References
 ----------
 Polonsky, I. A. and Keer, L. M. (1999). Wear 231, 206-219. doi:10.1016/S0043-1648(99)00113-1
@@ -89,13 +95,15 @@ doi:10.1007/s00466-017-1392-5
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
+from .._device import gpu_module
 from ..elasticity.halfspace import SurfaceCompliance
 from ..errors import ConvergenceError
-from . import _cg_kernels as kernels
+from . import _cg_kernels
 
 
 @dataclass(frozen=True)
@@ -110,8 +118,23 @@ class EngineResult:
     residual: float
 
 
-def _rms(values: np.ndarray) -> float:
-    return float(np.sqrt(np.mean((values - values.mean()) ** 2)))
+def _rms(values) -> float:
+    return math.sqrt(float(((values - values.mean()) ** 2).mean()))
+
+
+def _scaled(array, factor: float):
+    """Return ``array`` multiplied by ``factor`` in place."""
+    array *= factor
+    return array
+
+
+def device_tools(compliance: SurfaceCompliance):
+    """Return the array module and the fused passes of ``compliance``'s device (numpy and numba, or CuPy)."""
+    if compliance.device == "gpu":
+        from . import _cg_kernels_gpu
+
+        return gpu_module().cupy, _cg_kernels_gpu
+    return np, _cg_kernels
 
 
 def solve(
@@ -168,31 +191,33 @@ def solve(
     load_control = force is not None
     if load_control and cap is not None:
         raise ValueError("a pressure cap needs displacement control")
-    h0 = separation
+    xp, kernels = device_tools(compliance)
+    dtype = np.float32 if compliance.precision == "single" else np.float64
+    h0 = xp.asarray(separation)
     upper = cap if cap is not None else np.inf
     # Pixel self-stiffness 1/K_ii [Pa/m]: turns an overlap into the pressure that closes it alone.
     stiffness = 1.0 / compliance.self_compliance
-    if not load_control and approach <= h0.min():
-        p = np.zeros_like(h0)  # nothing overlaps: p = 0 is the exact solution, whatever the warm start
+    if not load_control and approach <= float(h0.min()):
+        p = xp.zeros_like(h0)  # nothing overlaps: p = 0 is the exact solution, whatever the warm start
     elif initial_pressure is not None:
-        p = np.clip(initial_pressure, 0.0, upper)
+        p = xp.clip(xp.asarray(initial_pressure), 0.0, upper)
     elif load_control:
-        p = np.full(h0.shape, 0.0)
+        p = xp.full(h0.shape, 0.0)
     else:
-        p = np.clip((approach - h0) * stiffness, 0.0, upper)
+        p = xp.clip((approach - h0) * stiffness, 0.0, upper)
     if load_control:
         target = force / pixel_area  # target sum of pixel pressures
-        if p.sum() <= 0:
-            p = np.full(h0.shape, target / h0.size)
-        p = p * (target / p.sum())
+        if float(p.sum()) <= 0:
+            p = xp.full(h0.shape, target / h0.size)
+        p *= target / float(p.sum())  # p is the engine's own array (a clipped copy or a new one)
     height_scale = _rms(h0)
-    h0 = np.ascontiguousarray(h0, dtype=float)
-    p = np.ascontiguousarray(p, dtype=float)  # stored pressure; the true one is scale * p
+    h0 = xp.ascontiguousarray(h0, dtype=dtype)
+    p = xp.ascontiguousarray(p, dtype=dtype)  # stored pressure; the true one is scale * p
     scale = 1.0
     # Work arrays, reused every iteration (fresh large arrays cost page faults on every pass).
-    t, g = np.zeros_like(h0), np.empty_like(h0)
-    free = np.empty(h0.shape, dtype=np.uint8)
-    g_previous = np.zeros(h0.shape, dtype=np.float32) if precondition else None  # Polak-Ribiere
+    t, g = xp.zeros_like(h0), xp.empty_like(h0)
+    free = xp.empty(h0.shape, dtype=np.uint8)
+    g_previous = xp.zeros(h0.shape, dtype=np.float32) if precondition else None  # Polak-Ribiere
     g_norm_old = 1.0
     conjugate = False
     # Preconditioned: overlapping points with p = 0 join the step set, so the step itself gives them a
@@ -203,17 +228,22 @@ def solve(
     with compliance.staged() as ops:  # the transforms' input buffers, written by the fused passes
         ops.pressure[...] = p
         for iteration in range(max_iterations + 1):
+            u = z = None  # on the GPU each transform returns a new array: never hold two of them
             u = ops.displacement()  # K p of the stored p, in the transform's buffer
             statistics = kernels.displacement_statistics(p, u, h0, upper, scale)
             elastic_count, elastic_sum, u_sum, uu_sum = statistics
             if load_control:
-                delta = elastic_sum / elastic_count if elastic_count else float(np.min(scale * u + h0))
+                delta = elastic_sum / elastic_count if elastic_count else float((scale * u + h0).min())
             sums = kernels.gap_and_residual(p, u, h0, delta, upper, scale, t, g, ops.approximate, free, admit)
             p_sum, pg_sum, overlap, opened, free_count, gg_sum, g_sum, t_sum, gt_old = sums
             u_std = np.sqrt(max(uu_sum / u.size - (u_sum / u.size) ** 2, 0.0))
             residual = _residual(pg_sum / p_sum if p_sum > 0 else 0.0, overlap, opened, height_scale + u_std)
             if residual <= tolerance:
-                return EngineResult(scale * p, scale * u, g, float(delta), iteration, residual)
+                p *= scale  # the engine's own array
+                # On the CPU u lies in the transform's buffer, which the next solve reuses; on the GPU it is
+                # an array of its own, scaled in place (no second copy of the largest grids).
+                u = scale * u if xp is np else _scaled(u, scale)
+                return EngineResult(p, u, g, float(delta), iteration, residual)
             if iteration == max_iterations:
                 break
             lowest = min(lowest, residual)

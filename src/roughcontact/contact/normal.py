@@ -20,6 +20,7 @@ import dataclasses
 import numpy as np
 from scipy import optimize
 
+from .._device import gpu_module, to_host
 from .._version import __version__
 from ..checks import no_string, positive
 from ..elasticity.halfspace import ElasticLayer, SurfaceCompliance
@@ -72,6 +73,8 @@ def compliance_for(
     layer: ElasticLayer | None = None,
     boundary: str | None = None,
     workers: int | None = None,
+    device: str | None = None,
+    precision: str = "double",
 ) -> SurfaceCompliance:
     """Build the surface compliance operator of a topography's grid for a body (and counter-body).
 
@@ -89,6 +92,8 @@ def compliance_for(
         Default: "periodic" for a periodic topography, else "free".
     workers : int, optional
         Threads for scipy.fft.
+    device, precision : str, optional
+        Where the contact solver runs, and its fields' precision (:class:`SurfaceCompliance`).
     """
     boundary = resolve_boundary(topography, boundary)
     check_material(counter_body, "counter_body", rigid=True)
@@ -102,8 +107,9 @@ def compliance_for(
         if material is not None:
             raise InputError("material", "both a material and a layer were given.", "pass material=None.")
         return SurfaceCompliance(
-            shape, size, layer=layer, counter_body=counter_body, boundary=boundary, workers=workers
-        )
+            shape, size, layer=layer, counter_body=counter_body, boundary=boundary, workers=workers,
+            device=device, precision=precision,
+        )  # fmt: skip
     check_material(material, "material", modulus=True)
     if isinstance(material, Material):
         modulus = contact_modulus(material, counter_body)
@@ -113,7 +119,9 @@ def compliance_for(
                 "counter_body", "a contact modulus already includes both bodies.", "pass a Material instead."
             )
         modulus = material
-    return SurfaceCompliance(shape, size, modulus, boundary=boundary, workers=workers)
+    return SurfaceCompliance(
+        shape, size, modulus, boundary=boundary, workers=workers, device=device, precision=precision
+    )
 
 
 def _one_target(**targets) -> tuple[str, float]:
@@ -155,6 +163,8 @@ def solve_normal(
     initial: NormalContactResult | np.ndarray | None = None,
     compliance: SurfaceCompliance | None = None,
     precondition: bool = True,
+    device: str | None = None,
+    precision: str = "double",
 ) -> NormalContactResult:
     """Solve the normal contact of ``topography`` against a flat.
 
@@ -191,6 +201,15 @@ def solve_normal(
         Build the conjugate directions from the Fourier-inverse preconditioned gap (default;
         several times fewer iterations on rough surfaces, one more FFT pair each). False gives
         plain Polonsky-Keer.
+    device : {"cpu", "gpu"}, optional
+        Run the iteration on the CPU (numpy and numba, the default) or on a CUDA GPU (CuPy, the
+        ``roughcontact[gpu]`` extra): the same algorithm and, in double precision, the same answer
+        to round-off. Default: the environment variable ``ROUGHCONTACT_DEVICE``, else the CPU.
+        A given ``compliance`` brings its own device.
+    precision : {"double", "single"}
+        The solver's fields in float64, or (GPU only) in float32 with float64 sums: half the
+        memory, for the largest grids; the answer is then good to about 1e-6 of the peak pressure,
+        and tolerances below about 1e-6 stall (reported as a :class:`ConvergenceError`).
 
     Returns
     -------
@@ -213,7 +232,13 @@ def solve_normal(
     check_heights(topography)
     if compliance is None:
         compliance = compliance_for(
-            topography, material, counter_body=counter_body, layer=layer, boundary=boundary
+            topography,
+            material,
+            counter_body=counter_body,
+            layer=layer,
+            boundary=boundary,
+            device=device,
+            precision=precision,
         )
     shape = compliance.shape
     if int(np.prod(shape)) != topography.heights.size or shape[0] != topography.shape[0]:
@@ -231,6 +256,10 @@ def solve_normal(
     guess = initial.approach if isinstance(initial, NormalContactResult) else None
     if initial is not None:
         initial = (initial.pressure if isinstance(initial, NormalContactResult) else initial).reshape(shape)
+    if compliance.device == "gpu":  # the whole solve, its cascade included, runs on the device
+        single = compliance.precision == "single"
+        separation = gpu_module().cupy.asarray(separation, dtype=np.float32 if single else np.float64)
+        initial = None if initial is None else gpu_module().cupy.asarray(initial)
     common = dict(
         pixel_area=measure,
         cap=hardness,
@@ -249,9 +278,9 @@ def solve_normal(
         )
     return NormalContactResult(
         topography=topography,
-        pressure=raw.pressure.reshape(topography.shape),
-        gap=raw.gap.reshape(topography.shape),
-        displacement=raw.displacement.reshape(topography.shape),
+        pressure=to_host(raw.pressure).astype(float, copy=False).reshape(topography.shape),
+        gap=to_host(raw.gap).astype(float, copy=False).reshape(topography.shape),
+        displacement=to_host(raw.displacement).astype(float, copy=False).reshape(topography.shape),
         approach=raw.approach,
         contact_modulus=compliance.contact_modulus,
         boundary=compliance.boundary,
@@ -353,12 +382,12 @@ def _capped_at_force(compliance, separation, target_force, initial, guess, measu
                 compliance, separation, approach=delta, initial_pressure=state["pressure"], **common
             )
             state["pressure"], solved[delta] = raw.pressure, raw
-        return solved[delta].pressure.sum() * measure - target_force
+        return float(solved[delta].pressure.sum()) * measure - target_force
 
     if guess is not None and guess > 0:
         low, high = _bracket_around(excess, guess, target_force)
     else:
-        low, high = 0.0, float(np.ptp(separation)) or (target_force / capacity) * 1e-6
+        low, high = 0.0, float(separation.max() - separation.min()) or (target_force / capacity) * 1e-6
         while excess(high) < 0:
             low, high = high, 2.0 * high
     relative = common["tolerance"]

@@ -4,7 +4,9 @@
 applies it with :class:`roughcontact._backend.RealFFT2` (FFTW through pyFFTW when it imports,
 else ``scipy.fft``; ``ROUGHCONTACT_FFT=scipy`` forces the latter; all cores by default). It is
 the only operator the contact solvers call; one application costs one rfft2 + irfft2 pair (of
-the padded grid for a free boundary).
+the padded grid for a free boundary). With ``device="gpu"`` the contact solver's transforms run
+on the GPU instead (:class:`roughcontact._gpu.DeviceFFT2`, cuFFT through CuPy), through the same
+staged interface.
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from functools import cached_property
 import numpy as np
 
 from .._backend import RealFFT2, resolve_workers
+from .._device import check_storage, gpu_module, resolve_device
 from ..errors import InputError
 from ..materials import Material
 from . import kernels
@@ -147,6 +150,13 @@ class SurfaceCompliance:
         FFTW planner effort of the operator's transforms (:class:`~roughcontact._backend.RealFFT2`'s
         ``measure``; default by size). :meth:`coarse` operators are estimated: they run a few
         iterations, and a measured plan costs about a second at 1024^2.
+    device : {"cpu", "gpu"}, optional
+        Where the contact solver's iteration runs (:func:`roughcontact._device.resolve_device`;
+        default ``ROUGHCONTACT_DEVICE``, else the CPU). :meth:`__call__` and :meth:`inverse`
+        always run on the CPU.
+    precision : {"double", "single"}
+        Precision of the solver's fields and of K p: float32 (``"single"``, GPU only) halves the
+        memory of the largest grids; the engine's sums stay float64 either way.
 
     Attributes
     ----------
@@ -177,6 +187,8 @@ class SurfaceCompliance:
         workers: int | None = None,
         fft_backend: str | None = None,
         fft_measure: bool | None = None,
+        device: str | None = None,
+        precision: str = "double",
     ):
         if boundary not in kernels.BOUNDARIES:
             raise InputError("boundary", f"unknown boundary {boundary!r}.", "use 'periodic' or 'free'.")
@@ -203,6 +215,8 @@ class SurfaceCompliance:
         self.transform_shape = self.shape if boundary == "periodic" else padded
         self._counter_body = counter_body
         self._fft_backend, self._fft_measure = fft_backend, fft_measure
+        self.device = resolve_device(device)
+        self.precision = check_storage(precision, self.device)
         self._windows: dict[tuple[int, int], SurfaceCompliance] = {}
         self.kernel = self._kernel(boundary)
         self._derived = {}  # made on first use: inverse kernel, single-precision transform and kernels
@@ -304,6 +318,8 @@ class SurfaceCompliance:
             workers=self.workers,
             fft_backend=self._fft_backend,
             fft_measure=fft_measure,
+            device=self.device,
+            precision=self.precision,
         )
 
     def __call__(self, pressure: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
@@ -352,30 +368,43 @@ class SurfaceCompliance:
         one or two on free Hertz and rough-ball cases, 256^2 to 1024^2.
         """
         if "single" not in self._derived:
-            options = dict(backend=self._fft.backend, precision="single", measure=self._fft_measure)
-            single = RealFFT2(self.transform_shape, self.workers, input_shape=self.shape, **options)
-            if self.boundary == "periodic":
-                window, stiffness = single, self.inverse_kernel()
-            else:
-                window = RealFFT2(self.shape, self.workers, **options)
-                stiffness = _stiffness(self._kernel("periodic"))
-            self._derived["kernel/N"] = self._fft.prepared(self.kernel)
+            double, single, window, stiffness = self._transforms()
+            self._derived["kernel/N"] = double.prepared(self.kernel)
             self._derived["inverse/N single"] = window.prepared(stiffness)
             self._derived["quadratic single"] = single.quadratic_form_weights(self.kernel)
-            self._derived["single"], self._derived["window"] = single, window
-        single, window = self._derived["single"], self._derived["window"]
-        with self._fft.staged() as pressure, single.staged() as direction, window.staged() as approximate:
+            self._derived["double"], self._derived["single"], self._derived["window"] = double, single, window
+        double, single, window = (self._derived[name] for name in ("double", "single", "window"))
+        with double.staged() as pressure, single.staged() as direction, window.staged() as approximate:
             yield StagedCompliance(
                 pressure=pressure,
                 approximate=approximate,
                 direction=direction,
-                _double=self._fft,
+                _double=double,
                 _single=single,
                 _window=window,
                 _kernel=self._derived["kernel/N"],
                 _inverse=self._derived["inverse/N single"],
                 _weights=self._derived["quadratic single"],
             )
+
+    def _transforms(self):
+        """Return the solver's transforms (K p, t.K t, M g) and the preconditioner's stiffness kernel.
+
+        On the CPU :class:`~roughcontact._backend.RealFFT2` (K p on this operator's own transform),
+        on the GPU :class:`~roughcontact._gpu.DeviceFFT2`; see :meth:`staged`.
+        """
+        periodic = self.boundary == "periodic"
+        stiffness = self.inverse_kernel() if periodic else _stiffness(self._kernel("periodic"))
+        if self.device == "gpu":
+            device_fft = gpu_module().DeviceFFT2
+            double = device_fft(self.transform_shape, input_shape=self.shape, precision=self.precision)
+            single = device_fft(self.transform_shape, input_shape=self.shape, precision="single")
+            window = single if periodic else device_fft(self.shape, precision="single")
+            return double, single, window, stiffness
+        options = dict(backend=self._fft.backend, precision="single", measure=self._fft_measure)
+        single = RealFFT2(self.transform_shape, self.workers, input_shape=self.shape, **options)
+        window = single if periodic else RealFFT2(self.shape, self.workers, **options)
+        return self._fft, single, window, stiffness
 
     def plan(self) -> None:
         """Make the FFT plans of every transform the contact solver uses (double and single precision).

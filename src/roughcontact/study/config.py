@@ -53,7 +53,7 @@ import json
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 from pydantic import BaseModel
 
@@ -190,6 +190,8 @@ class Study:
         What the user should know but that does not stop the study (deprecated spellings).
     prepared : dict
         Name -> :func:`preparation` of every file topography (levelling, filled points).
+    device : {"cpu", "gpu"}
+        From ``[study]``: where the cases' normal contact solves run.
     """
 
     path: Path | None
@@ -202,6 +204,7 @@ class Study:
     loaded: dict[str, Topography]
     notes: tuple[str, ...] = ()
     prepared: dict[str, dict] = field(default_factory=dict)
+    device: str = "cpu"
 
     @property
     def cases(self) -> list[Case]:
@@ -222,6 +225,9 @@ class StudySection(Strict):
     name: str
     description: str = ""
     seed: int = 0
+    device: Literal["cpu", "gpu"] = "cpu"
+    """Where the normal contact solves of the cases run (``roughcontact[gpu]`` for "gpu"); the
+    answers do not depend on it, so it is no part of a case's key."""
 
 
 # --- cases ---------------------------------------------------------------------------------------
@@ -337,6 +343,8 @@ class _Builder:
         self.section = collect(
             self.problems, Where(("study",), "study"), StudySection, document.get("study", {})
         )
+        if self.section is not None and self.section.device == "gpu":
+            self._check_gpu()
         self.raw_topographies = self._tables("topographies")
         self.raw_materials = self._tables("materials")
         for name, raw in self.raw_topographies.items():  # report bad tables once, not per case
@@ -349,6 +357,21 @@ class _Builder:
     def problem(self, where: Where, problem: str, fix: str | None, cli_fix: str | None = None) -> None:
         """Record a problem at ``where`` (``cli_fix``: its fix in the command line's words, if known)."""
         self.problems.append(Problem(where.label, problem, fix, where.path, cli_fix))
+
+    def _check_gpu(self) -> None:
+        """Record a problem at ``study.device`` when the GPU it asks for cannot be used here."""
+        from .._device import resolve_device
+
+        try:
+            resolve_device("gpu")
+        except InputError as error:
+            where = Where(("study", "device"), "study.device")
+            self.problem(
+                where,
+                error.problem,
+                "install roughcontact[gpu], or write device = 'cpu'.",
+                error.fix_in("cli"),
+            )
 
     def _tables(self, key: str) -> dict[str, dict]:
         tables = self.document.get(key, {})
@@ -808,6 +831,7 @@ def build_study(document: dict, *, folder: Path, text: str, source: str, path: P
         loaded=builder.loaded,
         notes=tuple(dict.fromkeys(builder.notes)),
         prepared=builder.prepared,
+        device=section.device,
     )
 
 
