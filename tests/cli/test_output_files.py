@@ -54,4 +54,4 @@ def test_a_single_case_is_named_by_its_surface_and_load_not_its_hash(run, tmp_pa
 
     assert run(*CONTACT, "--pressure", "5 MPa", "-o", tmp_path / "out")[0] == 0
     (analysis,) = read_study(tmp_path / "out")[1]
-    assert analysis.records[0].label == "surface, mean_pressure=5 MPa"
+    assert analysis.records[0].label == "surface, mean pressure 5 MPa"

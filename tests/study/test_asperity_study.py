@@ -123,13 +123,13 @@ def test_example_end_to_end_reproduces_section_iv_and_draws_kke_against_bem(cli,
     figure = analysis.kind.figures["load_interference"](analysis.finished, context(analysis, analyses))
     ax = figure.axes[0]
     labels = [line.get_label() for line in ax.get_lines()]
-    assert "KKE (kogut_etsion), loading" in labels and "KKE (kogut_etsion), unloading" in labels
+    assert "KKE (Kogut-Etsion), loading" in labels and "KKE (Kogut-Etsion), unloading" in labels
     bem = [label for label in labels if label.startswith("BEM")]  # the mean of the two replicates
     assert len(bem) == 2 and all("mean of 2 realisations" in label for label in bem)
     assert len(ax.collections) == 2  # the range of the replicates shaded, loading and unloading
     assert "measured" in labels
     assert ax.get_xlabel() == "interference ω/ω_c"
-    kke_loading = ax.get_lines()[labels.index("KKE (kogut_etsion), loading")]
+    kke_loading = ax.get_lines()[labels.index("KKE (Kogut-Etsion), loading")]
     assert np.max(kke_loading.get_xdata()) == pytest.approx(float(kke["peak_interference_over_omega_c"]))
 
 

@@ -160,7 +160,7 @@ def test_report_tables_are_in_engineering_units_with_the_unit_beside_the_number(
 def test_report_captions_say_what_each_figure_shows(finished, cli):
     cli("report", finished)
     page = (finished / "report.html").read_text()
-    assert "Contact pressure (top) and gap (bottom)" in page
+    assert "the real contact area (red) on the nominal area" in page
     assert page.count("<figcaption><b>") == 6
 
 

@@ -157,10 +157,10 @@ def test_cases_are_grouped_by_all_but_their_realisation():
     from roughcontact.plotting.cases import ResultCase, realisations_of
 
     cases = [
-        ResultCase(f"force=10 uN, replicate={r}", {}, None, {"force": 1e-5, "replicate": r}) for r in range(3)
-    ] + [ResultCase("force=20 uN, replicate=0", {}, None, {"force": 2e-5, "replicate": 0})]
+        ResultCase(f"force 10 uN, replicate {r}", {}, None, {"force": 1e-5, "replicate": r}) for r in range(3)
+    ] + [ResultCase("force 20 uN, replicate 0", {}, None, {"force": 2e-5, "replicate": 0})]
     groups = realisations_of(cases)
-    assert list(groups) == ["force=10 uN", "force=20 uN"]
+    assert list(groups) == ["force 10 uN", "force 20 uN"]
     assert [len(g) for g in groups.values()] == [3, 1]
 
 

@@ -420,7 +420,9 @@ def test_a_failing_case_is_recorded_the_others_finish_and_resume_retries_only_it
     assert status == EXIT_CASES_FAILED
     assert "2 cases run, 0 reused, 1 failed" in out
     (failed,) = [c for c in load_study(study_path).cases if c.parameters.mean_pressure > 15e6]
-    label = ", ".join(f"{axis.rsplit('.', 1)[-1]}={value}" for axis, value in failed.axes.items())
+    label = ", ".join(
+        f"{axis.rsplit('.', 1)[-1].replace('_', ' ')} {value}" for axis, value in failed.axes.items()
+    )
     assert f"failed: contact ({label}): ConvergenceError: solve_normal did not converge" in err
     assert failed.case_id not in err
 

@@ -53,6 +53,13 @@ from . import elastic_plastic as ep
 from .greenwood_williamson import SummitDistribution
 
 LOADING_LAWS = ("kogut_etsion", "paper002_eq10", "jackson_green", "hertz")
+LAW_NAMES = {
+    "kogut_etsion": "Kogut-Etsion",
+    "paper002_eq10": "paper 002 eq. 10",
+    "jackson_green": "Jackson-Green",
+    "hertz": "Hertz",
+}
+"""Each loading law in a reader's words (legends and reports)."""
 _NEGLIGIBLE = 1e-9  # probability of summits beyond the fits' range that may be left out
 
 

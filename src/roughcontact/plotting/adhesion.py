@@ -31,18 +31,21 @@ def _per_length(cases) -> bool:
     return any(LINE_NAMES["pull_off_force"] in r.scalars for r in cases)
 
 
+BRANCH_STYLES = {"loading": "-", "unloading": "-."}
+"""Line style of each branch of the boundary-element cycle (the Winkler springs are dashed)."""
+
+
 def _draw_cycle(ax, data, case, colour, scales) -> None:
-    """One case's cycle: solved steps joined, a jump dotted, the pull-off marked; Winkler dashed."""
+    """Draw one case's cycle: loading solid, unloading dash-dotted, jumps dotted; Winkler dashed."""
     (a_scale, _), (f_scale, _) = scales
     approach = np.asarray(data["approach"]) / a_scale
     force = np.asarray(data["force"]) / f_scale
     jump = np.asarray(data["jump"], dtype=bool)
-    start = 0
-    for end in [*np.flatnonzero(jump), len(force)]:
-        ax.plot(approach[start:end], force[start:end], "-", color=colour, lw=1.4)
-        if end < len(force):
-            ax.plot(approach[end - 1 : end + 1], force[end - 1 : end + 1], ":", color=colour, lw=1.0)
-        start = end
+    turn = int(np.argmax(approach))  # the deepest approach ends the loading branch
+    for branch, part in (("loading", slice(0, turn + 1)), ("unloading", slice(turn, len(force)))):
+        if branch == "unloading" and retraces(approach, force, turn):
+            break  # drawn over the loading line it would only hide its style
+        _draw_branch(ax, approach[part], force[part], jump[part], BRANCH_STYLES[branch], colour)
     scalars = case.scalars
     pull_off = _scalar(scalars, "pull_off_force")
     force_unit = "N/m" if _per_length([case]) else "N"
@@ -54,7 +57,9 @@ def _draw_cycle(ax, data, case, colour, scales) -> None:
         label=f"{case.label}: pull-off {_with_unit(pull_off, _scale([pull_off], force_unit))}",
     )
     if "winkler_force" in data:
-        ax.plot(approach, np.asarray(data["winkler_force"]) / f_scale, "--", color=colour, lw=1.2)
+        winkler = np.asarray(data["winkler_force"]) / f_scale
+        end = turn + 1 if retraces(approach, winkler, turn) else len(winkler)
+        ax.plot(approach[:end], winkler[:end], "--", color=colour, lw=1.2)
         ax.plot(
             scalars["winkler_pull_off_approach"] / a_scale,
             -scalars["winkler_pull_off_force"] / f_scale,
@@ -63,6 +68,53 @@ def _draw_cycle(ax, data, case, colour, scales) -> None:
             color=colour,
             label=f"Winkler springs: pull-off {_with_unit(scalars['winkler_pull_off_force'])}",
         )
+
+
+def retraces(approach: np.ndarray, force: np.ndarray, turn: int) -> bool:
+    """Whether the unloading branch (after index ``turn``) lies on the loading one (to 0.1 % of the range)."""
+    load_a, load_f = approach[: turn + 1], force[: turn + 1]
+    back_a, back_f = approach[turn:][::-1], force[turn:][::-1]
+    if back_a.size < 2 or not (np.all(np.diff(load_a) > 0) and np.all(np.diff(back_a) > 0)):
+        return False
+    shared = load_a[(load_a >= back_a[0]) & (load_a <= back_a[-1])]
+    if shared.size == 0:
+        return False
+    difference = np.abs(np.interp(shared, load_a, load_f) - np.interp(shared, back_a, back_f))
+    return bool(difference.max() <= 1e-3 * (np.ptp(force) or 1.0))
+
+
+def _draw_branch(ax, approach, force, jump, style: str, colour) -> None:
+    """Draw the solved steps of one branch joined in ``style``, and each jump between two steps dotted."""
+    start = 0
+    for end in [*np.flatnonzero(jump[1:]) + 1, len(force)]:
+        ax.plot(approach[start:end], force[start:end], style, color=colour, lw=1.4)
+        if end < len(force):
+            ax.plot(approach[end - 1 : end + 1], force[end - 1 : end + 1], ":", color=colour, lw=1.0)
+        start = end
+
+
+def _style_legend(ax, winkler: bool, retraced: bool, jumps: bool) -> None:
+    """Add the legend of the cases' pull-offs with entries that say what each line style means.
+
+    ``retraced``: every case's unloading lies on its loading, so only the loading is drawn;
+    ``jumps``: some case jumps into or out of contact (dotted).
+    """
+    from matplotlib.lines import Line2D
+
+    from .layout import _drawn
+
+    handles, labels = ax.get_legend_handles_labels()
+    kept = [(h, label) for h, label in zip(handles, labels, strict=True) if _drawn(ax, h)]
+    styles = [(Line2D([], [], color="0.3", ls=style), f"{branch} (boundary elements)")
+              for branch, style in BRANCH_STYLES.items()]  # fmt: skip
+    if retraced:
+        styles = [(Line2D([], [], color="0.3", ls="-"), "loading; unloading retraces it (boundary elements)")]
+    if jumps:
+        styles.append((Line2D([], [], color="0.3", ls=":"), "jump into or out of contact"))
+    if winkler:
+        styles.append((Line2D([], [], color="0.3", ls="--"), "Winkler springs"))
+    entries = kept + styles
+    ax.legend(*zip(*entries, strict=True), fontsize="small")
 
 
 def _approach_limits(datasets) -> tuple[float, float]:
@@ -90,7 +142,8 @@ def _with_unit(value: float, scale: tuple[float, str] | None = None) -> str:
 @caption(
     "Normal force against the flat's approach (from the first touch of the undeformed surface) over "
     "the load-unload cycle of up to six cases (left: the whole cycle; right: near the pull-off, forces "
-    "within 1.5 times the largest pull-off force): solid, the boundary-element solution step by step; "
+    "within 1.5 times the largest pull-off force): the boundary-element solution step by step, solid on "
+    "loading and dash-dotted on unloading; "
     "dotted, a jump into or out of contact (bracketed to the jump resolution); triangle, the pull-off "
     "force; dashed and open square, paper 000's Winkler-layer springs on the same surface and their "
     "pull-off (winkler = true). The area "
@@ -98,7 +151,7 @@ def _with_unit(value: float, scale: tuple[float, str] | None = None) -> str:
 )
 def force_approach_figure(cases):
     """Draw the force-approach cycles of up to six cases with fields (see the caption); None without any."""
-    from .layout import legend, new_figure
+    from .layout import new_figure
 
     chosen = evenly_chosen(with_fields(cases), 6)
     if not chosen:
@@ -128,10 +181,13 @@ def force_approach_figure(cases):
     )
     zoom.set_xlim(left / scales[0][0], right / scales[0][0])
     winkler = any("winkler_force" in d for d in datasets)
-    whole.set_title("load-unload cycle" + (" (dashed: Winkler springs)" if winkler else ""))
+    whole.set_title("load-unload cycle")
     zoom.set_title("near the pull-off")
-    ax = zoom
-    legend(ax, fontsize="small")
+    retraced = all(
+        retraces(np.asarray(d["approach"]), np.asarray(d["force"]), int(np.argmax(np.asarray(d["approach"]))))
+        for d in datasets
+    )
+    _style_legend(zoom, winkler, retraced, any(bool(np.asarray(d["jump"]).any()) for d in datasets))
     return figure
 
 

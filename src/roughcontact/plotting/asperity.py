@@ -160,13 +160,21 @@ def draw_load_interference(curves: dict[str, dict], omega_c: float | None, measu
     return figure
 
 
+def _law_words(case) -> str:
+    """Return the case's single-asperity loading law in a reader's words (``Kogut-Etsion``)."""
+    from ..asperity.load_unload import LAW_NAMES
+
+    law = case.parameters.get("law", "")
+    return LAW_NAMES.get(law, law)
+
+
 def _labelled_curves(cases) -> dict[str, dict]:
     chosen = evenly_chosen(with_fields(cases), 5)
     curves = {}
     for case in chosen:
         curve = curve_of(case)
         if curve is not None:
-            law = case.parameters.get("law", "")
+            law = _law_words(case)
             curves[f"KKE ({law})" if len(chosen) == 1 else f"KKE, {case.label}"] = curve
     return curves
 
@@ -209,7 +217,7 @@ def _asperity_curves(statistical: Mapping[str, Sequence]) -> tuple[dict[str, dic
         curve = curve_of(case)
         if curve is None:
             continue
-        law = case.parameters.get("law", "")
+        law = _law_words(case)
         label = f"KKE ({law})" if len(sources) == 1 else f"KKE {name}, {case.label}"
         curves[label] = curve
         used.append(case)

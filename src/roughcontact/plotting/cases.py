@@ -167,7 +167,7 @@ def realisations_of(cases: Sequence[FigureCase]) -> dict[str, list[FigureCase]]:
     """Return the cases grouped by everything but their realisation, each group by its label without it.
 
     Cases that differ only in ``replicate`` (the realisations of a study's generated surfaces)
-    are one group; the key is the label of its cases with ``replicate=...`` left out. A case
+    are one group; the key is the label of its cases with ``replicate ...`` left out. A case
     without a ``replicate`` parameter (a result drawn from Python) is a group of its own.
     """
     groups: dict[str, list[FigureCase]] = {}
@@ -179,7 +179,7 @@ def realisations_of(cases: Sequence[FigureCase]) -> dict[str, list[FigureCase]]:
         key = repr(sorted(inputs.items(), key=lambda item: item[0]))
         groups.setdefault(key, []).append(case)
     return {
-        ", ".join(p for p in group[0].label.split(", ") if not p.startswith("replicate=")): group
+        ", ".join(p for p in group[0].label.split(", ") if not p.startswith("replicate ")): group
         for group in groups.values()
     }
 

@@ -102,14 +102,26 @@ def plot_contact_overview(result) -> Figure:
     return fig
 
 
+MARKED_BELOW = 0.02
+"""Contact fraction below which each contact patch is ringed on the maps and the most loaded one is
+shown enlarged: under it the patches are a few pixels each and vanish in a map of the whole scan."""
+MARKED_PATCHES = 400
+"""At most this many patches are ringed (more rings than that hide the map)."""
+ZOOM_SIDE = 1 / 8
+"""Side of the enlarged window, as a fraction of the scan's (at least three times the patch)."""
+
+
 @caption(
-    "Contact pressure (top) and gap (bottom) of up to four cases; each row shares one colour scale, "
-    "from 0 to the 99.5th percentile of its nonzero values. Titles give the case and the fraction of "
-    "the nominal area in contact. A line scan (plane-strain line contact) is drawn as profiles: "
-    "pressure and gap against x, one curve per case."
+    "Up to four cases, one column each. Top: the real contact area (red) on the nominal area, each "
+    "contact patch ringed where less than 2 % of the area is in contact. Then the contact pressure "
+    "(grey: no contact) and the gap, each row on one colour scale from 0 to the 99.5th percentile of its "
+    "nonzero values (values above it in the top colour). Below 2 % contact, a last row enlarges the "
+    "patch that carries the largest load (its window framed on the pressure map). Titles give the case "
+    "and the fraction of the nominal area in contact. A line scan (plane-strain line contact) is drawn "
+    "as profiles: pressure and gap against x, one curve per case."
 )
 def contact_maps_figure(cases):
-    """Draw pressure and gap of up to four cases with fields (profiles for line scans); None without any."""
+    """Draw contact area, pressure and gap of up to four cases (profiles for line scans); None without any."""
     from .layout import colour_scale, legend, new_figure, shared_colorbar
     from .study import map_axes, profile_axes
 
@@ -132,18 +144,115 @@ def contact_maps_figure(cases):
                 f"{chosen[0].label}\n{100 * chosen[0].scalars['contact_fraction']:.3g} % in contact"
             )
         return figure
-    figure, axes = new_figure(2, len(chosen), width=3.6 if len(chosen) > 1 else 4.6, height=3.2)
-    for row, (name, cmap) in enumerate((("pressure", "magma"), ("gap", "viridis"))):
+    sparse = [float(case.scalars["contact_fraction"]) < MARKED_BELOW for case in chosen]
+    rows = 3 + any(sparse)
+    wide = fields[0].sizes["x"] > 1.3 * fields[0].sizes["y"]  # colour bars below wide maps, beside tall ones
+    figure, axes = new_figure(rows, len(chosen), width=3.6 if len(chosen) > 1 else 4.6, height=3.2)
+    for column, (case, data) in enumerate(zip(chosen, fields, strict=True)):
+        contact = np.asarray(data["pressure"]) > 0
+        ax = axes[0][column]
+        _contact_area_axes(ax, data["pressure"], contact, ring=sparse[column])
+        ax.set_title(f"{case.label}\n{100 * case.scalars['contact_fraction']:.3g} % in contact")
+    location = "bottom" if wide else "right"
+    for row, (name, cmap) in enumerate((("pressure", "magma"), ("gap", "viridis")), start=1):
         unit = "Pa" if name == "pressure" else "m"
         shared = colour_scale(*(data[name] for data in fields), from_zero=True)
         for column, data in enumerate(fields):
             image = map_axes(
-                axes[row][column], data[name], name, unit, cmap=cmap, scale=shared, colorbar=False
-            )
-        shared_colorbar(image, axes[row], name, unit, shared)
-    for case, ax in zip(chosen, axes[0], strict=True):
-        ax.set_title(f"{case.label}\n{100 * case.scalars['contact_fraction']:.3g} % in contact")
+                axes[row][column], data[name], name, unit, cmap=cmap, scale=shared, colorbar=False,
+                empty=0.0 if name == "pressure" else None,
+            )  # fmt: skip
+            axes[row][column].set_title(name if name == "gap" else "contact pressure (grey: no contact)")
+        shared_colorbar(image, axes[row], name, unit, shared, location=location)
+        if name == "pressure":
+            pressure_scale = shared
+    if rows == 4:
+        for column, data in enumerate(fields):
+            ax = axes[3][column]
+            if not sparse[column]:
+                ax.set_axis_off()
+                fraction = 100 * chosen[column].scalars["contact_fraction"]
+                words = f"{fraction:.2g} % in contact:\nvisible without enlargement"
+                ax.text(0.5, 0.5, words, ha="center", va="center", transform=ax.transAxes)
+                continue
+            window = _most_loaded_window(np.asarray(data["pressure"]))
+            image = map_axes(
+                ax, data["pressure"][window], "pressure", "Pa", cmap="magma", scale=pressure_scale,
+                colorbar=False, empty=0.0,
+            )  # fmt: skip
+            ax.set_title("enlarged: the most loaded patch")
+            _frame(axes[1][column], data["pressure"], window)
+        shared_colorbar(image, axes[3], "pressure", "Pa", pressure_scale, location=location)
     return figure
+
+
+def _contact_area_axes(ax: Axes, pressure, contact: np.ndarray, *, ring: bool) -> None:
+    """Draw the contact set (red on light grey) of a stored pressure field; ring each patch when ``ring``."""
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
+    from scipy import ndimage
+
+    x, y = np.asarray(pressure["x"]), np.asarray(pressure["y"])
+    size_scale, size_unit = prefixed_scale(max(np.ptp(x), np.ptp(y)) or 1e-9, "m")
+    xs, ys = x / size_scale, y / size_scale
+    colours = ListedColormap(["0.9", "#b2182b"])
+    ax.pcolormesh(
+        xs, ys, contact.T.astype(float), cmap=colours, vmin=0, vmax=1, shading="auto", rasterized=True
+    )
+    ax.set_aspect("equal")
+    ax.set_xlabel(f"x ({size_unit})")
+    ax.set_ylabel(f"y ({size_unit})")
+    handles = [Patch(color="#b2182b", label="in contact")]
+    labels, count = ndimage.label(contact)
+    if ring and 0 < count <= MARKED_PATCHES:
+        centres = ndimage.center_of_mass(contact, labels, range(1, count + 1))
+        spacing = (xs[1] - xs[0] if xs.size > 1 else 1.0, ys[1] - ys[0] if ys.size > 1 else 1.0)
+        least = 0.03 * max(np.ptp(xs), np.ptp(ys))
+        extents = ndimage.find_objects(labels)
+        sizes = [max(e[0].stop - e[0].start, e[1].stop - e[1].start) * max(spacing) for e in extents]
+        ax.scatter(
+            [xs[0] + c[0] * spacing[0] for c in centres],
+            [ys[0] + c[1] * spacing[1] for c in centres],
+            s=[(2.0 * max(size, least) / max(np.ptp(xs), np.ptp(ys)) * 72 * 3.0) ** 2 / 4 for size in sizes],
+            facecolors="none",
+            edgecolors="#2166ac",
+            linewidths=0.8,
+        )
+        handles.append(
+            ax.scatter([], [], s=40, facecolors="none", edgecolors="#2166ac", label=f"{count} patches")
+        )
+    ax.legend(
+        handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="x-small", frameon=False
+    )
+
+
+def _most_loaded_window(pressure: np.ndarray) -> tuple[slice, slice]:
+    """Return the window (slices) around the contact patch that carries the largest load."""
+    from scipy import ndimage
+
+    labels, count = ndimage.label(pressure > 0)
+    if count == 0:
+        return slice(None), slice(None)
+    loads = ndimage.sum_labels(pressure, labels, range(1, count + 1))
+    extent = ndimage.find_objects(labels)[int(np.argmax(loads))]
+    window = []
+    for part, n in zip(extent, pressure.shape, strict=True):
+        side = min(n, max(int(round(ZOOM_SIDE * n)), 3 * (part.stop - part.start), 8))
+        start = min(max((part.start + part.stop - side) // 2, 0), n - side)
+        window.append(slice(start, start + side))
+    return window[0], window[1]
+
+
+def _frame(ax: Axes, field, window: tuple[slice, slice]) -> None:
+    """Frame ``window`` of ``field`` (a map drawn by ``map_axes``) on ``ax``."""
+    from matplotlib.patches import Rectangle
+
+    x, y = np.asarray(field["x"]), np.asarray(field["y"])
+    size_scale, _ = prefixed_scale(max(np.ptp(x), np.ptp(y)) or 1e-9, "m")
+    xs, ys = x[window[0]] / size_scale, y[window[1]] / size_scale
+    ax.add_patch(
+        Rectangle((xs[0], ys[0]), np.ptp(xs), np.ptp(ys), fill=False, edgecolor="#2166ac", linewidth=1.0)
+    )
 
 
 def _curve_of_cases(cases, x: str, y: str, scales: tuple[float, float], labels: tuple[str, str, str]):
@@ -233,7 +342,8 @@ def von_mises_figure(cases):
     from .layout import colour_scale, new_figure, shared_colorbar
     from .study import map_axes
 
-    chosen = evenly_chosen([r for r in cases if "max_von_mises" in r.scalars], 4)
+    # a case without load has no stress to show: an empty map under a colour bar says nothing
+    chosen = evenly_chosen([r for r in cases if float(r.scalars.get("max_von_mises", 0.0)) > 0], 4)
     if not chosen:
         return None
     figure, axes = new_figure(1, len(chosen), width=3.6 if len(chosen) > 1 else 4.6, height=3.2)

@@ -13,24 +13,55 @@ from ..units import prefixed_scale
 from .cases import by_sample, caption, grouped, loads_of, mean_by_load
 from .layout import axes_for, legend
 
+BOX_FROM = 5
+"""Fewest values a box is drawn for: quartiles of fewer values are not quartiles (points only then)."""
+
 
 def draw_boxes(ax: Axes, data, positions, colours, width: float = 0.7) -> list:
     """Draw one box per list of values (quartiles, whiskers min to max) with every value as a point.
 
-    The points (spread sideways a little so equal values stay apart) show what a box of few values
-    cannot: one scan per sample draws a point on a flat box. Returns the boxes (legend handles).
+    Lists of fewer than :data:`BOX_FROM` values get their points and a median tick, no box. The
+    points (spread sideways a little so equal values stay apart) are always drawn. Returns one
+    legend handle per list (a patch of its colour).
     """
-    boxes = ax.boxplot(
-        data, positions=positions, whis=(0, 100), widths=width, patch_artist=True, medianprops={"color": "k"}
-    )
+    from matplotlib.patches import Patch
+
     spread = np.random.default_rng(0)
-    for box, values, position, colour in zip(boxes["boxes"], data, positions, colours, strict=True):
-        box.set_facecolor(colour)
-        box.set_alpha(0.6)
+    boxed = [k for k, values in enumerate(data) if len(values) >= BOX_FROM]
+    if boxed:
+        boxes = ax.boxplot(
+            [data[k] for k in boxed],
+            positions=[positions[k] for k in boxed],
+            whis=(0, 100),
+            widths=width,
+            patch_artist=True,
+            medianprops={"color": "k"},
+            manage_ticks=False,
+        )
+        for box, k in zip(boxes["boxes"], boxed, strict=True):
+            box.set_facecolor(colours[k])
+            box.set_alpha(0.6)
+    for k, (values, position, colour) in enumerate(zip(data, positions, colours, strict=True)):
         values = np.asarray(values, dtype=float)
         offsets = spread.uniform(-0.15, 0.15, values.size) * width
-        ax.plot(position + offsets, values, "o", color="k", markersize=3, alpha=0.7, zorder=3)
-    return boxes["boxes"]
+        ax.plot(
+            position + offsets, values, "o", color="k" if k in boxed else colour, markersize=3.5, zorder=3
+        )
+        if k not in boxed and values.size:
+            ax.plot(
+                [position - 0.3 * width, position + 0.3 * width], [np.median(values)] * 2, "-", color=colour
+            )
+    ax.set_ylim(bottom=0)  # mu from 0: a few percent between samples must look like a few percent
+    return [Patch(facecolor=colour, alpha=0.6) for colour in colours]
+
+
+def box_words(data) -> str:
+    """Say what the boxes of ``data`` are, for a title: quartiles, or points where too few values."""
+    if all(len(values) >= BOX_FROM for values in data):
+        return "boxes: quartiles, whiskers: min to max"
+    if not any(len(values) >= BOX_FROM for values in data):
+        return f"each value a point, line: median (fewer than {BOX_FROM} values: no boxes)"
+    return f"boxes: quartiles, whiskers: min to max; points and median only below {BOX_FROM} values"
 
 
 def plot_mu_boxes(comparison, ax: Axes | None = None):
@@ -61,7 +92,10 @@ def plot_mu_boxes(comparison, ax: Axes | None = None):
     ax.set_xticklabels([f"{s.sample}\np = {s.p_value:.2g}" for s in comparison.samples])
     ax.set_ylabel("coefficient of friction μ")
     ax.legend(boxes[:2], ["simulation", "measurement"])
-    ax.set_title(f"simulated vs measured, Pearson r = {comparison.pearson_r:.2f}")
+    ax.set_title(
+        f"simulated vs measured, Pearson r = {comparison.pearson_r:.2f}\n({box_words(data)})",
+        fontsize="medium",
+    )
     return fig, ax
 
 
@@ -188,7 +222,7 @@ def mu_boxes_figure(cases, comparison=None):
     ax.set_xticks(positions)
     ax.set_xticklabels(list(simulated))
     ax.set_ylabel("coefficient of friction μ")
-    ax.set_title("simulated μ per sample (boxes: quartiles, whiskers: min to max)")
+    ax.set_title(f"simulated μ per sample\n({box_words(list(simulated.values()))})", fontsize="medium")
     return figure
 
 

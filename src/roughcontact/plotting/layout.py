@@ -54,15 +54,19 @@ class ColourScale:
         return prefixed_scale(max(abs(self.low), abs(self.high)) or 1.0, unit)
 
 
-def shared_colorbar(image, axes, label: str, unit: str, scale: ColourScale, *, shrink: float = 1.0) -> None:
+def shared_colorbar(
+    image, axes, label: str, unit: str, scale: ColourScale, *, shrink: float = 1.0, location: str = "right"
+) -> None:
     """Draw one colour bar for ``axes`` drawn with ``scale``: label, prefixed unit, what the ends clip.
 
-    ``shrink`` scales the bar's length (:meth:`matplotlib.figure.Figure.colorbar`).
+    ``shrink`` scales the bar's length (:meth:`matplotlib.figure.Figure.colorbar`); ``location``
+    "bottom" lays it under maps wider than tall, where a bar beside them would be short and its
+    label longer than the bar.
     """
     shown = scale.prefixed(unit)[1]
     text = f"{label} ({shown})" if shown else label
     text += f"\n{scale.words}" if scale.words else ""
-    image.figure.colorbar(image, ax=axes, extend=scale.extend, label=text, shrink=shrink)
+    image.figure.colorbar(image, ax=axes, extend=scale.extend, label=text, shrink=shrink, location=location)
 
 
 def clipped_limits(
@@ -101,7 +105,7 @@ def colour_scale(
         positive = values[values > 0]
         high = clipped_limits(positive, (0, percentiles[1]))[1] if positive.size else 1.0
         clipped = percentiles[1] < 100 and positive.size and positive.max() > high
-        words = f"top: {percentiles[1]:g}th percentile of nonzero values" if clipped else ""
+        words = f"top: {percentiles[1]:g}th pct. of nonzero" if clipped else ""
         return ColourScale(0.0, high, words, "max" if clipped else "neither")
     low, high = clipped_limits(values, percentiles)
     if tuple(percentiles) == (0, 100):

@@ -7,6 +7,7 @@ coordinates [m] and choose readable units.
 
 from __future__ import annotations
 
+import matplotlib
 import numpy as np
 from matplotlib.axes import Axes
 
@@ -23,6 +24,7 @@ def map_axes(
     cmap: str = "viridis",
     scale: ColourScale | None = None,
     colorbar: bool = True,
+    empty: float | None = None,
 ):
     """Draw a 2D field (``xarray.DataArray`` on x, y [m]) as a map with a colour bar in readable units.
 
@@ -32,11 +34,16 @@ def map_axes(
     0.5-99.5 percentiles (:func:`~roughcontact.plotting.layout.colour_scale`). The colour bar says
     when its ends clip the data. With ``colorbar=False`` none is drawn: the caller draws one for
     several panels of the same scale (:func:`~roughcontact.plotting.layout.shared_colorbar`).
+    ``empty``: a value that means "nothing here" (0 for a contact pressure), drawn light grey, so a
+    sparse field's few points stand out instead of sinking into the colour map's dark end.
     Returns the drawn mesh.
     """
     x, y = np.asarray(field["x"]), np.asarray(field["y"])
     values = np.asarray(field, dtype=float).T
     scale = scale or colour_scale(values)
+    if empty is not None:
+        values = np.ma.masked_equal(values, empty)
+        cmap = matplotlib.colormaps[cmap].with_extremes(bad="0.88")
     factor, _ = scale.prefixed(unit)
     size_scale, size_unit = prefixed_scale(max(x.max() - x.min(), y.max() - y.min()) or 1e-9, "m")
     image = ax.pcolormesh(

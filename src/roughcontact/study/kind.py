@@ -122,19 +122,20 @@ class CaseRecord:
 
     @property
     def label(self) -> str:
-        """A short legend label: the swept values as written (``sample=A, force=10 uN``).
+        """A short legend label in words: the swept values as written (``sample A, force 10 uN``).
 
         A case of no sweep (a command's one case) is named by its surface and its load instead
-        (``surface, mean_pressure=20 MPa``); the case's hash only when it has neither.
+        (``surface, mean pressure 20 MPa``); the case's hash only when it has neither. Keys are
+        written with spaces for underscores: a legend is read, not parsed.
         """
         axes = self.data.get("axes") or {}
         if axes:
-            return ", ".join(f"{k.rsplit('.', 1)[-1]}={v}" for k, v in axes.items())
+            return ", ".join(f"{_words(k.rsplit('.', 1)[-1])} {v}" for k, v in axes.items())
         parameters = self.parameters
         parts = [str(parameters[k]) for k in ("sample", "topography") if parameters.get(k)][:1]
         for key, unit in _LOAD_KEYS.items():
             if isinstance(parameters.get(key), int | float):
-                parts.append(f"{key}={format_si(parameters[key], unit)}")
+                parts.append(f"{_words(key)} {format_si(parameters[key], unit)}")
                 break
         return ", ".join(parts) or self.data["case"]
 
@@ -268,3 +269,8 @@ class Kind:
     check_inputs: Callable[[Any, Any], None] | None = None
     headline: tuple[str, ...] = ()
     renamed: Mapping[str, str] = field(default_factory=dict)
+
+
+def _words(key: str) -> str:
+    """Return a parameter key as words (``mean_pressure`` -> ``mean pressure``)."""
+    return key.replace("_", " ")
