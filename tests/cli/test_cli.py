@@ -227,3 +227,14 @@ def test_contact_with_user_material_and_bad_inputs(capsys, shared_topographies):
         capsys, "contact", path, "--material-youngs-modulus", "70 GPa", "--pressure", "1 MPa"
     )
     assert status == EXIT_INPUT_ERROR and "poissons-ratio" in err
+
+
+def test_models_lists_each_key_description_whole():
+    from roughcontact.cli.study import _attribute_notes, describe_kind
+    from roughcontact.study.kinds import get_kind, kind_names
+
+    for name in kind_names():
+        kind = get_kind(name)
+        for key, note in _attribute_notes(kind.parameters).items():
+            assert note.rstrip().endswith((".", ")", ":")), f"{name}.{key}: {note!r} reads cut"
+        assert all(len(line) <= 160 for line in describe_kind(kind)[2:]), name

@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import sys
+import textwrap
 from pathlib import Path
 
 from ..errors import InputError
@@ -127,27 +128,34 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def _attribute_notes(schema) -> dict[str, str]:
-    """First line of each entry of the numpy-style ``Attributes`` section of a schema's docstring."""
+    """Each entry of the numpy-style ``Attributes`` section of a schema's docstring, whole, on one line."""
     import inspect
 
-    notes: dict[str, str] = {}
+    notes: dict[str, list[str]] = {}
     lines = inspect.cleandoc(schema.__doc__ or "").splitlines()
     inside, names = False, []
     for line in lines:
         if line.strip() == "Attributes":
             inside = True
             continue
-        if not inside or set(line.strip()) <= {"-"}:
+        if not inside or (line.strip() and set(line.strip()) <= {"-"}):
             continue
         if line and not line.startswith(" "):
             if " : " not in line and not line.rstrip().isidentifier():
                 break  # the next section
             names = [n.strip() for n in line.split(" : ")[0].split(",")]
+            for name in names:
+                notes.setdefault(name, [])
         elif line.strip() and names:
             for name in names:
-                notes.setdefault(name, line.strip())
+                notes[name].append(line.strip())
+        elif not line.strip():
             names = []
-    return notes
+    return {name: " ".join(words) for name, words in notes.items()}
+
+
+HELP_WIDTH = 110
+"""Width of ``roughcontact models NAME``'s lines: each key's description wraps under itself."""
 
 
 def describe_kind(kind) -> list[str]:
@@ -167,7 +175,10 @@ def describe_kind(kind) -> list[str]:
         unit = kind.units.get(name) or unit_of(kind.parameters, name)
         shown = f"{name} [{unit}]" if unit else name
         note = info.description or notes.get(name, "")
-        lines.append(f"    {shown:<28} {default:<22} {note}".rstrip())
+        head = f"    {shown:<28} {default:<22} "
+        wrapped = textwrap.wrap(note, width=max(HELP_WIDTH - len(head), 40)) or [""]
+        lines.append((head + wrapped[0]).rstrip())
+        lines += [" " * len(head) + more for more in wrapped[1:]]
     lines.append(f"  figures: {', '.join(kind.figures) or '-'}")
     if kind.tables:
         lines.append(f"  tables: {', '.join(kind.tables)}")
