@@ -59,8 +59,20 @@ def run_command(command: CommandStudy, args) -> int:
         print(json.dumps(json_ready(result.document()), indent=2))
         return 0
     print("\n".join(result.text_lines()))
+    _combined_notes(result)
     for problem in result.tables[1]:
         print(f"roughcontact: table not made: {problem}", file=sys.stderr)
     if result.report is not None:
         print(f"wrote {result.folder}: results.csv, cases/, tables/, figures/ and {result.report.name}")
     return 0
+
+
+def _combined_notes(result) -> None:
+    """Say how a combined quantity the answer shows was found (E* of two bodies, Δγ of two energies)."""
+    from ..study.methods import combined_quantities
+    from ..study.run import materials_used
+
+    materials = {row["material"]: row for row in materials_used(result.study)}
+    for analysis in result.analyses:
+        for line in combined_quantities(analysis, materials):
+            print(f"  how combined: {line}")

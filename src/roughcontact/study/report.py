@@ -18,6 +18,7 @@ from ..topography.process import LEVELLING
 from ..units import format_si
 from .display import column_cells, columns, number
 from .kind import figure_caption
+from .methods import methods_paragraph
 from .outputs import (
     StoredAnalysis,
     draw_figures,
@@ -238,6 +239,9 @@ def write_report(folder: str | Path, *, redraw: bool = True, dpi: int = 150) -> 
     if materials:
         parts.append("<h2>Materials as used</h2>")
         parts.append(_table(materials))
+    surfaces = [preparation_line(n, p) for n, p in prepared.items()]
+    parts.append("<h2>Methods</h2>")
+    parts += [f"<p>{html.escape(text)}</p>" for text in methods_paragraph(analyses, provenance, surfaces)]
     for analysis in analyses:
         parts.append(_analysis_section(folder, analysis, [r for r in rows if r["analysis"] == analysis.name]))
     parts.append("<h2>Provenance</h2>")

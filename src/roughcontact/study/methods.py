@@ -1,0 +1,154 @@
+"""The methods paragraph of a study's report: what a paper's methods section needs, in sentences.
+
+:func:`methods_paragraph` writes, from a finished study's records and provenance: the software and
+the version of every dependency; each measured surface's file, channel, grid, size, levelling and
+filled points; every material's properties as used; per analysis its model, its cases and the
+solver settings; and every combined quantity with how it was combined (the contact modulus E* of
+two bodies, the work of adhesion of two surface energies), so that a reader can redo the numbers.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from ..units import format_si
+
+
+def methods_paragraph(analyses: list, provenance: dict[str, Any], surfaces: list[str]) -> list[str]:
+    """Return the methods section as sentences (plain text, one paragraph each).
+
+    Parameters
+    ----------
+    analyses : list of StoredAnalysis
+        The study's analyses (:func:`roughcontact.study.outputs.read_study`).
+    provenance : dict
+        ``OUT/provenance.json``.
+    surfaces : list of str
+        One sentence per measured surface (how it was read and levelled).
+    """
+    paragraphs = [_software(provenance)]
+    if surfaces:
+        paragraphs.append("Measured surfaces: " + " ".join(_sentence(line) for line in surfaces))
+    materials = provenance.get("materials") or []
+    if materials:
+        paragraphs.append("Materials as used: " + "; ".join(_material(m) for m in materials) + ".")
+    for analysis in analyses:
+        if analysis.finished:
+            paragraphs.append(_analysis(analysis, {m["material"]: m for m in materials}))
+    return paragraphs
+
+
+def _sentence(text: str) -> str:
+    return text if text.endswith(".") else text + "."
+
+
+def _software(provenance: dict[str, Any]) -> str:
+    packages = provenance.get("packages") or {}
+    listed = ", ".join(f"{name} {version}" for name, version in packages.items())
+    python = provenance.get("python")
+    return (
+        f"Computed with roughcontact {provenance.get('roughcontact', '?')}"
+        + (f" on Python {python}" if python else "")
+        + (f" ({listed})" if listed else "")
+        + "."
+    )
+
+
+def _material(row: dict[str, Any]) -> str:
+    parts = [f"E = {format_si(row['youngs_modulus [Pa]'], 'Pa', digits=3)}", f"ν = {row['poissons_ratio']:g}"]
+    for key, symbol, unit in (
+        ("hardness [Pa]", "H", "Pa"),
+        ("yield_strength [Pa]", "σ_y", "Pa"),
+        ("surface_energy [J/m^2]", "γ", "J/m²"),
+    ):
+        if row.get(key) is not None:
+            parts.append(f"{symbol} = {format_si(row[key], unit, digits=3)}")
+    entry = row.get("library entry")
+    source = f", library entry {entry!r}" if entry and entry != row["material"] else ""
+    return f"{row['material']} ({', '.join(parts)}{source})"
+
+
+def _analysis(analysis, materials: dict[str, dict]) -> str:
+    records = analysis.finished
+    count = len(records)
+    text = f"Analysis {analysis.name!r}: {analysis.summary}; {count} case{'s' if count != 1 else ''}"
+    if analysis.sweep_axes:
+        text += " over " + ", ".join(
+            axis.rsplit(".", 1)[-1].replace("_", " ") for axis in analysis.sweep_axes
+        )
+    if analysis.realisations > 1:
+        text += f", each on {analysis.realisations} realisations of its random surfaces"
+    text += "."
+    first = records[0]
+    settings = [
+        f"{key.replace('_', ' ')} {first.parameters[key]:g}"
+        for key in ("tolerance",)
+        if isinstance(first.parameters.get(key), int | float)
+    ]
+    boundary = first.scalars.get("boundary") or first.parameters.get("boundary")
+    if boundary:
+        settings.append(f"{boundary} boundary")
+    if settings:
+        text += " Solver: " + ", ".join(settings) + "."
+    combined = combined_quantities(analysis, materials)
+    return " ".join([text, *combined])
+
+
+def combined_quantities(analysis, materials: dict[str, dict]) -> list[str]:
+    """Return how the analysis' combined quantities were found: E* of two bodies, Δγ of two surface energies.
+
+    ``materials`` maps the study's material names to their rows as used
+    (:func:`roughcontact.study.run.materials_used`). Empty where the analysis combines nothing.
+    """
+    records = analysis.finished
+    if not records:
+        return []
+    return [
+        text
+        for text in (_contact_modulus(records[0], materials), _work_of_adhesion(records[0], materials))
+        if text
+    ]
+
+
+def _contact_modulus(record, materials: dict[str, dict]) -> str:
+    """How E* of the record was combined from its materials (empty when the record has none)."""
+    value = record.scalars.get("contact_modulus")
+    body = materials.get(record.parameters.get("material") or "")
+    if value is None or body is None:
+        return ""
+    counter = materials.get(record.parameters.get("counter_body") or "")
+    if counter is None:
+        how = f"E/(1 − ν²) of {body['material']} against a rigid counter-body"
+    else:
+        how = f"1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂ of {body['material']} and {counter['material']}"
+    return f"Contact modulus E* = {format_si(float(value), 'Pa', digits=4)} from {how}."
+
+
+def _work_of_adhesion(record, materials: dict[str, dict]) -> str:
+    """How the work of adhesion of an adhesion case was found (given, or combined from surface energies)."""
+    value = record.scalars.get("work_of_adhesion")
+    if value is None or record.parameters.get("work_of_adhesion") is not None:
+        return (
+            f"Work of adhesion Δγ = {format_si(float(value), 'J/m²', digits=3)}, as given." if value else ""
+        )
+    energies = []
+    for key, role in (("surface_energy", "material"), ("counter_surface_energy", "counter_body")):
+        given = record.parameters.get(key)
+        body = materials.get(record.parameters.get(role) or "")
+        if given is not None:
+            energies.append((float(given), "given"))
+        elif body is not None and body.get("surface_energy [J/m^2]") is not None:
+            energies.append((float(body["surface_energy [J/m^2]"]), f"{body['material']}'s surface energy"))
+    rule = record.parameters.get("combining_rule") or "girifalco_good"
+    formula = (
+        "2 √(γ₁ γ₂) (Girifalco and Good 1957)"
+        if rule == "girifalco_good"
+        else "√(γ₁ γ₂) (paper 000 as printed)"
+    )
+    parts = ", ".join(f"{format_si(g, 'J/m²', digits=3)} ({whence})" for g, whence in energies)
+    check = ""
+    if len(energies) == 2:
+        product = math.sqrt(energies[0][0] * energies[1][0]) * (2.0 if rule == "girifalco_good" else 1.0)
+        check = f" = {format_si(product, 'J/m²', digits=3)}"
+    return f"Work of adhesion Δγ = {formula}{check} of the surface energies {parts}."

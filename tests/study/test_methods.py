@@ -1,0 +1,71 @@
+"""The report's methods section: software, surfaces, materials as used, and every combined quantity."""
+
+import math
+
+import pytest
+
+from roughcontact.study import load_study, run_study
+from roughcontact.study.outputs import read_study
+from roughcontact.study.report import write_report
+
+STUDY = """
+[study]
+name = "methods"
+[topographies.ball]
+generate = "sphere"
+shape = 32
+size = "200 nm"
+radius = "1 um"
+[materials.film]
+youngs_modulus = "4 GPa"
+poissons_ratio = 0.3
+surface_energy = "25 mJ/m^2"
+[[analysis]]
+name = "cycle"
+model = "adhesion"
+topography = "ball"
+material = "film"
+counter_body = "SiO2"
+interaction_range = "1.9 nm"
+max_approach = "1 nm"
+steps = 6
+[[analysis]]
+name = "pressed"
+model = "normal"
+topography = "ball"
+material = "film"
+counter_body = "SiO2"
+force = "1 uN"
+"""
+
+
+@pytest.fixture(scope="module")
+def finished(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("methods")
+    path = folder / "study.toml"
+    path.write_text(STUDY)
+    run_study(load_study(path), folder / "out")
+    return folder / "out"
+
+
+def test_the_methods_section_says_how_each_quantity_was_combined(finished):
+    import json
+
+    from roughcontact.study.methods import methods_paragraph
+
+    provenance = json.loads((finished / "provenance.json").read_text())
+    paragraphs = methods_paragraph(read_study(finished)[1], provenance, [])
+    text = "\n".join(paragraphs)
+    assert paragraphs[0].startswith("Computed with roughcontact") and "numpy" in paragraphs[0]
+    assert "film (E = 4 GPa, ν = 0.3, γ = 25 mJ/m²)" in text
+    assert "SiO2 (E = 70 GPa, ν = 0.17, γ = 72 mJ/m²)" in text
+    work = 2 * math.sqrt(25e-3 * 72e-3)  # Girifalco-Good, 84.85 mJ/m^2
+    assert f"2 √(γ₁ γ₂) (Girifalco and Good 1957) = {work * 1e3:.3g} mJ/m²" in text
+    assert "25 mJ/m² (film's surface energy), 72 mJ/m² (SiO2's surface energy)" in text
+    modulus = 1 / ((1 - 0.3**2) / 4e9 + (1 - 0.17**2) / 70e9)
+    assert f"E* = {modulus / 1e9:.4g} GPa from 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂ of film and SiO2" in text
+
+
+def test_the_report_has_the_methods_section(finished):
+    page = write_report(finished, redraw=False).read_text()
+    assert "<h2>Methods</h2>" in page and "Girifalco and Good 1957" in page
