@@ -1,4 +1,4 @@
-"""Figures of normal contact: pressure and gap maps, load-approach curves, von Mises maps.
+"""Figures of normal contact: contact-area, pressure and gap maps, load-approach curves, von Mises maps.
 
 ``plot_*`` draw one :class:`~roughcontact.contact.result.NormalContactResult`; ``*_figure`` draw
 a study's figure from several cases (:mod:`roughcontact.plotting.cases`).

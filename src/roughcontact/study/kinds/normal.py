@@ -6,9 +6,10 @@ by ``approach``; elastic-perfectly-plastic with ``hardness``; the body a half-sp
 ``film_thickness`` on a rigid base or bonded to a ``substrate``; von Mises stress on the planes
 ``stress_depths`` below the surface (half-space solution under the contact pressure).
 
-Figures: ``contact`` (pressure and gap maps of up to four cases), ``area_load`` (real contact
-area against load, one line per sample), ``load_approach`` (load against approach), ``von_mises``
-(von Mises maps at the first stress depth).
+Figures: ``contact`` (contact-area, pressure and gap maps of up to four cases; sparse contacts
+ringed and the most loaded patch enlarged), ``area_load`` (real contact area against load, one
+line per sample), ``load_approach`` (load against approach), ``von_mises`` (von Mises maps at the
+first stress depth, of the cases under load).
 """
 
 from __future__ import annotations
