@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 from decimal import Decimal
 from numbers import Real
 
@@ -332,16 +333,31 @@ _EXAMPLES = {
 }
 
 
-_DISPLAY_PREFIXES = (("G", 9), ("M", 6), ("k", 3), ("", 0), ("m", -3), ("µ", -6), ("n", -9), ("p", -12))
+_DISPLAY_PREFIXES = (
+    ("T", 12), ("G", 9), ("M", 6), ("k", 3), ("", 0), ("m", -3), ("µ", -6), ("n", -9), ("p", -12),
+    ("f", -15), ("a", -18),
+)  # fmt: skip
 """The prefixes values are shown with (symbol, power of ten), largest first."""
+_DENOMINATOR_PREFIXES = (("m", -3), ("µ", -6), ("n", -9))
+"""Prefixes a quotient's denominator takes when no prefix of its numerator reads (``GPa/µm``)."""
+_CORE_PREFIXES = ("G", "M", "k", "", "m", "µ", "n", "p")
+"""The numerator prefixes that go with a prefixed denominator (``GPa/µm``, not ``TPa/mm``)."""
+_SAME_AS = {"kN/m": "mN/µm", "MN/m": "N/µm"}
+"""Labels written in an equal unit: a stiffness in paper 001's mN and µm (K_L in mN/µm, not kN/m)."""
 _SUPERSCRIPTS = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+MISSING = "none"
+"""What a quantity without a value (None, NaN) reads as, in place of a number and a unit."""
+READABLE = (1e-3, 1e6)
+"""The numbers written without an exponent (``0.001234``, ``20190``): where a prefix cannot put a
+value between 1 and 1000 (a square steps six decades a prefix) it may stay in this range."""
 
 
-def _label(terms: list[tuple[str, int]], prefix: str = "", prefixed: int | None = None) -> str:
-    """Write (symbol, power) terms as a unit label, ``prefix`` on term number ``prefixed``: "µm²", "mN/m"."""
+def _label(terms: list[tuple[str, int]], prefixes: dict[int, str] | None = None) -> str:
+    """Write (symbol, power) terms as a unit label, ``prefixes[k]`` on term number k: "µm²", "GPa/µm"."""
+    prefixes = prefixes or {}
 
     def term(index: int, symbol: str, power: int) -> str:
-        shown = prefix + symbol if index == prefixed else symbol
+        shown = prefixes.get(index, "") + symbol
         return shown if abs(power) == 1 else shown + str(abs(power)).translate(_SUPERSCRIPTS)
 
     numerator = [term(k, s, p) for k, (s, p) in enumerate(terms) if p > 0]
@@ -351,22 +367,35 @@ def _label(terms: list[tuple[str, int]], prefix: str = "", prefixed: int | None 
     return "·".join(numerator or ["1"]) + "".join(f"/{d}" for d in denominator)
 
 
+def _decades_outside(value: float, scale: float) -> float:
+    """How many decades ``value / scale`` lies outside [1, 1000) (0 inside)."""
+    shown = math.log10(abs(value) / scale)
+    return max(-shown, shown - math.log10(1000 * (1 - 1e-12)), 0.0)
+
+
 def prefixed_scale(value: float, unit: str) -> tuple[float, str]:
     """Return ``(scale, label)``: the SI prefix in which ``value`` [``unit``] reads between 1 and 1000.
 
-    ``value / scale`` is the number to show in ``label``. The prefix (G, M, k, none, m, µ, n, p;
-    powers of 1000) goes on the first prefixable symbol of the numerator (of the denominator when
-    the numerator has none) and acts with that symbol's power, so areas and inverse lengths
-    are shown in prefixed metres: 3e-12 m^2 is 3 µm² and 2e6 1/m is 2 1/µm. The prefix whose
-    number ``value / scale`` lies in [1, 1000), or nearest to it in decades, is chosen (a square
-    steps six decades a prefix: 5.4e-13 m^2 is 0.54 µm², not 5.4e5 nm²); 0 and non-finite values
-    and units without a prefixable symbol (``""``, ``"%"``) get scale 1. Powers are written as
-    superscripts and products with a middle dot (``"N*m"`` -> ``"N·m"``).
+    ``value / scale`` is the number to show in ``label``. The prefix (T, G, M, k, none, m, µ, n,
+    p, f, a; powers of 1000) goes on the first prefixable symbol of the numerator (of the
+    denominator when the numerator has none) and acts with that symbol's power, so areas and
+    inverse lengths are shown in prefixed metres: 3e-12 m^2 is 3 µm² and 2e6 1/m is 2 1/µm. The
+    prefix whose number ``value / scale`` lies in [1, 1000), or nearest to it in decades, is chosen
+    (a square steps six decades a prefix: 5.4e-13 m^2 is 0.54 µm², not 5.4e5 nm²). A quotient
+    whose numerator no prefix puts there also prefixes its denominator, with the largest of m, µ,
+    n that does beside a numerator prefix from G to p (9.8e17 Pa/m is 978.7 GPa/µm); a stiffness
+    in kN/m or MN/m is labelled in the equal mN/µm or N/µm (paper 001's K_L, in its mN and µm).
+    0 and non-finite values and units without a prefixable symbol (``""``, ``"%"``) get scale 1.
+    Powers are written as superscripts and products with a middle dot (``"N*m"`` -> ``"N·m"``).
+
+    This chooses a scale: an axis or a column shows numbers in it. To write one number use
+    :func:`format_si`, which never writes a prefix with an exponent (a value no prefix brings
+    near [1, 1000) is written in the SI unit, ``8.164e-22 J``).
 
     Parameters
     ----------
     value : float
-        Value in the SI unit ``unit`` (typically the largest magnitude to be shown).
+        Value in the SI unit ``unit`` (typically the typical or largest magnitude to be shown).
     unit : str
         Unit expression without prefixes: ``"m"``, ``"Pa"``, ``"N"``, ``"J"``, ``"m^2"``, ``"N/m"``,
         ``"J/m^2"``, ``"1/m"``; symbols that take no prefix (``"%"``, ``"min"``) are kept as written.
@@ -390,7 +419,7 @@ def prefixed_scale(value: float, unit: str) -> tuple[float, str]:
     >>> prefixed_scale(3e-12, "m^2")
     (1e-12, 'µm²')
     >>> prefixed_scale(4e4, "N/m")
-    (1000.0, 'kN/m')
+    (1000.0, 'mN/µm')
     """
     terms = _terms(unit)
     prefixed = [s for s, _ in terms if s not in _BASE_UNITS and s not in _PLAIN_UNITS and s != "kg"]
@@ -409,13 +438,35 @@ def prefixed_scale(value: float, unit: str) -> tuple[float, str]:
     choices = sorted(
         ((float(f"1e{exponent * power}"), prefix) for prefix, exponent in _DISPLAY_PREFIXES), reverse=True
     )
+    scale, prefix = min(
+        choices, key=lambda c: (_decades_outside(value, c[0]), -math.log10(abs(value) / c[0]))
+    )
+    prefixes = {index: prefix}
+    below = [k for k in prefixable[1:] if terms[k][1] == -1 and power > 0]
+    if _decades_outside(value, scale) > 0 and below:
+        for den_prefix, den_exponent in _DENOMINATOR_PREFIXES:
+            fits = [
+                (s * float(f"1e{-den_exponent}"), p)
+                for s, p in choices
+                if p in _CORE_PREFIXES and _decades_outside(value, s * float(f"1e{-den_exponent}")) == 0
+            ]
+            if fits:
+                scale, prefix = fits[0]
+                prefixes = {index: prefix, below[0]: den_prefix}
+                break
+    label = _label(terms, prefixes)
+    return scale, _SAME_AS.get(label, label)
 
-    def distance(choice: tuple[float, str]) -> tuple[float, float]:  # decades outside [1, 1000)
-        shown = math.log10(abs(value) / choice[0])
-        return (max(-shown, shown - math.log10(1000 * (1 - 1e-12)), 0.0), -shown)
 
-    scale, prefix = min(choices, key=distance)
-    return scale, _label(terms, prefix, index)
+def _fixed(number: float, digits: int) -> str | None:
+    """Write ``number`` to ``digits`` significant digits, no exponent; None outside :data:`READABLE`."""
+    text = f"{number:.{digits}g}"
+    rounded = float(text)
+    if rounded == 0:
+        return "0"
+    if not READABLE[0] <= abs(rounded) < READABLE[1]:
+        return None
+    return f"{rounded:.0f}" if "e+" in text else text
 
 
 def written(value: float, unit: str) -> str:
@@ -435,17 +486,27 @@ def written(value: float, unit: str) -> str:
     return f"{value / scale:.15g} {ascii_label}".strip()
 
 
-def format_si(value: float, unit: str, *, digits: int = 4) -> str:
-    """Format an SI value with the SI prefix that puts it between 1 and 1000 (see :func:`prefixed_scale`).
+def format_si(value: float | None, unit: str, *, digits: int = 4, missing: str = MISSING) -> str:
+    """Write one SI value with the SI prefix that puts it between 1 and 1000 (see :func:`prefixed_scale`).
+
+    The rule for every number shown with a unit (tables, summaries, reports, figure titles):
+    never a prefix together with an exponent. Where no prefix brings the number into [1, 1000)
+    (a square steps six decades a prefix) the nearest one is used while the number still reads
+    without an exponent (:data:`READABLE`: ``20190 1/mm²``, ``0.54 µm²``); a value beyond that
+    (beyond the prefixes T to a, e.g. a numerical zero ``8.164e-22 J``) is written with an
+    exponent in the unprefixed SI unit. A missing value (None or NaN) reads as ``missing``, a
+    word, never as a bare unit.
 
     Parameters
     ----------
-    value : float
+    value : float or None
         Value in the SI unit ``unit``.
     unit : str
         Unprefixed SI unit (``"m"``, ``"Pa"``, ``"N"``, ``"N/m"``, ``"m^2"``).
     digits : int
         Significant digits.
+    missing : str
+        The text of a missing value (``"none (no jump)"``).
 
     Examples
     --------
@@ -453,6 +514,44 @@ def format_si(value: float, unit: str, *, digits: int = 4) -> str:
     '25 nm'
     >>> format_si(3e-12, "m^2")
     '3 µm²'
+    >>> format_si(8.164e-22, "J"), format_si(None, "m")
+    ('8.164e-22 J', 'none')
     """
-    scale, label = prefixed_scale(value, unit)
-    return f"{value / scale:.{digits}g} {label}".rstrip()
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return missing
+    rounded = float(f"{value:.{digits}g}")  # 999.99996 nm is 1 µm to four digits, not 1000 nm
+    scale, label = prefixed_scale(rounded, unit)
+    text = _fixed(value / scale, digits) if math.isfinite(value) else f"{value}"
+    if text is None:
+        text, label = f"{value:.{digits}g}", prefixed_scale(0.0, unit)[1]
+    return f"{text} {label}".rstrip()
+
+
+def common_scale(values: Sequence[float], unit: str, *, digits: int = 4) -> tuple[float, str] | None:
+    """Return the one prefix in which values of one quantity are shown together (a table column).
+
+    The prefix of :func:`prefixed_scale` for the median magnitude of the non-zero finite values, so
+    the typical value reads between 1 and 1000 and the unit can go in the column header. Values
+    far from the median then read with more digits in that prefix (``0.0015``, ``20190``); where
+    one would need an exponent in it (the column spans more than about nine decades, as a
+    numerical zero beside real values does), there is no common prefix: None, and each value is
+    written with its own (:func:`format_si`, the unit in each cell).
+
+    Examples
+    --------
+    >>> common_scale([2.805e-6, 4.1e-7], "m")
+    (1e-06, 'µm')
+    >>> common_scale([2.9e-17, 8.7e-22], "J") is None
+    True
+    """
+    magnitudes = sorted(abs(v) for v in values if v != 0 and math.isfinite(v))
+    if not magnitudes:
+        return prefixed_scale(0.0, unit)
+    middle = len(magnitudes) // 2
+    typical = (
+        magnitudes[middle] if len(magnitudes) % 2 else math.sqrt(magnitudes[middle - 1] * magnitudes[middle])
+    )
+    scale, label = prefixed_scale(typical, unit)
+    if any(_fixed(v / scale, digits) is None for v in magnitudes):
+        return None
+    return scale, label

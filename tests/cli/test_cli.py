@@ -35,6 +35,16 @@ def test_inspect_json_is_si(capsys, shared_topographies):
     # README: rms 3.15 nm as stored (SurfaceTopography's figure, tilt included; levelled it is
     # 1.61 nm, tests/cli/test_levelling.py); 1e-2 relative covers the README's 3-digit rounding.
     assert doc["statistics"]["Sq"] == pytest.approx(3.15e-9, rel=1e-2, abs=0)
+    # issue 35: every statistic has its SI unit beside it ("" for a dimensionless one)
+    units = doc["statistics_units"]
+    assert set(units) == set(doc["statistics"])
+    assert (units["Sq"], units["m0"], units["m4"], units["rms_curvature"], units["Ssk"]) == (
+        "m",
+        "m^2",
+        "1/m^2",
+        "1/m",
+        "",
+    )
 
 
 def test_inspect_selects_channel_by_name_and_index(capsys, shared_topographies):

@@ -112,7 +112,7 @@ def test_loop_analysis_of_the_measured_example(capsys, tmp_path, scalars):
     assert status == 0
     assert scalars(out)["mu"] == pytest.approx(0.153, rel=0.005)
     status, out, _ = run(capsys, "loop-analysis", MEASURED, "--normal-force", "25 mN", "-o", tmp_path / "out")
-    assert "K_L_A" in out and "stroke" in out and "kN/m" in out
+    assert "K_L_A" in out and "stroke" in out and "mN/µm" in out  # K_L in the figures' unit (issue 35)
     assert (tmp_path / "out" / "figures" / "loop_loop.png").stat().st_size > 0
 
 

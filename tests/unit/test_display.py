@@ -11,9 +11,10 @@ from roughcontact.plotting.layout import colour_scale, legend
 from roughcontact.study import display
 from roughcontact.study.kind import figure_caption
 from roughcontact.study.kinds import get_kind, kind_names
+from roughcontact.units import quantity
 
 
-def test_a_column_shares_the_prefix_of_its_largest_value_and_names_it_in_the_header():
+def test_a_column_shares_the_prefix_of_its_median_value_and_names_it_in_the_header():
     rows = [
         {"Rq [m]": 2.805e-6, "mu": 0.25, "iterations": 12},
         {"Rq [m]": 4.1e-7, "mu": 0.3, "iterations": 7},
@@ -41,15 +42,67 @@ def test_a_quantity_table_shows_each_row_in_its_own_unit():
     ]
     titles, cells = display.columns(rows)
     assert titles == ["quantity", "paper", "this_case"]  # the unit is in each cell
-    assert cells[0][1:] == ["5.08 µm", "5.082 µm"] and cells[1][1:] == ["", "6.894"]
+    assert cells[0][1:] == ["5.08 µm", "5.082 µm"] and cells[1][1:] == ["none", "6.894"]
 
 
 def test_text_and_nan_cells():
     assert display.scaled(["Ra 1.45 nm", 3.0], "m") is None  # a label column stays text
-    assert display.scaled([math.nan, 1e-9], "m") == ("nm", ["", "1"])
-    assert display.shown(None, "m") == "-" and display.shown(math.nan, "m") == "-"
+    assert display.scaled([math.nan, 1e-9], "m") == ("nm", ["none", "1"])  # a word, not a blank
+    assert display.shown(None, "m") == "none" and display.shown(math.nan, "m") == "none"
     assert display.shown(2.5e-8, "m") == "25 nm" and display.shown(7, None) == "7"
     assert display.split_header(display.header("K_L_A", "N/m")) == ("K_L_A", "N/m")
+
+
+def test_a_column_spanning_many_decades_writes_each_cell_in_its_own_prefix():
+    """Issue 35: a numerical zero beside real values was "8.707e-10 pJ" under one prefix."""
+    label, cells = display.scaled([2.903e-17, 8.707e-22, None], "J", "none (no jump)")
+    assert label == "" and cells == ["29.03 aJ", "8.707e-22 J", "none (no jump)"]
+    label, cells = display.scaled([1.566e-16, 1.283e-17, 2.093e-18], "J")  # was 0.0001566 pJ, ...
+    assert (label, cells) == ("aJ", ["156.6", "12.83", "2.093"])
+
+
+def test_a_quantity_without_any_value_has_no_unit_but_a_word():
+    """Issue 35: a jump_in_approach row read "m" and nothing."""
+    assert display.column_cells([None, math.nan], "m", "none (no jump on loading)") == (
+        "",
+        ["none (no jump on loading)"] * 2,
+    )
+    rows = [{"case": "a", "jump_in_approach [m]": -5.4e-10}, {"case": "b", "jump_in_approach [m]": None}]
+    titles, cells = display.columns(rows, missing={"jump_in_approach": "no jump on loading"})
+    assert titles == ["case", "jump_in_approach (pm)"]
+    assert [row[1] for row in cells] == ["-540", "none (no jump on loading)"]
+
+
+@pytest.mark.parametrize("unit", ["m", "Pa", "J", "N/m"])
+def test_no_cell_has_a_prefix_and_an_exponent(unit):
+    """Columns of values from 1e-12 to 1e12: a prefixed header over plain numbers, or units per cell."""
+    for low in range(-12, 12):
+        for span in (0, 1, 3, 6, 9, 12):
+            values = [10.0 ** (low + k * span / 2) * m for k, m in enumerate((1.0, 3.7, 5.5))]
+            label, cells = display.scaled(values, unit)
+            for cell in cells:
+                number, _, cell_unit = cell.partition(" ")
+                prefixed = bool(label) or cell_unit not in ("", unit)
+                assert not (prefixed and "e" in number.lower()), (values, label, cell)
+            if label:  # one prefix for the column: the median reads between 1 and 1000
+                assert 1 <= sorted(values)[1] / quantity(f"1 {label}") < 1000
+
+
+def test_lateral_stiffness_has_one_unit_in_the_figure_and_the_table():
+    """Issue 35: K_L was mN/µm in the figures and kN/m in the tables."""
+    from roughcontact.plotting.presliding import plot_lateral_stiffness
+
+    loads = [25e-3, 50e-3]
+    k_l = {"A": [40.68e3, 48.0e3], "B": [32.93e3, 41.9e3], "C": [22.95e3, 33.3e3]}
+    rows = [
+        {"normal_force [N]": f} | {f"K_L_{p} [N/m]": v[i] for p, v in k_l.items()}
+        for i, f in enumerate(loads)
+    ]
+    titles, _ = display.columns(rows)
+    assert [t for t in titles if t.startswith("K_L")] == ["K_L_A (mN/µm)", "K_L_B (mN/µm)", "K_L_C (mN/µm)"]
+    assert display.shown(65.87e3, "N/m") == "65.87 mN/µm"  # a summary line of loop-analysis
+    figure = plot_lateral_stiffness(loads, k_l)
+    assert figure.axes[0].get_ylabel().endswith("(mN/µm)")
 
 
 def test_every_figure_of_every_kind_has_a_caption():

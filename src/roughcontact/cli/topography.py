@@ -26,9 +26,12 @@ from .options import dpi_argument, levelling, new_command, read_file
 def describe(topography: Topography, undefined=None) -> dict:
     """Return grid, size, units and statistics of a topography as a JSON-ready dictionary (SI).
 
-    With ``undefined`` (the file's points without a height, not filled) the statistics are left
-    out (they need every point) and the undefined points are described instead: how many, the
-    fraction, their bounding box [m] and how many separate regions they form.
+    ``statistics`` holds the numbers in SI and ``statistics_units`` the SI unit of each (``"m"``,
+    ``"1/m^2"``; ``""`` for a dimensionless one), so every statistic carries its unit while
+    ``statistics`` stays a mapping of names to numbers. With ``undefined`` (the file's points
+    without a height, not filled) the statistics are left out (they need every point) and the
+    undefined points are described instead: how many, the fraction, their bounding box [m] and
+    how many separate regions they form.
     """
     from scipy import ndimage
 
@@ -47,7 +50,9 @@ def describe(topography: Topography, undefined=None) -> dict:
         "specks_removed": topography.info.get("specks_removed", 0),
     }
     if undefined is None:
-        return description | {"statistics": summary(topography)}
+        statistics = summary(topography)
+        units = {key: SUMMARY[key][0] for key in statistics}
+        return description | {"statistics": statistics, "statistics_units": units}
     where = np.nonzero(undefined)
     description["undefined"] = {
         "count": int(np.count_nonzero(undefined)),

@@ -38,7 +38,8 @@ from ..units import format_si, prefixed_scale, unit_factor
 from .cases import caption, evenly_chosen, grouped, panel_per_case, realisations_of, with_fields
 from .layout import axes_for, colour_scale, legend, shared_colorbar
 
-_LENGTH_UNIT, _FORCE_UNIT, _STIFFNESS_UNIT = "µm", "mN", "mN/µm"  # fixed, as in paper 001 Figs. 13-15
+# fixed, as in paper 001 Figs. 13-15; K_L's mN/µm is also what the tables write (units.prefixed_scale)
+_LENGTH_UNIT, _FORCE_UNIT, _STIFFNESS_UNIT = "µm", "mN", "mN/µm"
 _LENGTH_SCALE, _FORCE_SCALE, _STIFFNESS_SCALE = (
     float(unit_factor(unit)[0]) for unit in (_LENGTH_UNIT, _FORCE_UNIT, _STIFFNESS_UNIT)
 )
@@ -935,8 +936,8 @@ def lateral_stiffness_figure(cases, measured: MeasuredLoop | None = None, title:
             stiffness = measured.analysis.lateral_stiffness
             for point in POINTS:
                 ax.plot(
-                    measured.normal_force * 1e3,
-                    stiffness[point] * 1e-3,  # N/m -> mN/um
+                    measured.normal_force / _FORCE_SCALE,
+                    stiffness[point] / _STIFFNESS_SCALE,
                     "s",
                     markerfacecolor="none",
                     markersize=9,

@@ -27,7 +27,7 @@ from typing import Any
 
 from ..errors import InputError
 from .config import Study
-from .display import columns, shown, text_table
+from .display import columns, missing_text, shown, text_table
 from .kind import CaseRecord
 from .outputs import (
     StoredAnalysis,
@@ -90,7 +90,7 @@ class StudyAnswer:
                     rows = [row for row in rows if row["quantity"] in headline] or rows
                     name = f"spread over {analysis.realisations} realisations (headline quantities)"
                 lines.append(f"  table {name}:")
-                lines += table_lines(rows, indent="    ")
+                lines += table_lines(rows, indent="    ", missing=analysis.kind.missing)
             lines += [f"  {line}" for line in realisation_lines(analysis)]
         return lines
 
@@ -243,16 +243,19 @@ def summary_lines(analysis, kind) -> list[str]:
     if len(records) == 1:
         width = max(len(name) for name in records[0].scalars) if records[0].scalars else 0
         lines += [
-            f"  {name:<{width}}  {shown(value, units.get(name))}"
+            f"  {name:<{width}}  {shown(value, units.get(name), missing_text(kind.missing.get(name)))}"
             for name, value in records[0].scalars.items()
         ]
         return lines
     rows = headline_rows(analysis)
     if len({row["status"] for row in rows}) == 1:
         rows = [{k: v for k, v in row.items() if k != "status"} for row in rows]
-    return lines + table_lines(rows, indent="  ")
+    return lines + table_lines(rows, indent="  ", missing=kind.missing)
 
 
-def table_lines(rows: list[dict[str, Any]], indent: str = "") -> list[str]:
-    """Rows as aligned text columns in engineering units (:func:`roughcontact.study.display.columns`)."""
-    return text_table(*columns(rows), indent=indent) if rows else []
+def table_lines(rows: list[dict[str, Any]], indent: str = "", missing=None) -> list[str]:
+    """Rows as aligned text columns in engineering units (:func:`roughcontact.study.display.columns`).
+
+    ``missing``: column name -> why a row may have no value there (:attr:`Kind.missing`).
+    """
+    return text_table(*columns(rows, missing=missing), indent=indent) if rows else []

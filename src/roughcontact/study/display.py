@@ -2,9 +2,20 @@
 
 The stored tables (``results.csv``, ``tables/*.csv``) keep SI numbers under headers ``name [unit]``
 (:func:`header`), for programs. The report and the commands' printed tables show the same
-numbers through this module: the values of one quantity share the SI prefix that puts the
-largest of them between 1 and 1000, and the prefixed unit goes in the header (``Sq (nm)`` over
-``1.614``, not ``Sq [m]`` over ``1.614e-09``).
+numbers through this module, by one rule (:mod:`roughcontact.units`): a prefix that puts the
+number between 1 and 1000, never a prefix together with an exponent.
+
+* A column (or the values of one quantity across cases) shares one prefix, that of its median
+  magnitude (:func:`roughcontact.units.common_scale`), and the prefixed unit goes in the header
+  (``Sq (nm)`` over ``1.614``, not ``Sq [m]`` over ``1.614e-09``); values far from the median
+  read with more digits in it (``0.0015``, ``20190``).
+* A column spanning too many decades for that (a numerical zero, ``8e-22 J``, beside ``29 aJ``)
+  has no unit in its header: each cell is written with its own prefix and unit
+  (:func:`roughcontact.units.format_si`).
+* A single value (a summary line, a cell of a quantity table) takes its own prefix.
+* A missing value (None, NaN, blank) of a numeric column reads ``none`` (:data:`MISSING`), with
+  the reason where the analysis gives one (``none (no jump on loading)``), never a bare unit;
+  a text column leaves it empty.
 
 A table whose rows are quantities (a comparison with a paper: columns ``quantity``, ``unit``,
 ``paper``, ``this_case``, ...) carries each row's unit in its ``unit`` column; the value columns of
@@ -17,7 +28,7 @@ import math
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from ..units import format_si, prefixed_scale
+from ..units import MISSING, common_scale, format_si
 
 DIGITS = 4
 """Significant digits of every number shown."""
@@ -74,10 +85,10 @@ def blank(value: Any) -> bool:
     return isinstance(value, float) and math.isnan(value)
 
 
-def _text(value: float | int | None, scale: float = 1.0) -> str:
+def _text(value: float | int | None, scale: float = 1.0, missing: str = MISSING) -> str:
     """Write the value in units of ``scale`` to :data:`DIGITS` significant digits (20190, not 2.019e+04)."""
     if value is None:
-        return ""
+        return missing
     if isinstance(value, int) and scale == 1.0:
         return str(value)
     text = f"{value / scale:.{DIGITS}g}"
@@ -87,49 +98,66 @@ def _text(value: float | int | None, scale: float = 1.0) -> str:
     return text
 
 
-def scaled(values: Sequence[Any], unit: str | None) -> tuple[str, list[str]] | None:
-    """Return cells of values of one quantity in the prefix of the largest; None unless all are numbers.
+def missing_text(reason: str | None = None) -> str:
+    """Return what a value that is not there reads as: ``none``, or ``none (reason)``."""
+    return f"{MISSING} ({reason})" if reason else MISSING
 
-    Blanks (None, "", NaN) are allowed and shown empty.
+
+def scaled(values: Sequence[Any], unit: str | None, missing: str = MISSING) -> tuple[str, list[str]] | None:
+    """Return cells of values of one quantity in one prefix; None unless all are numbers.
+
+    The prefix is that of the median magnitude (:func:`roughcontact.units.common_scale`); where
+    the values span too many decades for one prefix, the label is ``""`` and each cell carries its
+    own prefix and unit (:func:`roughcontact.units.format_si`). Blanks (None, "", NaN) are allowed
+    and read ``missing``.
 
     Returns
     -------
     (label, cells) or None
-        The prefixed unit ("" for a dimensionless quantity) and each value as text.
+        The prefixed unit ("" for a dimensionless quantity, for one without any value, and for
+        cells that carry their units) and each value as text.
     """
     numbers = [number(v) for v in values]
     if any(n is None and not blank(v) for n, v in zip(numbers, values, strict=True)):
         return None
-    finite = [abs(n) for n in numbers if n is not None]
-    if not unit:
-        return "", [_text(n) for n in numbers]
-    scale, label = prefixed_scale(max(finite, default=0.0), unit)
-    return label, [_text(n, scale) for n in numbers]
+    present = [n for n in numbers if n is not None]
+    if not unit or not present:
+        return "", [_text(n, missing=missing) for n in numbers]
+    common = common_scale(present, unit, digits=DIGITS)
+    if common is None:
+        return "", [format_si(n, unit, digits=DIGITS, missing=missing) for n in numbers]
+    scale, label = common
+    return label, [_text(n, scale, missing) for n in numbers]
 
 
-def column_cells(values: Sequence[Any], unit: str | None) -> tuple[str, list[str]]:
+def column_cells(values: Sequence[Any], unit: str | None, missing: str = MISSING) -> tuple[str, list[str]]:
     """Return the values of one quantity as (prefixed unit, cells); a quantity with any text stays text.
 
-    Numbers share the prefix of the largest (:func:`scaled`); otherwise every value is shown as
-    written (label "") and blanks are empty.
+    Numbers share one prefix (:func:`scaled`) and blanks read ``missing``; otherwise every value
+    is shown as written (label "") and blanks are empty.
     """
-    return scaled(values, unit) or ("", ["" if blank(v) else str(v) for v in values])
+    return scaled(values, unit, missing) or ("", ["" if blank(v) else str(v) for v in values])
 
 
-def shown(value: Any, unit: str | None) -> str:
-    """One value as text with its own SI prefix and unit (``2.81 µm``); labels as they are."""
+def shown(value: Any, unit: str | None, missing: str = MISSING) -> str:
+    """One value as text with its own SI prefix and unit (``2.81 µm``); labels as they are.
+
+    A missing value (None, NaN, blank) reads ``missing``, not a bare unit.
+    """
     if isinstance(value, list):
-        return ", ".join(shown(v, unit) for v in value)
+        return ", ".join(shown(v, unit, missing) for v in value)
     numeric = number(value)
     if numeric is None:
-        return "-" if blank(value) or isinstance(value, float) else str(value)
+        return missing if blank(value) or isinstance(value, float) else str(value)
     if isinstance(numeric, int) and not unit:
         return str(numeric)
     return format_si(numeric, unit, digits=DIGITS) if unit else f"{numeric:.{DIGITS}g}"
 
 
 def columns(
-    rows: Sequence[Mapping[str, Any]], units: Mapping[str, str] | None = None
+    rows: Sequence[Mapping[str, Any]],
+    units: Mapping[str, str] | None = None,
+    missing: Mapping[str, str] | None = None,
 ) -> tuple[list[str], list[list[str]]]:
     """Return the titles and cells of a table of rows, each numeric column in one engineering unit.
 
@@ -140,6 +168,9 @@ def columns(
         unit, if any, comes from ``units``.
     units : mapping, optional
         SI unit of plain-named columns.
+    missing : mapping, optional
+        Column name (without its unit) -> why a row may have no value there (``"no jump on
+        loading"``); such a cell reads ``none (no jump on loading)``, others ``none``.
 
     Columns with no value in any row are left out, and so is a ``case`` column that holds one
     case id in every row, and the ``unit`` column of a quantity table (its cells carry the unit).
@@ -165,11 +196,9 @@ def columns(
         if _per_row(key) and any("unit" in row for row in rows):
             titles.append(name)
             row_units = [row.get("unit") or None for row in rows]
-            by_column.append(
-                ["" if blank(v) else shown(v, u) for v, u in zip(values, row_units, strict=True)]
-            )
+            by_column.append([shown(v, u) for v, u in zip(values, row_units, strict=True)])
             continue
-        label, column = column_cells(values, unit)
+        label, column = column_cells(values, unit, missing_text((missing or {}).get(name)))
         titles.append(f"{name} ({label})" if label else name)
         by_column.append(column)
     return titles, [list(row) for row in zip(*by_column, strict=True)] if by_column else []

@@ -255,6 +255,9 @@ class Kind:
     renamed : mapping
         Deprecated key -> its key now (the spellings of release 0.1); a study that still uses one
         validates, with a note saying what to write instead.
+    missing : mapping
+        Scalar name -> why a case may have no value of it (``"no jump on loading"``): the tables
+        and summaries show such a value as ``none (no jump on loading)`` rather than a bare unit.
     """
 
     name: str
@@ -269,6 +272,7 @@ class Kind:
     check_inputs: Callable[[Any, Any], None] | None = None
     headline: tuple[str, ...] = ()
     renamed: Mapping[str, str] = field(default_factory=dict)
+    missing: Mapping[str, str] = field(default_factory=dict)
 
 
 def _words(key: str) -> str:

@@ -16,7 +16,7 @@ from typing import Any
 from ..topography.io import channel_words
 from ..topography.process import LEVELLING
 from ..units import format_si
-from .display import column_cells, columns, number
+from .display import column_cells, columns, missing_text, number
 from .kind import figure_caption
 from .methods import methods_paragraph
 from .outputs import (
@@ -70,11 +70,18 @@ def _html_table(titles: list[str], cells: list[list[str]], text_columns: set[int
     return f'<div class="scroll"><table><tr>{head}</tr>{body}</table></div>'
 
 
-def _table(rows: list[dict[str, Any]], drop: tuple[str, ...] = ()) -> str:
-    """Rows (SI under stored headers) as an HTML table in engineering units, units in the headers."""
+def _table(
+    rows: list[dict[str, Any]], drop: tuple[str, ...] = (), missing: dict[str, str] | None = None
+) -> str:
+    """Rows (SI under stored headers) as an HTML table in engineering units, units in the headers.
+
+    ``missing``: column name -> why a row may have no value there (:attr:`Kind.missing`).
+    """
     if not rows:
         return "<p>(no rows)</p>"
-    titles, cells = columns([{k: v for k, v in row.items() if k not in drop} for row in rows])
+    titles, cells = columns(
+        [{k: v for k, v in row.items() if k not in drop} for row in rows], missing=missing
+    )
     if len(cells) == 1 and len(titles) > WIDE:  # one long row: read down, not across
         pairs = [[title, cell] for title, cell in zip(titles, cells[0], strict=True)]
         return _html_table(["quantity", "value"], pairs, {0})
@@ -82,14 +89,18 @@ def _table(rows: list[dict[str, Any]], drop: tuple[str, ...] = ()) -> str:
     return _html_table(titles, cells, text)
 
 
-def _quantities(records: list, units: dict[str, str], caption: str) -> str:
-    """Every scalar of up to a few cases as rows, in engineering units per row (unit in its own column)."""
+def _quantities(records: list, units: dict[str, str], caption: str, missing: dict[str, str]) -> str:
+    """Every scalar of up to a few cases as rows, in engineering units per row (unit in its own column).
+
+    A row whose values span too many decades for one prefix has no unit: each cell carries its
+    own; a missing value reads ``none`` and why, where ``missing`` (:attr:`Kind.missing`) says.
+    """
     names = list(dict.fromkeys(name for record in records for name in record.scalars))
     titles = ["quantity", "unit"] + (["value"] if len(records) == 1 else [r.label for r in records])
     rows = []
     for name in names:
         values = [record.scalars.get(name) for record in records]
-        label, shown = column_cells(values, units.get(name))
+        label, shown = column_cells(values, units.get(name), missing_text(missing.get(name)))
         rows.append([name, label, *shown])
     return f"<p>{html.escape(caption)}</p>" + _html_table(titles, rows, {0, 1})
 
@@ -127,18 +138,18 @@ def preparation_line(name: str, prepared: dict[str, Any]) -> str:
 
 def _cases(analysis: StoredAnalysis, rows: list[dict]) -> list[str]:
     """Return the cases' table(s): every quantity of a few cases, or the headline ones, the rest folded."""
-    units = dict(analysis.kind.units)
+    units, missing = dict(analysis.kind.units), dict(analysis.kind.missing)
     finished = analysis.finished
     if finished and len(rows) <= TRANSPOSED_UP_TO:
         caption = "Every result of the case." if len(finished) == 1 else "Every result, one column per case."
-        parts = [_quantities(finished, units, caption)]
+        parts = [_quantities(finished, units, caption, missing)]
         if len(finished) < len(rows):
-            parts.append(_table(headline_rows(analysis)))
+            parts.append(_table(headline_rows(analysis), missing=missing))
         return parts
     return [
-        _table(headline_rows(analysis)),
+        _table(headline_rows(analysis), missing=missing),
         "<details><summary>Every result of every case (as in results.csv)</summary>",
-        _table(rows, drop=("analysis", "model", "error")),
+        _table(rows, drop=("analysis", "model", "error"), missing=missing),
         "</details>",
     ]
 
@@ -157,7 +168,7 @@ def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) 
     ]
     for path in sorted((folder / "tables").glob(f"{analysis.name}_*.csv")):
         parts.append(f"<h3>{html.escape(path.stem.removeprefix(analysis.name + '_').replace('_', ' '))}</h3>")
-        parts.append(_table(read_table(path)))
+        parts.append(_table(read_table(path), missing=dict(analysis.kind.missing)))
     for name in analysis.figures:
         path = folder / "figures" / f"{analysis.name}_{name}.png"
         if path.exists():

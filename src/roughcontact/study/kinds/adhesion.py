@@ -402,4 +402,5 @@ KIND = Kind(
         "max_contact_length",
         "cohesive_zone_pixels",
     ),
+    missing={"jump_in_approach": "no jump on loading", "jump_out_approach": "no jump on unloading"},
 )

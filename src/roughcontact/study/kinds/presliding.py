@@ -513,4 +513,21 @@ KIND = Kind(
         "K_L_C",
     ),
     renamed={"surface": "topography", "counter": "counter_body"},
+    missing={
+        **dict.fromkeys(
+            (
+                "stroke_from_loop",
+                "mu_from_loop",
+                "presliding_distance",
+                "eq9_c1",
+                "eq9_c2",
+                "eq9_n",
+                *(f"K_L_{point}" for point in POINTS),
+            ),
+            "no loop analysed: see analysis_note",
+        ),
+        "energy_last_loop": "no closed loop",
+        "locked_in_stick_fraction": "no normal loading steps",
+        "locked_in_shear_rms": "no normal loading steps",
+    },
 )
