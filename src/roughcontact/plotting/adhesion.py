@@ -101,10 +101,8 @@ def _style_legend(ax, winkler: bool, retraced: bool, jumps: bool) -> None:
     """
     from matplotlib.lines import Line2D
 
-    from .layout import _drawn
+    from .layout import legend
 
-    handles, labels = ax.get_legend_handles_labels()
-    kept = [(h, label) for h, label in zip(handles, labels, strict=True) if _drawn(ax, h)]
     styles = [(Line2D([], [], color="0.3", ls=style), f"{branch} (boundary elements)")
               for branch, style in BRANCH_STYLES.items()]  # fmt: skip
     if retraced:
@@ -113,8 +111,7 @@ def _style_legend(ax, winkler: bool, retraced: bool, jumps: bool) -> None:
         styles.append((Line2D([], [], color="0.3", ls=":"), "jump into or out of contact"))
     if winkler:
         styles.append((Line2D([], [], color="0.3", ls="--"), "Winkler springs"))
-    entries = kept + styles
-    ax.legend(*zip(*entries, strict=True), fontsize="small")
+    legend(ax, fontsize="small", extra=tuple(styles))
 
 
 def _approach_limits(datasets) -> tuple[float, float]:

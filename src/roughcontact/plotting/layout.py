@@ -126,14 +126,17 @@ def legend(
     loc: str = "best",
     ncol: int = 1,
     bbox_to_anchor: tuple[float, float] | None = None,
+    extra: tuple = (),
 ) -> None:
     """Add a legend of what the axes show: labelled lines with at least one drawable point.
 
     A line whose points are all NaN (a quantity undefined for every case), or all non-positive
-    on a logarithmic axis, draws nothing and gets no entry; with no entry left, no legend. The
+    on a logarithmic axis, draws nothing and gets no entry; with no entry left, no legend.
+    ``extra``: (handle, label) pairs appended as given (what a line style means, say). The other
     keywords are :meth:`matplotlib.axes.Axes.legend`'s.
     """
     kept = [(h, label) for h, label in zip(*ax.get_legend_handles_labels(), strict=True) if _drawn(ax, h)]
+    kept += list(extra)
     if kept:
         ax.legend(
             *zip(*kept, strict=True), fontsize=fontsize, loc=loc, ncol=ncol, bbox_to_anchor=bbox_to_anchor
