@@ -69,3 +69,20 @@ def test_the_methods_section_says_how_each_quantity_was_combined(finished):
 def test_the_report_has_the_methods_section(finished):
     page = write_report(finished, redraw=False).read_text()
     assert "<h2>Methods</h2>" in page and "Girifalco and Good 1957" in page
+
+
+def test_keys_swept_over_one_value_are_no_sweep(tmp_path):
+    from roughcontact.study.methods import varied_axes
+
+    path = tmp_path / "study.toml"
+    path.write_text(
+        STUDY.split("[[analysis]]")[0]
+        + '[[analysis]]\nname = "pressed"\nmodel = "normal"\ntopography = "ball"\nmaterial = "film"\n'
+        + 'force = "1 uN"\n[analysis.sweep]\ntolerance = [1e-8]\nforce = ["1 uN", "2 uN"]\n'
+    )
+    run_study(load_study(path), tmp_path / "out")
+    (analysis,) = read_study(tmp_path / "out")[1]
+    assert len(analysis.sweep_axes) == 2
+    assert varied_axes(analysis) == ["force"]
+    page = write_report(tmp_path / "out", redraw=False).read_text()
+    assert "swept: force<" in page

@@ -152,3 +152,15 @@ def _work_of_adhesion(record, materials: dict[str, dict]) -> str:
         product = math.sqrt(energies[0][0] * energies[1][0]) * (2.0 if rule == "girifalco_good" else 1.0)
         check = f" = {format_si(product, 'J/m²', digits=3)}"
     return f"Work of adhesion Δγ = {formula}{check} of the surface energies {parts}."
+
+
+def varied_axes(analysis) -> list[str]:
+    """Return the sweep axes whose value differs between the analysis' finished cases, in words.
+
+    A key swept over one value (a command's one case, a zip of single values) is no sweep to a reader.
+    """
+    values: dict[str, set[str]] = {axis: set() for axis in analysis.sweep_axes}
+    for record in analysis.finished:
+        for axis, value in (record.data.get("axes") or {}).items():
+            values.setdefault(axis, set()).add(str(value))
+    return [axis.rsplit(".", 1)[-1].replace("_", " ") for axis, seen in values.items() if len(seen) > 1]

@@ -18,7 +18,7 @@ from ..topography.process import LEVELLING
 from ..units import format_si
 from .display import column_cells, columns, missing_text, number
 from .kind import figure_caption
-from .methods import methods_paragraph
+from .methods import methods_paragraph, varied_axes
 from .outputs import (
     StoredAnalysis,
     draw_figures,
@@ -162,7 +162,7 @@ def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) 
         f"<h2>{html.escape(analysis.name)} <small>({html.escape(analysis.kind.name)})</small></h2>",
         f"<p>{html.escape(analysis.summary)}. Cases: "
         + ", ".join(f'<span class="{s}">{n} {s}</span>' for s, n in counts.items())
-        + (f"; swept: {html.escape(', '.join(analysis.sweep_axes))}" if analysis.sweep_axes else "")
+        + (f"; swept: {html.escape(', '.join(varied))}" if (varied := varied_axes(analysis)) else "")
         + "</p>",
         *_cases(analysis, rows),
     ]
