@@ -75,3 +75,30 @@ def test_lateral_stiffness_markers_lines_and_both_mindlin_forms():
         plot_lateral_stiffness(loads, simulated={"A": [1.0, 2.0]})
     with pytest.raises(InputError, match="normalisation"):
         plot_lateral_stiffness(loads, mindlin={"textbook": johnson})
+
+
+def test_no_lateral_stiffness_figure_without_an_analysed_loop():
+    from roughcontact.plotting.cases import ResultCase
+    from roughcontact.plotting.presliding import lateral_stiffness_figure
+
+    scalars = {"normal_force": 0.025} | {f"K_L_{p}": None for p in "ABC"}
+    cases = [ResultCase("no loop", scalars, None, {"material": "HDPE", "radius": 5e-3})]
+    assert lateral_stiffness_figure(cases) is None  # Mindlin's curves alone would compare with nothing
+
+
+def test_the_path_figure_names_points_by_the_axis_it_draws():
+    from roughcontact.plotting.presliding import plot_displacement_path
+
+    delta = np.array([0.0, 1.0, 2.0, 1.0, 0.0]) * 1e-6
+    by_step = plot_displacement_path({"programme": delta}, points={"A": 2})
+    labels = (
+        [t.get_text() for t in by_step.axes[0].get_legend().get_texts()]
+        if by_step.axes[0].get_legend()
+        else []
+    )
+    assert labels == ["programme", "point A (step 2)"]
+    by_row = plot_displacement_path(
+        {"programme": delta}, points={"A": 2}, positions={"programme": np.array([0, 0.5, 1, 2, 3.0])}
+    )
+    assert by_row.axes[0].get_xlabel().startswith("programme row")
+    assert [t.get_text() for t in by_row.axes[0].get_legend().get_texts()] == ["programme", "point A (row 1)"]

@@ -358,7 +358,10 @@ def plot_displacement_path(
     first = np.asarray(paths[first_label], dtype=float)
     for name, step in (points or {}).items():
         colour = POINT_COLOURS.get(name, "black")
-        ax.plot(at[step], first[step] / _LENGTH_SCALE, "o", color=colour, label=f"point {name} (step {step})")
+        where_on_axis = f"row {at[step]:.3g}" if positions else f"step {step}"  # the x axis's own index
+        ax.plot(
+            at[step], first[step] / _LENGTH_SCALE, "o", color=colour, label=f"point {name} ({where_on_axis})"
+        )
     ax.set_xlabel("programme row (inserted steps in between)" if positions else "step")
     ax.set_ylabel(f"tangential displacement δ_x ({_LENGTH_UNIT})")
     if normal_force is not None and np.ptp(normal_force) > 1e-9 * np.max(normal_force):
@@ -902,9 +905,12 @@ def lateral_stiffness_figure(cases, measured: MeasuredLoop | None = None, title:
     """Draw K_L at A, B, C against F0 with Mindlin in both readings, one panel per sample (Fig. 15).
 
     A ``measured`` loop's K_L is marked at its load; ``title`` names a panel of cases without a sample.
+    None where no case has an analysed loop (its K_L are undefined).
     """
     from .layout import new_figure
 
+    if not any(np.isfinite(_number(r, f"K_L_{p}")) for r in cases for p in POINTS):
+        return None  # no case has a loop to analyse: Mindlin's curves alone compare with nothing
     groups = grouped(cases)
     every = [_number(r, "normal_force") for r in cases]
     low, high = min(every), max(every)
