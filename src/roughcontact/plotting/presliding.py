@@ -120,8 +120,8 @@ def plot_hysteresis_loops(
     ax.set_ylabel(f"friction force F_x ({_FORCE_UNIT})")
     if title:
         ax.set_title(title)
-    if ax.get_lines():
-        legend(ax, fontsize="small")
+    if ax.get_lines():  # below the axes: inside, a loop's box leaves no corner free
+        legend(ax, fontsize="small", loc="upper center", bbox_to_anchor=(0.5, -0.15))
     return fig
 
 
