@@ -326,11 +326,13 @@ def area_load_figure(cases):
 )
 def load_approach_figure(cases):
     """Draw the force (per length for a line scan) against the approach over the cases."""
-    if cases and "force_per_length" in cases[0].scalars:
-        labels = ("approach (nm)", "force per length (N/m)", "load against approach")
-        return _curve_of_cases(cases, "approach", "force_per_length", (1e9, 1.0), labels)
-    labels = ("approach (nm)", "force (µN)", "load against approach")
-    return _curve_of_cases(cases, "approach", "force", (1e9, 1e6), labels)
+    line = bool(cases) and "force_per_length" in cases[0].scalars
+    name, unit, label = ("force_per_length", "N/m", "force per length") if line else ("force", "N", "force")
+    largest = max((abs(float(c.scalars[name])) for c in cases), default=1.0) or 1.0
+    deepest = max((abs(float(c.scalars["approach"])) for c in cases), default=1e-9) or 1e-9
+    (f_scale, f_unit), (a_scale, a_unit) = prefixed_scale(largest, unit), prefixed_scale(deepest, "m")
+    labels = (f"approach ({a_unit})", f"{label} ({f_unit})", "load against approach")
+    return _curve_of_cases(cases, "approach", name, (1 / a_scale, 1 / f_scale), labels)
 
 
 @caption(

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import matplotlib
 import numpy as np
 from matplotlib import colormaps
 from matplotlib.axes import Axes
@@ -247,8 +248,8 @@ def plot_pressure_maps(
 
     One row per map: left the whole computed field with the zoomed box drawn on it, right the
     box. Every panel shares one colour scale, from 0 to the 99.5th percentile of the nonzero
-    pressures of all the maps (stated on the colour bar), and the contact outline is drawn on the
-    zoomed view (white).
+    pressures of all the maps (stated on the colour bar), grey where there is no contact, and the
+    contact outline is drawn on the zoomed view.
 
     Parameters
     ----------
@@ -272,16 +273,17 @@ def plot_pressure_maps(
     fig = Figure(figsize=(7.6, 3.4 * len(maps)), layout="constrained")
     axes = fig.subplots(len(maps), 2, squeeze=False)
     image = None
+    grey = matplotlib.colormaps[cmap].with_extremes(bad="0.88")  # no contact: grey, not the map's black
     for (whole, zoomed), (label, values) in zip(axes, maps.items(), strict=True):
         values = np.asarray(values, dtype=float)
         box = _panel_extent(extent[label] if isinstance(extent, Mapping) else extent, label)
         scale, length = prefixed_scale(max(box[1] - box[0], box[3] - box[2]), "m")
         for ax in (whole, zoomed):
             image = ax.imshow(
-                values / factor,
+                np.ma.masked_less_equal(values, 0.0) / factor,
                 origin="lower",
                 extent=tuple(v / scale for v in box),
-                cmap=cmap,
+                cmap=grey,
                 vmin=0.0,
                 vmax=shared.high / factor,
                 interpolation="nearest",
@@ -290,9 +292,9 @@ def plot_pressure_maps(
             ax.set_ylabel(f"y ({length})")
         within = (max(zoom[0], box[0]), min(zoom[1], box[1]), max(zoom[2], box[2]), min(zoom[3], box[3]))
         x0, x1, y0, y1 = (v / scale for v in within)  # the zoom, inside the computed field
-        whole.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, edgecolor="cyan", linewidth=1.0))
+        whole.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, edgecolor="#2166ac", linewidth=1.0))
         whole.set_title(f"{label}: whole field", fontsize="medium")
-        _outline(zoomed, values, values > 0, box, scale, "white")
+        _outline(zoomed, values, values > 0, box, scale, "black")
         zoomed.set_xlim(x0, x1)
         zoomed.set_ylim(y0, y1)
         side = prefixed_scale(within[1] - within[0], "m")
