@@ -86,3 +86,24 @@ def test_keys_swept_over_one_value_are_no_sweep(tmp_path):
     assert varied_axes(analysis) == ["force"]
     page = write_report(tmp_path / "out", redraw=False).read_text()
     assert "swept: force<" in page
+
+
+def test_the_rule_stated_is_the_one_that_gives_the_case_its_value():
+    from roughcontact.study.kind import CaseRecord
+    from roughcontact.study.methods import _work_of_adhesion
+
+    materials = {"a": {"material": "a", "surface_energy [J/m^2]": 50e-3}, "b": {"material": "b"}}
+
+    def record(value):
+        data = {
+            "parameters": {"material": "a", "counter_body": "b", "counter_surface_energy": 72e-3},
+            "scalars": {"work_of_adhesion": value},
+        }
+        return CaseRecord(data, None)
+
+    root = math.sqrt(50e-3 * 72e-3)
+    assert "2 √(γ₁ γ₂) (Girifalco and Good 1957) = 120 mJ/m²" in _work_of_adhesion(
+        record(2 * root), materials
+    )
+    assert "√(γ₁ γ₂) (paper 000 as printed) = 60 mJ/m²" in _work_of_adhesion(record(root), materials)
+    assert _work_of_adhesion(record(0.1), materials) == "Work of adhesion Δγ = 100 mJ/m²."  # no rule gives it

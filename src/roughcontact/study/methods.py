@@ -91,6 +91,9 @@ def _analysis(analysis, materials: dict[str, dict]) -> str:
         settings.append(f"{boundary} boundary")
     if settings:
         text += " Solver: " + ", ".join(settings) + "."
+    readings = _readings(first)
+    if readings:
+        text += " Model readings: " + ", ".join(readings) + "."
     combined = combined_quantities(analysis, materials)
     return " ".join([text, *combined])
 
@@ -111,6 +114,25 @@ def combined_quantities(analysis, materials: dict[str, dict]) -> list[str]:
     ]
 
 
+READING_KEYS = ("law", "reading", "readings", "combining_rule", "normal_loading", "plasticity", "method")
+"""Parameters that choose between readings of a model (a paper's printed formula or the sound one,
+a loading law, ...): the methods paragraph states each one a case has."""
+
+
+def _readings(record) -> list[str]:
+    """Return ``key value`` of each model-reading choice of a record (its parameters, then its scalars)."""
+    found = []
+    for key in READING_KEYS:
+        value = record.parameters.get(key)
+        if value is None or value == {}:
+            value = record.scalars.get(key)
+        if isinstance(value, dict):
+            value = ", ".join(f"{k} {v}" for k, v in value.items())
+        if value not in (None, ""):
+            found.append(f"{key.replace('_', ' ')} {value}")
+    return found
+
+
 def _contact_modulus(record, materials: dict[str, dict]) -> str:
     """How E* of the record was combined from its materials (empty when the record has none)."""
     value = record.scalars.get("contact_modulus")
@@ -125,13 +147,26 @@ def _contact_modulus(record, materials: dict[str, dict]) -> str:
     return f"Contact modulus E* = {format_si(float(value), 'Pa', digits=4)} from {how}."
 
 
+RULES = {
+    "2 √(γ₁ γ₂) (Girifalco and Good 1957)": 2.0,
+    "√(γ₁ γ₂) (paper 000 as printed)": 1.0,
+}
+"""The combining rules of two surface energies, by the factor on sqrt(g1 g2)."""
+
+
 def _work_of_adhesion(record, materials: dict[str, dict]) -> str:
-    """How the work of adhesion of an adhesion case was found (given, or combined from surface energies)."""
+    """How the work of adhesion of a case was found: given, or combined from two surface energies.
+
+    The rule is the one that reproduces the case's own work of adhesion from the two energies (a
+    reading can choose it: ``combining_rule``, or a friction case's ``readings``); where none does,
+    the value is stated without a formula.
+    """
     value = record.scalars.get("work_of_adhesion")
-    if value is None or record.parameters.get("work_of_adhesion") is not None:
-        return (
-            f"Work of adhesion Δγ = {format_si(float(value), 'J/m²', digits=3)}, as given." if value else ""
-        )
+    if value is None:
+        return ""
+    value = float(value)
+    if record.parameters.get("work_of_adhesion") is not None:
+        return f"Work of adhesion Δγ = {format_si(value, 'J/m²', digits=3)}, as given."
     energies = []
     for key, role in (("surface_energy", "material"), ("counter_surface_energy", "counter_body")):
         given = record.parameters.get(key)
@@ -140,18 +175,18 @@ def _work_of_adhesion(record, materials: dict[str, dict]) -> str:
             energies.append((float(given), "given"))
         elif body is not None and body.get("surface_energy [J/m^2]") is not None:
             energies.append((float(body["surface_energy [J/m^2]"]), f"{body['material']}'s surface energy"))
-    rule = record.parameters.get("combining_rule") or "girifalco_good"
-    formula = (
-        "2 √(γ₁ γ₂) (Girifalco and Good 1957)"
-        if rule == "girifalco_good"
-        else "√(γ₁ γ₂) (paper 000 as printed)"
+    stated = f"Work of adhesion Δγ = {format_si(value, 'J/m²', digits=3)}"
+    if len(energies) != 2:
+        return stated + "."
+    root = math.sqrt(energies[0][0] * energies[1][0])
+    rule = next(
+        (name for name, factor in RULES.items() if math.isclose(factor * root, value, rel_tol=1e-6)), None
     )
+    if rule is None:
+        return stated + "."
     parts = ", ".join(f"{format_si(g, 'J/m²', digits=3)} ({whence})" for g, whence in energies)
-    check = ""
-    if len(energies) == 2:
-        product = math.sqrt(energies[0][0] * energies[1][0]) * (2.0 if rule == "girifalco_good" else 1.0)
-        check = f" = {format_si(product, 'J/m²', digits=3)}"
-    return f"Work of adhesion Δγ = {formula}{check} of the surface energies {parts}."
+    shown = format_si(value, "J/m²", digits=3)
+    return f"Work of adhesion Δγ = {rule} = {shown} of the surface energies {parts}."
 
 
 def varied_axes(analysis) -> list[str]:
@@ -163,4 +198,5 @@ def varied_axes(analysis) -> list[str]:
     for record in analysis.finished:
         for axis, value in (record.data.get("axes") or {}).items():
             values.setdefault(axis, set()).add(str(value))
-    return [axis.rsplit(".", 1)[-1].replace("_", " ") for axis, seen in values.items() if len(seen) > 1]
+    names = [axis.rsplit(".", 1)[-1].replace("_", " ") for axis, seen in values.items() if len(seen) > 1]
+    return list(dict.fromkeys(names))  # a zip of a sample with its surface's key reads as one axis
