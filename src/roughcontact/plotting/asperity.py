@@ -432,7 +432,15 @@ def island_von_mises_figure(cases):
             ax.set_yticks([])
         ax.set_title(f"{str(field.map_branch.values)}, W = {format_si(float(field.map_force), 'N')}")
     if image is not None:
-        shared_colorbar(image, flat[:count], "von Mises stress", "Pa", shared)
+        # a bar as tall as a whole grid of small maps dwarfs them: the height of about two rows
+        shared_colorbar(
+            image,
+            flat[:count],
+            "von Mises stress",
+            "Pa",
+            shared,
+            shrink=min(1.0, 2.2 / flat[0].get_gridspec().nrows),
+        )
     depth = float(data.attrs.get("stress_depth", 0.0))
     where = "surface" if depth == 0 else f"z = {format_si(depth, 'm', digits=3)}"
     figure.suptitle(f"von Mises stress ({where})" + (f", {case.label}" if len(cases) > 1 else ""))
@@ -477,6 +485,13 @@ def von_mises_section_figure(cases):
         ax.set_ylabel("depth z (µm)")
         force = float(data["von_mises"].map_force[index])
         ax.set_title(f"{str(data['von_mises'].map_branch.values[index])}, W = {format_si(force, 'N')}")
-    shared_colorbar(image, flat[:count], "von Mises stress", "Pa", shared)
+    shared_colorbar(
+        image,
+        flat[:count],
+        "von Mises stress",
+        "Pa",
+        shared,
+        shrink=min(1.0, 2.2 / flat[0].get_gridspec().nrows),
+    )
     figure.suptitle(sections.attrs.get("long_name", "von Mises stress on a section"))
     return figure
