@@ -221,7 +221,7 @@ def _near_contact(data, interaction_range: float):
 )
 def adhesion_maps_figure(cases):
     """Draw pressure and gap maps at the pull-off of up to three 2D cases; None for profiles."""
-    from .layout import ColourScale, clipped_limits, new_figure, shared_colorbar
+    from .layout import ColourScale, clip_words, clipped_limits, new_figure, shared_colorbar
     from .study import map_axes
 
     chosen = evenly_chosen(with_fields(cases), 3)
@@ -234,7 +234,7 @@ def adhesion_maps_figure(cases):
     pooled = np.concatenate([np.ravel(np.asarray(f["pressure"])) for f in fields])
     low, high = clipped_limits(pooled, (0.5, 99.5))
     bound = max(abs(low), abs(high)) or 1.0
-    pressure_scale = ColourScale(-bound, bound, "colours clipped to 0.5-99.5 percentile", "both")
+    pressure_scale = ColourScale(-bound, bound, clip_words((0.5, 99.5)), "both")
     gap_scale = ColourScale(0.0, GAP_RANGES, f"top: {GAP_RANGES:g} ranges", "max")
     rows = (
         ("pressure", "pressure", "Pa", "RdBu_r", pressure_scale),

@@ -114,9 +114,9 @@ def colour_scale(
 
 
 def clip_words(percentiles: tuple[float, float]) -> str:
-    """Say on a colour bar what its ends are (``"colours clipped to 0.5-99.5 %"``)."""
+    """Say on a colour bar what its ends are (``"clipped to 0.5-99.5 pct."``: short, a bar is narrow)."""
     low, high = percentiles
-    return "full range" if (low, high) == (0, 100) else f"colours clipped to {low:g}-{high:g} percentile"
+    return "full range" if (low, high) == (0, 100) else f"clipped to {low:g}-{high:g} pct."
 
 
 def legend(
