@@ -246,17 +246,17 @@ def adhesion_maps_figure(cases):
                 axes[row][column], data[name], label, unit, cmap=cmap, scale=scale, colorbar=False
             )
         shared_colorbar(image, axes[row], label, unit, scale)
+    from ..units import format_si
+
     line = _per_length(chosen)
-    force_unit = _scale([_scalar(r.scalars, "pull_off_force") for r in chosen], "N/m" if line else "N")
-    area_unit = _scale(
-        [_scalar(r.scalars, "interaction_area_at_pull_off") for r in chosen], "m" if line else "m^2"
-    )
-    for case, ax in zip(chosen, axes[0], strict=True):
+    force_unit, area_unit = ("N/m", "m") if line else ("N", "m²")
+    for case, ax in zip(chosen, axes[0], strict=True):  # each value in its own prefix (a title, no axis)
         s = case.scalars
         ax.set_title(
-            f"{case.label}\npull-off {_with_unit(_scalar(s, 'pull_off_force'), force_unit)}\ncontact "
-            f"{_with_unit(_scalar(s, 'contact_area_at_pull_off'), area_unit)}, interacting "
-            f"{_with_unit(_scalar(s, 'interaction_area_at_pull_off'), area_unit)}",
+            f"{case.label}\npull-off {format_si(_scalar(s, 'pull_off_force'), force_unit, digits=3)}"
+            f"\ncontact "
+            f"{format_si(_scalar(s, 'contact_area_at_pull_off'), area_unit, digits=3)}, interacting "
+            f"{format_si(_scalar(s, 'interaction_area_at_pull_off'), area_unit, digits=3)}",
             fontsize="small",
         )
     return figure
