@@ -10,7 +10,7 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import prefixed_scale
-from .cases import by_sample, caption, grouped, loads_of, mean_by_load
+from .cases import caption, grouped, loads_of, mean_by_load
 from .layout import axes_for, legend
 
 BOX_FROM = 5
@@ -191,10 +191,34 @@ def friction_vs_load_figure(cases):
 
 
 def _simulated_only(cases) -> dict[str, list[float]] | None:
-    """Return the simulated mu per sample for the figures without measured data (None: several loads)."""
+    """Return the simulated mu per sample and setting, for the figures without measured data.
+
+    Within a sample, cases that differ in more than their replicate (a swept gap model, say) are
+    separate groups named by what differs (``Ra 1.45 nm, gap model bem``): two settings are two
+    boxes, not one box of two values. None for several loads (``friction_vs_load`` shows those).
+    """
     if len(loads_of(cases)) > 1:
-        return None  # a load sweep: friction_vs_load shows it
-    return by_sample(cases, "mu")
+        return None
+    values: dict[str, list[float]] = {}
+    for sample, group in grouped(cases).items():
+        settings = [_setting(case) for case in group]
+        differ = [
+            key
+            for key in settings[0]
+            if key not in ("sample", "replicate") and len({repr(s.get(key)) for s in settings}) > 1
+        ]
+        for case, setting in zip(group, settings, strict=True):
+            words = [f"{key.rsplit('.', 1)[-1].replace('_', ' ')} {setting.get(key)}" for key in differ]
+            name = ", ".join([sample, *words] if sample else words) or "all cases"
+            values.setdefault(name, []).append(float(case.scalars["mu"]))
+    return values
+
+
+def _setting(case) -> dict:
+    """Return what a case was run with: its swept values as written (a study record), else its parameters."""
+    data = getattr(case, "data", None)
+    axes = data.get("axes") if isinstance(data, dict) else None
+    return dict(axes) if axes else dict(case.parameters)
 
 
 @caption(
@@ -245,10 +269,13 @@ def mu_means_figure(cases, comparison=None):
         return None
     x = np.arange(len(simulated))
     means = [float(np.mean(v)) for v in simulated.values()]
-    spread = [float(np.std(v, ddof=1)) if len(v) > 1 else 0.0 for v in simulated.values()]
+    single = all(len(v) == 1 for v in simulated.values())  # one value each: a spread of nothing
+    spread = None if single else [float(np.std(v, ddof=1)) if len(v) > 1 else 0.0 for v in simulated.values()]
     ax.bar(x, means, width=0.5, yerr=spread, capsize=4, color="tab:blue", alpha=0.7, label="simulated")
     ax.set_xticks(x)
     ax.set_xticklabels(list(simulated))
-    ax.set_ylabel("mean coefficient of friction μ (± 1 s.d.)")
+    ax.set_ylabel(
+        "coefficient of friction μ (one case each)" if single else "mean coefficient of friction μ (± 1 s.d.)"
+    )
     legend(ax)
     return figure
