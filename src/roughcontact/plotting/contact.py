@@ -41,7 +41,7 @@ def plot_gap(result, ax: Axes | None = None, *, cmap: str = "viridis"):
     fig, ax = axes_for(ax)
     scale, unit = prefixed_scale(float(np.max(result.gap)) or 1e-9, "m")
     _map(ax, result, result.gap / scale, f"gap ({unit})", cmap)
-    ax.set_title(f"gap, mean {result.mean_gap / scale:.3g} {unit}")
+    ax.set_title(f"gap, mean {format_si(result.mean_gap, 'm', digits=3)}")
     return fig, ax
 
 
@@ -89,7 +89,7 @@ def plot_von_mises(stress, depth_index: int, ax: Axes | None = None, *, cmap: st
     ax.set_ylabel(f"y ({size_label})")
     fig.colorbar(image, ax=ax, label=f"von Mises ({unit})")
     d_scale, d_unit = prefixed_scale(float(stress.depths[depth_index]) or 1e-9, "m")
-    ax.set_title(f"von Mises at z = {stress.depths[depth_index] / d_scale:.3g} {d_unit}")
+    ax.set_title(f"von Mises at z = {format_si(float(stress.depths[depth_index]), 'm', digits=3)}")
     return fig, ax
 
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.axes import Axes
 
-from ..units import prefixed_scale
+from ..units import format_si, prefixed_scale
 from .cases import caption, grouped, loads_of, mean_by_load
 from .layout import axes_for, legend
 
@@ -142,7 +142,9 @@ def plot_friction_vs_load(sweep, ax: Axes | None = None, *, crossover: float | N
         label = name.replace("_", " ")
         ax.loglog(sweep.normal_force[shown] / scale, values[shown] / scale, style, label=label)
     if crossover is not None:
-        ax.axvline(crossover / scale, color="grey", lw=0.8, label=f"crossover {crossover / scale:.3g} {unit}")
+        ax.axvline(
+            crossover / scale, color="grey", lw=0.8, label=f"crossover {format_si(crossover, 'N', digits=3)}"
+        )
     ax.set_xlabel(f"normal load ({unit})")
     ax.set_ylabel(f"friction force ({unit})")
     legend(ax)

@@ -7,15 +7,13 @@ from pathlib import Path
 import numpy as np
 from matplotlib.axes import Axes
 
-from ..units import unit_factor
+from ..units import format_si, unit_factor
 from .cases import caption, panel_per_case
 from .layout import axes_for, legend
 
 _SEGMENT_STYLES = {"loading": "C0", "hold": "C2", "unloading": "C1"}
-_DEPTH_UNIT, _LOAD_UNIT, _MODULUS_UNIT = "nm", "mN", "GPa"  # fixed, as in paper 001 (Fig. 7, Table 2)
-_DEPTH_SCALE, _LOAD_SCALE, _MODULUS_SCALE = (
-    float(unit_factor(unit)[0]) for unit in (_DEPTH_UNIT, _LOAD_UNIT, _MODULUS_UNIT)
-)
+_DEPTH_UNIT, _LOAD_UNIT = "nm", "mN"  # the axes fixed, as in paper 001 (Fig. 7); moduli by the unit rule
+_DEPTH_SCALE, _LOAD_SCALE = (float(unit_factor(unit)[0]) for unit in (_DEPTH_UNIT, _LOAD_UNIT))
 
 
 def plot_indentation(result, ax: Axes | None = None):
@@ -92,8 +90,8 @@ def plot_indentation_record(data, scalars: dict, *, ax: Axes | None = None, titl
     ax.set_xlabel(f"depth d ({_DEPTH_UNIT})")
     ax.set_ylabel(f"load F ({_LOAD_UNIT})")
     moduli = (
-        f"E = {scalars['youngs_modulus'] / _MODULUS_SCALE:.3g} {_MODULUS_UNIT} "
-        f"(E_r = {scalars['reduced_modulus'] / _MODULUS_SCALE:.3g} {_MODULUS_UNIT}, "
+        f"E = {format_si(scalars['youngs_modulus'], 'Pa', digits=3)} "
+        f"(E_r = {format_si(scalars['reduced_modulus'], 'Pa', digits=3)}, "
         f"rate sign: {scalars['rate_sign']})"
     )
     ax.set_title(f"{title}\n{moduli}" if title else moduli, fontsize="medium")

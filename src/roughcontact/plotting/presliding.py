@@ -547,10 +547,10 @@ def plot_loop_analysis(
             y / mn,
             "o",
             color=POINT_COLOURS.get(name, "k"),
-            label=f"{name}: K_L = {k / _STIFFNESS_SCALE:.3g} {_STIFFNESS_UNIT}",
+            label=f"{name}: K_L = {format_si(k, 'N/m', digits=3)}",
         )
     mu, stroke = scalars.get("mu"), scalars.get("stroke")
-    line = f"μ = {mu:.3g}, stroke {stroke / um:.3g} {_LENGTH_UNIT}" if mu is not None else ""
+    line = f"μ = {mu:.3g}, stroke {format_si(stroke, 'm', digits=3)}" if mu is not None else ""
     ax.set_title(f"{title}\n{line}" if title else line, fontsize="medium")
     ax.set_xlabel(f"tangential displacement δ_x ({_LENGTH_UNIT})")
     ax.set_ylabel(f"friction force F_x ({_FORCE_UNIT})")
