@@ -244,3 +244,20 @@ def test_measured_spots_of_one_sample_are_its_realisations(tmp_path):
     result = answer(_study(tmp_path, text), tmp_path / "out")
     approach = [r for r in spread_rows(result.analyses[0]) if r["quantity"] == "approach"]
     assert len(approach) == 2 and all(r["n"] == 3 for r in approach)  # per load, over the three spots
+
+
+def test_cases_on_different_grids_are_not_realisations_of_one_another():
+    # a mesh study sweeps a topography key: the cases' parameters name the surface only, the grid
+    # is in their swept values; merging them drew paper002_mesh.toml's 6 grids x 3 draws as "18 realisations"
+    from roughcontact.plotting.cases import realisations_of
+    from roughcontact.study.kind import CaseRecord
+
+    def record(shape, replicate):
+        axes = {"topographies.island.shape": shape, "replicate": replicate}
+        return CaseRecord(
+            {"axes": axes, "parameters": {"topography": "island", "replicate": replicate}}, None
+        )
+
+    groups = realisations_of([record(shape, r) for shape in (64, 96) for r in range(3)])
+    assert list(groups) == ["shape 64", "shape 96"]
+    assert [len(g) for g in groups.values()] == [3, 3]

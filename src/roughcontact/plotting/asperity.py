@@ -66,7 +66,7 @@ def plot_load_interference(
         ax.plot(x, np.asarray(measured["force"]) / _LOAD_SCALE, "k.", ms=3, label="measured")
     ax.set_xlabel("interference ω/ω_c")
     ax.set_ylabel(f"load ({_LOAD_UNIT})")
-    legend(ax, fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.15))  # below: no curve hidden
+    legend(ax, fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2))  # below: no curve hidden
     ax.grid(True, alpha=0.3)
     return fig, ax
 
@@ -348,7 +348,7 @@ def mesh_convergence_figure(cases):
     ax.set_xlabel("grid points (elements)")
     ax.set_ylabel("peak interference ω_max (nm)")
     ax.grid(True, alpha=0.3)
-    legend(ax, fontsize="small")
+    legend(ax, fontsize="small", loc="upper center", bbox_to_anchor=(0.5, -0.15))  # below the bars
     return fig
 
 

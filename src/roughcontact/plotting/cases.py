@@ -166,22 +166,54 @@ def grouped(cases: Sequence[FigureCase], key: str = "sample") -> dict[str, list[
 def realisations_of(cases: Sequence[FigureCase]) -> dict[str, list[FigureCase]]:
     """Return the cases grouped by everything but their realisation, each group by its label without it.
 
-    Cases that differ only in ``replicate`` (the realisations of a study's generated surfaces)
-    are one group; the key is the label of its cases with ``replicate ...`` left out. A case
-    without a ``replicate`` parameter (a result drawn from Python) is a group of its own.
+    Cases that differ only in ``replicate`` (the realisations of a study's generated surfaces),
+    or in a value zipped with it (measured files of one sample, one per replicate), are one group;
+    the key is the label of its cases with ``replicate ...`` left out. Swept values count (a grid
+    swept in a mesh study makes other groups, :func:`setting_of`). A case without a ``replicate``
+    parameter (a result drawn from Python) is a group of its own.
     """
     groups: dict[str, list[FigureCase]] = {}
-    for number, case in enumerate(cases):
+    settings = [setting_of(case) for case in cases]
+    tied = _tied_to_replicate([s for s in settings if "replicate" in s])
+    for number, (case, setting) in enumerate(zip(cases, settings, strict=True)):
         if "replicate" not in case.parameters:
             groups[f"case {number}"] = [case]
             continue
-        inputs = {k: v for k, v in case.parameters.items() if k != "replicate"}
+        inputs = {k: v for k, v in setting.items() if k != "replicate" and k not in tied}
         key = repr(sorted(inputs.items(), key=lambda item: item[0]))
         groups.setdefault(key, []).append(case)
     return {
         ", ".join(p for p in group[0].label.split(", ") if not p.startswith("replicate ")): group
         for group in groups.values()
     }
+
+
+def _tied_to_replicate(settings: list[dict[str, Any]]) -> set[str]:
+    """Return the keys whose value changes exactly when the replicate does (zipped with it)."""
+    tied = set()
+    for key in {k for setting in settings for k in setting} - {"replicate"}:
+        forward: dict[str, str] = {}
+        backward: dict[str, str] = {}
+        one_to_one = all(
+            forward.setdefault(repr(s.get("replicate")), repr(s.get(key))) == repr(s.get(key))
+            and backward.setdefault(repr(s.get(key)), repr(s.get("replicate"))) == repr(s.get("replicate"))
+            for s in settings
+        )
+        if one_to_one and len(forward) > 1:
+            tied.add(key)
+    return tied
+
+
+def setting_of(case: FigureCase) -> dict[str, Any]:
+    """Return what a case was run with: its parameters and, for a study record, its swept values.
+
+    A swept topography key (``topographies.island.shape``, a mesh study) is not among the case's
+    parameters, which name the surface only: without the swept values, cases on different grids
+    would look alike.
+    """
+    data = getattr(case, "data", None)
+    axes = data.get("axes") if isinstance(data, dict) else None
+    return {**dict(case.parameters), **dict(axes or {})}
 
 
 def with_fields(cases: Sequence[FigureCase]) -> list[FigureCase]:

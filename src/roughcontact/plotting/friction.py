@@ -10,7 +10,7 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import format_si, prefixed_scale
-from .cases import caption, grouped, loads_of, mean_by_load
+from .cases import caption, grouped, loads_of, mean_by_load, setting_of
 from .layout import axes_for, legend
 
 BOX_FROM = 5
@@ -203,7 +203,7 @@ def _simulated_only(cases) -> dict[str, list[float]] | None:
         return None
     values: dict[str, list[float]] = {}
     for sample, group in grouped(cases).items():
-        settings = [_setting(case) for case in group]
+        settings = [setting_of(case) for case in group]
         differ = [
             key
             for key in settings[0]
@@ -214,13 +214,6 @@ def _simulated_only(cases) -> dict[str, list[float]] | None:
             name = ", ".join([sample, *words] if sample else words) or "all cases"
             values.setdefault(name, []).append(float(case.scalars["mu"]))
     return values
-
-
-def _setting(case) -> dict:
-    """Return what a case was run with: its swept values as written (a study record), else its parameters."""
-    data = getattr(case, "data", None)
-    axes = data.get("axes") if isinstance(data, dict) else None
-    return dict(axes) if axes else dict(case.parameters)
 
 
 @caption(
