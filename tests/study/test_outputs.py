@@ -184,3 +184,28 @@ def test_worker_storage_keeps_the_fields_there(tmp_path):
 
     figures, problems = draw_figures(tmp_path / "out")  # figures read the fields where they are
     assert not problems and len(figures) == 6
+
+
+def test_figures_drawn_from_the_same_inputs_are_kept_not_redrawn(tmp_path):
+    from roughcontact.study.outputs import draw_figures
+
+    path = tmp_path / "study.toml"
+    path.write_text(textwrap.dedent(STUDY))
+    out = tmp_path / "out"
+    run_study(load_study(path), out)
+    first, problems = draw_figures(out)
+    assert first and not problems
+    stamps = {p: p.stat().st_mtime_ns for p in first}
+    again, _ = draw_figures(out)
+    assert again == first and all(p.stat().st_mtime_ns == stamps[p] for p in again)  # kept
+    redrawn, _ = draw_figures(out, dpi=80)  # another resolution: drawn anew
+    assert all(p.stat().st_mtime_ns != stamps[p] for p in redrawn)
+    first[0].unlink()  # a figure gone: drawn anew
+    assert draw_figures(out, dpi=80)[0][0].is_file()
+    # a record changed (a case rerun): drawn anew
+    record = next((out / "cases").rglob("*.json"))
+    stamps = {p: p.stat().st_mtime_ns for p in redrawn}
+    data = json.loads(record.read_text())
+    data["seconds"] = (data.get("seconds") or 0) + 1.0
+    record.write_text(json.dumps(data))
+    assert any(p.stat().st_mtime_ns != stamps[p] for p in draw_figures(out, dpi=80)[0])
