@@ -122,12 +122,6 @@ def _rms(values) -> float:
     return math.sqrt(float(((values - values.mean()) ** 2).mean()))
 
 
-def _scaled(array, factor: float):
-    """Return ``array`` multiplied by ``factor`` in place."""
-    array *= factor
-    return array
-
-
 def device_tools(compliance: SurfaceCompliance):
     """Return the array module and the fused passes of ``compliance``'s device (numpy and numba, or CuPy)."""
     if compliance.device == "gpu":
@@ -192,7 +186,7 @@ def solve(
     if load_control and cap is not None:
         raise ValueError("a pressure cap needs displacement control")
     xp, kernels = device_tools(compliance)
-    dtype = np.float32 if compliance.precision == "single" else np.float64
+    dtype = compliance.field_dtype
     h0 = xp.asarray(separation)
     upper = cap if cap is not None else np.inf
     # Pixel self-stiffness 1/K_ii [Pa/m]: turns an overlap into the pressure that closes it alone.
@@ -240,9 +234,10 @@ def solve(
             residual = _residual(pg_sum / p_sum if p_sum > 0 else 0.0, overlap, opened, height_scale + u_std)
             if residual <= tolerance:
                 p *= scale  # the engine's own array
-                # On the CPU u lies in the transform's buffer, which the next solve reuses; on the GPU it is
-                # an array of its own, scaled in place (no second copy of the largest grids).
-                u = scale * u if xp is np else _scaled(u, scale)
+                if xp is np:
+                    u = scale * u  # out of the transform's buffer, which the next solve reuses
+                else:
+                    u *= scale  # an array of its own on the GPU: no second copy of the largest grids
                 return EngineResult(p, u, g, float(delta), iteration, residual)
             if iteration == max_iterations:
                 break

@@ -257,8 +257,7 @@ def solve_normal(
     if initial is not None:
         initial = (initial.pressure if isinstance(initial, NormalContactResult) else initial).reshape(shape)
     if compliance.device == "gpu":  # the whole solve, its cascade included, runs on the device
-        single = compliance.precision == "single"
-        separation = gpu_module().cupy.asarray(separation, dtype=np.float32 if single else np.float64)
+        separation = gpu_module().cupy.asarray(separation, dtype=compliance.field_dtype)
         initial = None if initial is None else gpu_module().cupy.asarray(initial)
     common = dict(
         pixel_area=measure,

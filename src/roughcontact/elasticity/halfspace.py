@@ -17,7 +17,7 @@ from functools import cached_property
 
 import numpy as np
 
-from .._backend import RealFFT2, resolve_workers
+from .._backend import PRECISIONS, RealFFT2, resolve_workers
 from .._device import check_storage, gpu_module, resolve_device
 from ..errors import InputError
 from ..materials import Material
@@ -414,6 +414,11 @@ class SurfaceCompliance:
         """
         with self.staged():
             pass
+
+    @property
+    def field_dtype(self):
+        """The dtype of the contact solver's fields: float64, or float32 with ``precision="single"``."""
+        return PRECISIONS[self.precision][0]
 
     @property
     def pixel_area(self) -> float:
