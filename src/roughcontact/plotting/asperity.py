@@ -378,6 +378,17 @@ def _mean_curve(curves: list[dict]) -> dict | None:
     }
 
 
+def _grid_colorbar(image, panels, scale) -> None:
+    """Draw the von Mises colour bar of a grid of map panels, about two rows tall.
+
+    A bar as tall as a whole grid of small maps dwarfs them.
+    """
+    from .layout import shared_colorbar
+
+    rows = panels[0].get_gridspec().nrows
+    shared_colorbar(image, panels, "von Mises stress", "Pa", scale, shrink=min(1.0, 2.2 / rows))
+
+
 def _first_case_panels(cases, name: str, *, height: float):
     """Return (case, dataset, figure, axes, count): a grid of up to 3 columns, one panel per stored map.
 
@@ -401,7 +412,7 @@ def _first_case_panels(cases, name: str, *, height: float):
 )
 def island_von_mises_figure(cases):
     """Draw paper 002's Figs. 8-9: the stored von Mises maps of the first case, loading then unloading."""
-    from .layout import colour_scale, shared_colorbar
+    from .layout import colour_scale
     from .study import map_axes
 
     panels = _first_case_panels(cases, "von_mises", height=3.6)
@@ -432,15 +443,7 @@ def island_von_mises_figure(cases):
             ax.set_yticks([])
         ax.set_title(f"{str(field.map_branch.values)}, W = {format_si(float(field.map_force), 'N')}")
     if image is not None:
-        # a bar as tall as a whole grid of small maps dwarfs them: the height of about two rows
-        shared_colorbar(
-            image,
-            flat[:count],
-            "von Mises stress",
-            "Pa",
-            shared,
-            shrink=min(1.0, 2.2 / flat[0].get_gridspec().nrows),
-        )
+        _grid_colorbar(image, flat[:count], shared)
     depth = float(data.attrs.get("stress_depth", 0.0))
     where = "surface" if depth == 0 else f"z = {format_si(depth, 'm', digits=3)}"
     figure.suptitle(f"von Mises stress ({where})" + (f", {case.label}" if len(cases) > 1 else ""))
@@ -455,7 +458,7 @@ def island_von_mises_figure(cases):
 )
 def von_mises_section_figure(cases):
     """Draw the von Mises stress on the stored vertical section of the first case (volume plasticity)."""
-    from .layout import colour_scale, shared_colorbar
+    from .layout import colour_scale
 
     panels = _first_case_panels(cases, "von_mises_section", height=2.6)
     if panels is None:
@@ -485,13 +488,6 @@ def von_mises_section_figure(cases):
         ax.set_ylabel("depth z (µm)")
         force = float(data["von_mises"].map_force[index])
         ax.set_title(f"{str(data['von_mises'].map_branch.values[index])}, W = {format_si(force, 'N')}")
-    shared_colorbar(
-        image,
-        flat[:count],
-        "von Mises stress",
-        "Pa",
-        shared,
-        shrink=min(1.0, 2.2 / flat[0].get_gridspec().nrows),
-    )
+    _grid_colorbar(image, flat[:count], shared)
     figure.suptitle(sections.attrs.get("long_name", "von Mises stress on a section"))
     return figure

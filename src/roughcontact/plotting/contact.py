@@ -13,6 +13,7 @@ from matplotlib.figure import Figure
 from ..units import format_si, prefixed_scale
 from .cases import caption, evenly_chosen, grouped, realisations_of, scalar_series, with_fields
 from .layout import axes_for, legend
+from .study import map_length_scale
 
 
 def _map(ax: Axes, result, values: np.ndarray, label: str, cmap: str):
@@ -154,9 +155,12 @@ def contact_maps_figure(cases):
         _contact_area_axes(ax, data["pressure"], contact, ring=sparse[column])
         ax.set_title(f"{case.label}\n{100 * case.scalars['contact_fraction']:.3g} % in contact")
     location = "bottom" if wide else "right"
+    scales = {
+        name: colour_scale(*(data[name] for data in fields), from_zero=True) for name in ("pressure", "gap")
+    }
     for row, (name, cmap) in enumerate((("pressure", "magma"), ("gap", "viridis")), start=1):
         unit = "Pa" if name == "pressure" else "m"
-        shared = colour_scale(*(data[name] for data in fields), from_zero=True)
+        shared = scales[name]
         for column, data in enumerate(fields):
             image = map_axes(
                 axes[row][column], data[name], name, unit, cmap=cmap, scale=shared, colorbar=False,
@@ -164,8 +168,6 @@ def contact_maps_figure(cases):
             )  # fmt: skip
             axes[row][column].set_title(name if name == "gap" else "contact pressure (grey: no contact)")
         shared_colorbar(image, axes[row], name, unit, shared, location=location)
-        if name == "pressure":
-            pressure_scale = shared
     if rows == 4:
         for column, data in enumerate(fields):
             ax = axes[3][column]
@@ -177,12 +179,12 @@ def contact_maps_figure(cases):
                 continue
             window = _most_loaded_window(np.asarray(data["pressure"]))
             image = map_axes(
-                ax, data["pressure"][window], "pressure", "Pa", cmap="magma", scale=pressure_scale,
+                ax, data["pressure"][window], "pressure", "Pa", cmap="magma", scale=scales["pressure"],
                 colorbar=False, empty=0.0,
             )  # fmt: skip
             ax.set_title("enlarged: the most loaded patch")
             _frame(axes[1][column], data["pressure"], window)
-        shared_colorbar(image, axes[3], "pressure", "Pa", pressure_scale, location=location)
+        shared_colorbar(image, axes[3], "pressure", "Pa", scales["pressure"], location=location)
     return figure
 
 
@@ -192,9 +194,8 @@ def _contact_area_axes(ax: Axes, pressure, contact: np.ndarray, *, ring: bool) -
     from matplotlib.patches import Patch
     from scipy import ndimage
 
-    x, y = np.asarray(pressure["x"]), np.asarray(pressure["y"])
-    size_scale, size_unit = prefixed_scale(max(np.ptp(x), np.ptp(y)) or 1e-9, "m")
-    xs, ys = x / size_scale, y / size_scale
+    size_scale, size_unit = map_length_scale(pressure)
+    xs, ys = np.asarray(pressure["x"]) / size_scale, np.asarray(pressure["y"]) / size_scale
     colours = ListedColormap(["0.9", "#b2182b"])
     ax.pcolormesh(
         xs, ys, contact.T.astype(float), cmap=colours, vmin=0, vmax=1, shading="auto", rasterized=True
@@ -247,9 +248,8 @@ def _frame(ax: Axes, field, window: tuple[slice, slice]) -> None:
     """Frame ``window`` of ``field`` (a map drawn by ``map_axes``) on ``ax``."""
     from matplotlib.patches import Rectangle
 
-    x, y = np.asarray(field["x"]), np.asarray(field["y"])
-    size_scale, _ = prefixed_scale(max(np.ptp(x), np.ptp(y)) or 1e-9, "m")
-    xs, ys = x[window[0]] / size_scale, y[window[1]] / size_scale
+    size_scale, _ = map_length_scale(field)
+    xs, ys = np.asarray(field["x"])[window[0]] / size_scale, np.asarray(field["y"])[window[1]] / size_scale
     ax.add_patch(
         Rectangle((xs[0], ys[0]), np.ptp(xs), np.ptp(ys), fill=False, edgecolor="#2166ac", linewidth=1.0)
     )

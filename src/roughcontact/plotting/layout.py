@@ -54,6 +54,17 @@ class ColourScale:
         return prefixed_scale(max(abs(self.low), abs(self.high)) or 1.0, unit)
 
 
+EMPTY = "0.88"
+"""Colour of the points of a map where there is nothing (no contact): light grey, off every colour map."""
+
+
+def empty_grey(cmap: str):
+    """Return the colour map ``cmap`` with masked values drawn :data:`EMPTY` grey."""
+    import matplotlib
+
+    return matplotlib.colormaps[cmap].with_extremes(bad=EMPTY)
+
+
 def shared_colorbar(
     image, axes, label: str, unit: str, scale: ColourScale, *, shrink: float = 1.0, location: str = "right"
 ) -> None:

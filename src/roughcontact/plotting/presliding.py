@@ -24,7 +24,6 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import matplotlib
 import numpy as np
 from matplotlib import colormaps
 from matplotlib.axes import Axes
@@ -37,7 +36,7 @@ from ..errors import InputError
 from ..spread import spread
 from ..units import format_si, prefixed_scale, unit_factor
 from .cases import caption, evenly_chosen, grouped, panel_per_case, realisations_of, with_fields
-from .layout import axes_for, colour_scale, legend, shared_colorbar
+from .layout import axes_for, colour_scale, empty_grey, legend, shared_colorbar
 
 # fixed, as in paper 001 Figs. 13-15; K_L's mN/µm is also what the tables write (units.prefixed_scale)
 _LENGTH_UNIT, _FORCE_UNIT, _STIFFNESS_UNIT = "µm", "mN", "mN/µm"
@@ -273,7 +272,7 @@ def plot_pressure_maps(
     fig = Figure(figsize=(7.6, 3.4 * len(maps)), layout="constrained")
     axes = fig.subplots(len(maps), 2, squeeze=False)
     image = None
-    grey = matplotlib.colormaps[cmap].with_extremes(bad="0.88")  # no contact: grey, not the map's black
+    grey = empty_grey(cmap)  # no contact: grey, not the map's black
     for (whole, zoomed), (label, values) in zip(axes, maps.items(), strict=True):
         values = np.asarray(values, dtype=float)
         box = _panel_extent(extent[label] if isinstance(extent, Mapping) else extent, label)

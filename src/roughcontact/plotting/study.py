@@ -7,12 +7,17 @@ coordinates [m] and choose readable units.
 
 from __future__ import annotations
 
-import matplotlib
 import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import prefixed_scale
-from .layout import ColourScale, colour_scale, shared_colorbar
+from .layout import ColourScale, colour_scale, empty_grey, shared_colorbar
+
+
+def map_length_scale(field) -> tuple[float, str]:
+    """Return (SI value of one shown length unit, its label) for the x, y axes of a stored 2D field."""
+    x, y = np.asarray(field["x"]), np.asarray(field["y"])
+    return prefixed_scale(max(np.ptp(x), np.ptp(y)) or 1e-9, "m")
 
 
 def map_axes(
@@ -43,9 +48,9 @@ def map_axes(
     scale = scale or colour_scale(values)
     if empty is not None:
         values = np.ma.masked_equal(values, empty)
-        cmap = matplotlib.colormaps[cmap].with_extremes(bad="0.88")
+        cmap = empty_grey(cmap)
     factor, _ = scale.prefixed(unit)
-    size_scale, size_unit = prefixed_scale(max(x.max() - x.min(), y.max() - y.min()) or 1e-9, "m")
+    size_scale, size_unit = map_length_scale(field)
     image = ax.pcolormesh(
         x / size_scale,
         y / size_scale,
