@@ -35,16 +35,20 @@ BRANCH_STYLES = {"loading": "-", "unloading": "-."}
 """Line style of each branch of the boundary-element cycle (the Winkler springs are dashed)."""
 
 
-def _draw_cycle(ax, data, case, colour, scales) -> None:
-    """Draw one case's cycle: loading solid, unloading dash-dotted, jumps dotted; Winkler dashed."""
+def _draw_cycle(ax, data, case, colour, scales, retraced: bool) -> None:
+    """Draw one case's cycle: loading solid, unloading dash-dotted, jumps dotted; Winkler dashed.
+
+    ``retraced`` (:func:`_retraced`): the unloading lies on the loading and is left out, since
+    drawn over it it would only hide the loading's style.
+    """
     (a_scale, _), (f_scale, _) = scales
     approach = np.asarray(data["approach"]) / a_scale
     force = np.asarray(data["force"]) / f_scale
     jump = np.asarray(data["jump"], dtype=bool)
     turn = int(np.argmax(approach))  # the deepest approach ends the loading branch
     for branch, part in (("loading", slice(0, turn + 1)), ("unloading", slice(turn, len(force)))):
-        if branch == "unloading" and retraces(approach, force, turn):
-            break  # drawn over the loading line it would only hide its style
+        if branch == "unloading" and retraced:
+            break
         _draw_branch(ax, approach[part], force[part], jump[part], BRANCH_STYLES[branch], colour)
     scalars = case.scalars
     pull_off = _scalar(scalars, "pull_off_force")
@@ -68,6 +72,12 @@ def _draw_cycle(ax, data, case, colour, scales) -> None:
             color=colour,
             label=f"Winkler springs: pull-off {_with_unit(scalars['winkler_pull_off_force'])}",
         )
+
+
+def _retraced(data) -> bool:
+    """Whether a stored cycle's boundary-element unloading lies on its loading (:func:`retraces`)."""
+    approach = np.asarray(data["approach"])
+    return retraces(approach, np.asarray(data["force"]), int(np.argmax(approach)))
 
 
 def retraces(approach: np.ndarray, force: np.ndarray, turn: int) -> bool:
@@ -161,11 +171,12 @@ def force_approach_figure(cases):
             "N/m" if "y" not in datasets[0].dims else "N",
         ),
     )
+    retraced = [_retraced(data) for data in datasets]  # once per case, for both panels and the legend
     figure, axes = new_figure(1, 2, width=5.4, height=4.4)
     whole, zoom = axes[0]
     for ax in (whole, zoom):
         for index, (case, data) in enumerate(zip(chosen, datasets, strict=True)):
-            _draw_cycle(ax, data, case, f"C{index}", scales)
+            _draw_cycle(ax, data, case, f"C{index}", scales, retraced[index])
         ax.axhline(0.0, color="0.6", lw=0.6)
         ax.set_xlabel(f"approach ({scales[0][1]})")
         ax.set_ylabel(f"normal force ({scales[1][1]})")
@@ -180,11 +191,7 @@ def force_approach_figure(cases):
     winkler = any("winkler_force" in d for d in datasets)
     whole.set_title("load-unload cycle")
     zoom.set_title("near the pull-off")
-    retraced = all(
-        retraces(np.asarray(d["approach"]), np.asarray(d["force"]), int(np.argmax(np.asarray(d["approach"]))))
-        for d in datasets
-    )
-    _style_legend(zoom, winkler, retraced, any(bool(np.asarray(d["jump"]).any()) for d in datasets))
+    _style_legend(zoom, winkler, all(retraced), any(bool(np.asarray(d["jump"]).any()) for d in datasets))
     return figure
 
 
