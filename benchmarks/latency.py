@@ -9,8 +9,8 @@ table gives min / median / max wall time against issue 36's target. Commands:
 * ``contact`` on it at 20 MPa without and with ``-o`` (figures and report), and on a 1024 x 1024
   self-affine surface written once as a text matrix;
 * ``demo`` into a new folder (a first run) and again into the same folder (every case reused);
-* a 100-case study (10 mean pressures x 10 replicates of a 64 x 64 self-affine surface), first
-  run and rerun with every case reused.
+* a 100-case study (``benchmarks/study_runner.py``'s: 10 mean pressures x 10 replicates of a
+  64 x 64 self-affine surface), first run and rerun with every case reused.
 
 Beside them: the normal solve alone (``solve_normal`` on the scan, in this process, after one
 warm-up solve), and a twelve-line tamaas script solving the same heights, periodic, as a whole
@@ -36,6 +36,9 @@ from pathlib import Path
 
 import numpy as np
 
+sys.path.insert(0, str(Path(__file__).parent))
+from study_runner import write_study  # noqa: E402  (the 100-case sweep its runner benchmark times)
+
 ROOT = Path(__file__).resolve().parents[1]
 SCAN = ROOT / "src" / "roughcontact" / "data" / "top-1.top"
 CLI = [sys.executable, "-m", "roughcontact"]
@@ -53,26 +56,6 @@ TARGETS = {  # issue 36's targets [s] (None: none stated)
     "100-case study, first run": None,
     "100-case study, reused": None,
 }
-
-STUDY = """
-[study]
-name = "latency"
-[topographies.surface]
-generate = "self_affine"
-shape = 64
-size = "5 um"
-hurst = 0.8
-rms_height = "1 nm"
-[[analysis]]
-name = "contact"
-model = "normal"
-topography = "surface"
-material = "polysilicon"
-figures = []
-[analysis.sweep]
-mean_pressure = {pressures}
-replicate = {replicates}
-"""
 
 TAMAAS = """
 import time, numpy as np, tamaas as tm
@@ -149,9 +132,7 @@ def main() -> None:
             before=lambda: shutil.rmtree(demo, ignore_errors=True),
         )
         rows["demo, every case reused"] = timed([*CLI, "demo", "-o", str(demo)], args.repeats)
-        study = work / "study.toml"
-        pressures = [f"{p:.3g} MPa" for p in np.geomspace(2, 50, 10)]
-        study.write_text(STUDY.format(pressures=json.dumps(pressures), replicates=list(range(10))))
+        study = write_study(work, 64, 1e-8)  # benchmarks/study_runner.py's sweep, 64^2
         folder = work / "study-out"
         rows["100-case study, first run"] = timed(
             [*CLI, "run", str(study), "-o", str(folder), "--no-progress"],
