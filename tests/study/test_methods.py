@@ -86,6 +86,7 @@ def test_keys_swept_over_one_value_are_no_sweep(tmp_path):
     assert varied_axes(analysis) == ["force"]
     page = write_report(tmp_path / "out", redraw=False).read_text()
     assert "swept: force<" in page
+    assert "2 cases over force." in page  # the methods paragraph names the same keys
 
 
 def test_the_rule_stated_is_the_one_that_gives_the_case_its_value():

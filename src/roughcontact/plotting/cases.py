@@ -188,6 +188,15 @@ def realisations_of(cases: Sequence[FigureCase]) -> dict[str, list[FigureCase]]:
     }
 
 
+def axis_words(key: str) -> str:
+    """Return a swept key or parameter in words: its last dotted part, spaces for underscores.
+
+    ``topographies.island.shape`` -> ``shape``, ``mean_pressure`` -> ``mean pressure``: a legend, a
+    title or a methods paragraph is read, not parsed.
+    """
+    return key.rsplit(".", 1)[-1].replace("_", " ")
+
+
 def _tied_to_replicate(settings: list[dict[str, Any]]) -> set[str]:
     """Return the keys whose value changes exactly when the replicate does (zipped with it)."""
     tied = set()

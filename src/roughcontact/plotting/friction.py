@@ -10,7 +10,7 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import format_si, prefixed_scale
-from .cases import caption, grouped, loads_of, mean_by_load, setting_of
+from .cases import axis_words, caption, grouped, loads_of, mean_by_load, setting_of
 from .layout import axes_for, legend
 
 BOX_FROM = 5
@@ -210,7 +210,7 @@ def _simulated_only(cases) -> dict[str, list[float]] | None:
             if key not in ("sample", "replicate") and len({repr(s.get(key)) for s in settings}) > 1
         ]
         for case, setting in zip(group, settings, strict=True):
-            words = [f"{key.rsplit('.', 1)[-1].replace('_', ' ')} {setting.get(key)}" for key in differ]
+            words = [f"{axis_words(key)} {setting.get(key)}" for key in differ]
             name = ", ".join([sample, *words] if sample else words) or "all cases"
             values.setdefault(name, []).append(float(case.scalars["mu"]))
     return values

@@ -24,7 +24,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
-from ..plotting.cases import figure_caption
+from ..plotting.cases import axis_words, figure_caption
 from ..units import format_si
 from .schema import Strict
 
@@ -130,12 +130,12 @@ class CaseRecord:
         """
         axes = self.data.get("axes") or {}
         if axes:
-            return ", ".join(f"{_words(k.rsplit('.', 1)[-1])} {v}" for k, v in axes.items())
+            return ", ".join(f"{axis_words(k)} {v}" for k, v in axes.items())
         parameters = self.parameters
         parts = [str(parameters[k]) for k in ("sample", "topography") if parameters.get(k)][:1]
         for key, unit in _LOAD_KEYS.items():
             if isinstance(parameters.get(key), int | float):
-                parts.append(f"{_words(key)} {format_si(parameters[key], unit)}")
+                parts.append(f"{axis_words(key)} {format_si(parameters[key], unit)}")
                 break
         return ", ".join(parts) or self.data["case"]
 
@@ -273,8 +273,3 @@ class Kind:
     headline: tuple[str, ...] = ()
     renamed: Mapping[str, str] = field(default_factory=dict)
     missing: Mapping[str, str] = field(default_factory=dict)
-
-
-def _words(key: str) -> str:
-    """Return a parameter key as words (``mean_pressure`` -> ``mean pressure``)."""
-    return key.replace("_", " ")

@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from ..plotting.cases import axis_words
 from ..units import format_si
 
 
@@ -73,16 +74,15 @@ def _analysis(analysis, materials: dict[str, dict]) -> str:
     records = analysis.finished
     count = len(records)
     text = f"Analysis {analysis.name!r}: {analysis.summary}; {count} case{'s' if count != 1 else ''}"
-    if analysis.sweep_axes:
-        text += " over " + ", ".join(
-            axis.rsplit(".", 1)[-1].replace("_", " ") for axis in analysis.sweep_axes
-        )
+    varied = varied_axes(analysis)
+    if varied:
+        text += " over " + ", ".join(varied)
     if analysis.realisations > 1:
         text += f", each on {analysis.realisations} realisations of its random surfaces"
     text += "."
     first = records[0]
     settings = [
-        f"{key.replace('_', ' ')} {first.parameters[key]:g}"
+        f"{axis_words(key)} {first.parameters[key]:g}"
         for key in ("tolerance",)
         if isinstance(first.parameters.get(key), int | float)
     ]
@@ -129,7 +129,7 @@ def _readings(record) -> list[str]:
         if isinstance(value, dict):
             value = ", ".join(f"{k} {v}" for k, v in value.items())
         if value not in (None, ""):
-            found.append(f"{key.replace('_', ' ')} {value}")
+            found.append(f"{axis_words(key)} {value}")
     return found
 
 
@@ -198,5 +198,5 @@ def varied_axes(analysis) -> list[str]:
     for record in analysis.finished:
         for axis, value in (record.data.get("axes") or {}).items():
             values.setdefault(axis, set()).add(str(value))
-    names = [axis.rsplit(".", 1)[-1].replace("_", " ") for axis, seen in values.items() if len(seen) > 1]
+    names = [axis_words(axis) for axis, seen in values.items() if len(seen) > 1]
     return list(dict.fromkeys(names))  # a zip of a sample with its surface's key reads as one axis
