@@ -110,11 +110,16 @@ def gpu_module():
     return _gpu
 
 
+def on_gpu(array) -> bool:
+    """Whether ``array`` is a CuPy array (without importing CuPy)."""
+    return type(array).__module__.startswith("cupy")
+
+
 def namespace(array):
     """Return the array module of ``array``: numpy, or cupy for an array on the GPU."""
-    return sys.modules["cupy"] if type(array).__module__.startswith("cupy") else np
+    return sys.modules["cupy"] if on_gpu(array) else np
 
 
 def to_host(array) -> np.ndarray:
     """Return ``array`` as a numpy array (copied from the GPU when it lives there)."""
-    return array.get() if type(array).__module__.startswith("cupy") else np.asarray(array)
+    return array.get() if on_gpu(array) else np.asarray(array)
