@@ -24,13 +24,13 @@ Everything else is in the subpackages, each with its own ``__all__``. Importing 
 cheap and has no side effects: the names are loaded when first used.
 """
 
-from importlib import import_module
-
+from ._lazy import lazy_names
 from ._version import __version__
 from .errors import ConvergenceError, InputError, UnitError, UnsupportedFormatError
 from .units import quantity
 
 _HOMES = {
+    "generate": "roughcontact.topography",
     "Topography": "roughcontact.topography",
     "read_topography": "roughcontact.topography",
     "save_topography": "roughcontact.topography",
@@ -53,7 +53,7 @@ _HOMES = {
     "run_study": "roughcontact.study",
     "answer": "roughcontact.study",
 }
-"""Public name -> the module that defines it (imported on first use)."""
+"""Public name -> the module that defines it, or holds it as a submodule (imported on first use)."""
 
 __all__ = [
     "ConvergenceError",
@@ -87,16 +87,4 @@ __all__ = [
 ]
 
 
-def __getattr__(name: str):
-    """Load a public name from its module on first use (keeps ``import roughcontact`` light)."""
-    if name == "generate":
-        return import_module("roughcontact.topography.generate")
-    if name in _HOMES:
-        value = getattr(import_module(_HOMES[name]), name)
-        globals()[name] = value
-        return value
-    raise AttributeError(f"module 'roughcontact' has no attribute {name!r}")
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(__all__))
+__getattr__, __dir__ = lazy_names(__name__, _HOMES)

@@ -19,7 +19,7 @@ FFTW configuration, from timings on a 2-core machine (``benchmarks/fft_backend.p
   millisecond, and :mod:`roughcontact._fftw_wisdom` keeps it on disk for the next process;
 - one thread below :data:`THREADS_FROM` points, where a second thread gains nothing;
 - OpenMP threads that sleep at barriers (``OMP_WAIT_POLICY=PASSIVE``, see
-  :func:`_import_pyfftw`), which keeps a transform from stalling when another process
+  :func:`pyfftw_module`), which keeps a transform from stalling when another process
   keeps a core busy.
 
 References
@@ -31,7 +31,9 @@ Frigo, M. and Johnson, S. G. (2005). The design and implementation of FFTW3. Pro
 from __future__ import annotations
 
 import contextlib
+import functools
 import os
+import sys
 import threading
 import time
 
@@ -43,18 +45,29 @@ from . import _fftw_wisdom
 from .errors import InputError
 
 
-def _import_pyfftw():
-    """Import pyFFTW (None if it does not import) with its OpenMP threads sleeping, not spinning, at barriers.
+@functools.cache
+def pyfftw_module():
+    """Return pyFFTW, imported at the first call (None if it does not import), quietly and quickly.
 
-    The pyFFTW wheels bundle their own OpenMP runtime (libgomp), which reads ``OMP_WAIT_POLICY``
-    once, when pyFFTW loads it. With the default (spinning) policy, a transform on 2 threads
-    while another process keeps a core busy waits for the scheduler at every barrier (measured
-    here: 30 ms instead of 1 ms per 256^2 pair, 1 s for a 33^2 one). The variable is set to
-    ``PASSIVE`` for the import only, and only if the user has not set it.
+    Imported when a transform first asks for it, not with this module, so that a process that
+    never transforms (``roughcontact --help``, reading a file) does not pay for it. Two settings
+    hold for the import only:
+
+    - its OpenMP threads sleep, not spin, at barriers. The pyFFTW wheels bundle their own OpenMP
+      runtime (libgomp), which reads ``OMP_WAIT_POLICY`` once, when pyFFTW loads it. With the
+      default (spinning) policy, a transform on 2 threads while another process keeps a core
+      busy waits for the scheduler at every barrier (measured here: 30 ms instead of 1 ms per
+      256^2 pair, 1 s for a 33^2 one). The variable is set to ``PASSIVE`` unless the user has set it;
+    - its Dask interface is left out: ``pyfftw.interfaces`` imports ``dask.array`` (0.4-0.5 s)
+      whenever Dask is installed, and roughcontact calls the FFTW plans directly. A process
+      that has imported ``dask.array.fft`` already keeps it.
     """
     chosen = "OMP_WAIT_POLICY" in os.environ
     if not chosen:
         os.environ["OMP_WAIT_POLICY"] = "PASSIVE"
+    dask_fft_absent = "dask.array.fft" not in sys.modules
+    if dask_fft_absent:
+        sys.modules["dask.array.fft"] = None  # import of it raises ImportError: pyFFTW skips it
     try:
         import pyfftw
     except ImportError:  # pragma: no cover - depends on the environment
@@ -62,10 +75,10 @@ def _import_pyfftw():
     finally:
         if not chosen:
             del os.environ["OMP_WAIT_POLICY"]
+        if dask_fft_absent and sys.modules.get("dask.array.fft", 0) is None:
+            del sys.modules["dask.array.fft"]
     return pyfftw
 
-
-_pyfftw = _import_pyfftw()  # optional at run time, declared in pyproject.toml
 
 BACKENDS = ("auto", "fftw", "scipy")
 ENVIRONMENT_VARIABLE = "ROUGHCONTACT_FFT"
@@ -124,8 +137,8 @@ def fft_backend(backend: str | None = None) -> str:
             f"use one of {BACKENDS} (or unset {ENVIRONMENT_VARIABLE}).",
         )
     if backend == "auto":
-        return "fftw" if _pyfftw is not None else "scipy"
-    if backend == "fftw" and _pyfftw is None:
+        return "fftw" if pyfftw_module() is not None else "scipy"
+    if backend == "fftw" and pyfftw_module() is None:
         raise InputError(
             "fft_backend",
             "the FFTW backend needs pyFFTW, which does not import.",
@@ -197,23 +210,24 @@ class RealFFT2:
         self._lock = threading.RLock()  # re-entrant: a staged() holder may call convolve()
 
     def _plan(self):
-        real_in = _pyfftw.zeros_aligned(self.shape, dtype=self.real_dtype)
-        spectrum = _pyfftw.empty_aligned(self.spectrum_shape, dtype=self._complex_dtype)
+        pyfftw = pyfftw_module()
+        real_in = pyfftw.zeros_aligned(self.shape, dtype=self.real_dtype)
+        spectrum = pyfftw.empty_aligned(self.spectrum_shape, dtype=self._complex_dtype)
         # a padded input keeps its zero margin: the forward plan preserves its input and the
         # backward plan writes into a separate buffer.
         padded = self.input_shape != self.shape
-        real_out = _pyfftw.empty_aligned(self.shape, dtype=self.real_dtype) if padded else real_in
+        real_out = pyfftw.empty_aligned(self.shape, dtype=self.real_dtype) if padded else real_in
         threads = self.workers if self.shape[0] * self.shape[1] >= THREADS_FROM else 1
         options = {"axes": (0, 1), "threads": threads, "planning_timelimit": PLANNING_TIME_LIMIT}
         measured = self.planner == "FFTW_MEASURE"
         if measured:
-            _fftw_wisdom.load(_pyfftw)  # the plans measured by earlier processes on this machine
+            _fftw_wisdom.load(pyfftw)  # the plans measured by earlier processes on this machine
         start = time.perf_counter()
-        forward = _pyfftw.FFTW(real_in, spectrum, flags=(self.planner,), **options)
+        forward = pyfftw.FFTW(real_in, spectrum, flags=(self.planner,), **options)
         flags = (self.planner, "FFTW_DESTROY_INPUT")
-        backward = _pyfftw.FFTW(spectrum, real_out, direction="FFTW_BACKWARD", flags=flags, **options)
+        backward = pyfftw.FFTW(spectrum, real_out, direction="FFTW_BACKWARD", flags=flags, **options)
         if measured and time.perf_counter() - start > WISDOM_SAVED_FROM:
-            _fftw_wisdom.save(_pyfftw)  # a plan that was measured, not found in the wisdom
+            _fftw_wisdom.save(pyfftw)  # a plan that was measured, not found in the wisdom
         real_in[...] = 0.0  # planning may have written into the buffers
         return real_in, spectrum, real_out, forward, backward
 

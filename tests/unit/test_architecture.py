@@ -12,7 +12,7 @@ PACKAGE = "roughcontact"
 
 LAYERS = (
     {"errors", "units", "checks", "results", "materials", "_json", "_files", "_deprecation", "_text_table",
-     "_backend", "_device", "_gpu", "_fftw_wisdom", "_version", "progress", "spread"},
+     "_backend", "_device", "_gpu", "_fftw_wisdom", "_cache", "_lazy", "_version", "progress", "spread"},
     {"topography", "elasticity", "analytic"},
     {"contact", "asperity", "experiment"},
     {"winkler_lj", "friction"},

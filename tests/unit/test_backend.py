@@ -16,7 +16,7 @@ from roughcontact.materials import Material
 from roughcontact.topography.generate import self_affine
 
 # pyFFTW is a declared dependency; without it only the fallback test runs
-needs_fftw = pytest.mark.skipif(_backend._pyfftw is None, reason="pyFFTW does not import")
+needs_fftw = pytest.mark.skipif(_backend.pyfftw_module() is None, reason="pyFFTW does not import")
 
 SHAPES = [(32, 32), (33, 33), (24, 37), (37, 24), (7, 1)]
 
@@ -106,7 +106,7 @@ def test_environment_variable_and_argument(monkeypatch):
 
 
 def test_fallback_without_pyfftw(monkeypatch):
-    monkeypatch.setattr(_backend, "_pyfftw", None)
+    monkeypatch.setattr(_backend, "pyfftw_module", lambda: None)
     monkeypatch.delenv("ROUGHCONTACT_FFT", raising=False)
     assert fft_backend() == "scipy"
     with pytest.raises(InputError, match="pyFFTW"):
@@ -153,7 +153,7 @@ def test_staged_operators_match_the_plain_calls(shape, boundary, backend):
 
     M is the inverse of the operator taken as periodic on the window, for either boundary.
     """
-    if backend == "fftw" and _backend._pyfftw is None:
+    if backend == "fftw" and _backend.pyfftw_module() is None:
         pytest.skip("pyFFTW does not import")
     size = (1e-4, 2.5e-4)
     operator = SurfaceCompliance(shape, size, 1e9, boundary=boundary, fft_backend=backend)
@@ -179,7 +179,7 @@ def test_staged_operators_match_the_plain_calls(shape, boundary, backend):
 )
 def test_parseval_quadratic_form_in_double_precision(shape, input_shape, backend):
     """sum w |rfft2 f|^2 = f . irfft2(K rfft2 f) to round-off, for even and odd widths and padded fields."""
-    if backend == "fftw" and _backend._pyfftw is None:
+    if backend == "fftw" and _backend.pyfftw_module() is None:
         pytest.skip("pyFFTW does not import")
     pair = RealFFT2(shape, input_shape=input_shape, backend=backend)
     rng = np.random.default_rng(9)
@@ -234,9 +234,9 @@ def test_measured_plans_keep_their_wisdom_in_a_file_for_the_next_process(monkeyp
     assert len(parts) == 3 and parts[0]
     shutil.copy(tmp_path / "wisdom.json", tmp_path / "next.json")
     monkeypatch.setenv(_fftw_wisdom.ENVIRONMENT_VARIABLE, str(tmp_path / "next.json"))
-    _backend._pyfftw.forget_wisdom()
-    assert _fftw_wisdom.load(_backend._pyfftw)
-    assert not _fftw_wisdom.load(_backend._pyfftw)  # once per process and path
+    _backend.pyfftw_module().forget_wisdom()
+    assert _fftw_wisdom.load(_backend.pyfftw_module())
+    assert not _fftw_wisdom.load(_backend.pyfftw_module())  # once per process and path
 
 
 @needs_fftw
@@ -255,12 +255,12 @@ def test_a_damaged_wisdom_file_only_costs_the_planning(monkeypatch, tmp_path, co
 def test_wisdom_can_be_switched_off_and_an_unwritable_cache_is_no_error(monkeypatch, tmp_path):
     monkeypatch.setenv(_fftw_wisdom.ENVIRONMENT_VARIABLE, "off")
     assert _fftw_wisdom.wisdom_path() is None
-    assert not _fftw_wisdom.save(_backend._pyfftw) and not _fftw_wisdom.load(_backend._pyfftw)
+    assert not _fftw_wisdom.save(_backend.pyfftw_module()) and not _fftw_wisdom.load(_backend.pyfftw_module())
     blocker = tmp_path / "a file"
     blocker.write_text("")
     monkeypatch.setenv(_fftw_wisdom.ENVIRONMENT_VARIABLE, str(blocker / "wisdom.json"))
-    if _backend._pyfftw is not None:
-        assert not _fftw_wisdom.save(_backend._pyfftw)
+    if _backend.pyfftw_module() is not None:
+        assert not _fftw_wisdom.save(_backend.pyfftw_module())
     assert list(tmp_path.iterdir()) == [blocker]  # no temporary file left behind
     monkeypatch.delenv(_fftw_wisdom.ENVIRONMENT_VARIABLE)
     default = _fftw_wisdom.wisdom_path()

@@ -1,7 +1,8 @@
 """The type stubs of the lazily loaded packages name exactly their public names, from the right homes.
 
-``roughcontact`` and ``roughcontact.plotting`` load their names on first use, which type checkers
-and IDEs cannot follow; ``__init__.pyi`` beside each says statically what ``__all__`` says.
+The packages built with :func:`roughcontact._lazy.lazy_names` load their names on first use, which
+type checkers and IDEs cannot follow; ``__init__.pyi`` beside each says statically what ``__all__``
+says.
 """
 
 import ast
@@ -24,7 +25,9 @@ def _stub_names(path: Path) -> dict[str, tuple[str, str]]:
     return names
 
 
-@pytest.mark.parametrize("package", ["roughcontact", "roughcontact.plotting"])
+@pytest.mark.parametrize(
+    "package", ["roughcontact", "roughcontact.contact", "roughcontact.plotting", "roughcontact.topography"]
+)
 def test_the_stub_names_every_public_name_and_its_home(package):
     module = importlib.import_module(package)
     stub = SOURCE.joinpath(*package.split(".")[1:], "__init__.pyi")

@@ -17,7 +17,7 @@ import argparse
 import logging
 import os
 import sys
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 
 from .._version import __version__
 from ..errors import ConvergenceError, InputError
@@ -52,8 +52,18 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message}\n  ({self.prog} --help lists the options)\n")
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """Return the argument parser of the ``roughcontact`` command."""
+def build_parser(built: Collection[str] | None = None) -> argparse.ArgumentParser:
+    """Return the argument parser of the ``roughcontact`` command.
+
+    Parameters
+    ----------
+    built : collection of str, optional
+        The commands whose options are built (with those of their group); the others are
+        listed by name and summary only, since their options may need the model or paper
+        they describe imported (the defaults in their help). None: every command's.
+        :func:`main` builds the one command it runs, so that ``roughcontact --help`` and
+        ``--version`` import no numerical or plotting library.
+    """
     parser = _Parser(
         prog="roughcontact",
         description="Contact mechanics of rough surfaces from measured topographies.",
@@ -62,13 +72,23 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("-v", "--verbose", action="count", default=0, help="more log output (-vv for debug)")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for group in GROUPS:
-        group.add_commands(commands)
+        if built is None or not set(built).isdisjoint(group.COMMANDS):
+            group.add_commands(commands)
+        else:
+            for name, summary in group.COMMANDS.items():
+                commands.add_parser(name, help=summary)
     return parser
+
+
+def _command(argv: Sequence[str]) -> str | None:
+    """Return the command of ``argv``: its first word not an option (the global options take no value)."""
+    return next((word for word in argv if not word.startswith("-")), None)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the ``roughcontact`` command; return its exit status."""
-    parser = build_parser()
+    argv = sys.argv[1:] if argv is None else list(argv)
+    parser = build_parser(built=[command] if (command := _command(argv)) else [])
     args = parser.parse_args(argv)
     level = (logging.WARNING, logging.INFO, logging.DEBUG)[min(args.verbose, 2)]
     logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")

@@ -14,6 +14,11 @@ import argparse
 from .options import CommandStudy, add_output_options, add_two_bodies, new_command, options
 from .output import run_command
 
+COMMANDS = {
+    "adhesion": "adhesive load-unload cycle of a surface against a flat: pull-off, jumps, hysteresis",
+}
+"""This module's commands and their lines in ``roughcontact --help``."""
+
 LAW_NAMES = {"md": "maugis_dugdale", "exp": "exponential", "lj": "lennard_jones"}
 """Short spellings of ``--law`` -> the model's law names (which are accepted as well)."""
 
@@ -66,7 +71,7 @@ def add_commands(commands) -> None:
         commands,
         "adhesion",
         _adhesion,
-        "adhesive load-unload cycle of a surface against a flat: pull-off, jumps, hysteresis",
+        COMMANDS["adhesion"],
         "Boundary-element adhesive contact of FILE (merged with COUNTER_FILE if given) with a flat: "
         "the flat approaches from --start to --max-approach and withdraws until the surfaces let go "
         "(study model 'adhesion'). The work of adhesion is --work-of-adhesion or comes from the surface "

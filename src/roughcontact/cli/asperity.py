@@ -12,7 +12,6 @@ import argparse
 from pathlib import Path
 
 from ..errors import InputError
-from ..papers import paper002
 from .options import (
     CommandStudy,
     add_material_options,
@@ -22,6 +21,12 @@ from .options import (
     options,
 )
 from .output import run_command
+
+COMMANDS = {
+    "asperity": "statistical elastic-plastic asperity model (GW/McCool, CEB, Kogut-Etsion, KKE) and "
+    "paper 002",
+}
+"""This module's commands and their lines in ``roughcontact --help``."""
 
 
 def _surface(command: CommandStudy, args: argparse.Namespace) -> dict:
@@ -129,7 +134,7 @@ def add_commands(commands) -> None:
         commands,
         "asperity",
         _asperity,
-        "statistical elastic-plastic asperity model (GW/McCool, CEB, Kogut-Etsion, KKE) and paper 002",
+        COMMANDS["asperity"],
         "Asperity parameters (R_asp, sigma_s, E', K, omega_c, psi) from a topography FILE or "
         "--moments, the statistical load-unload curve with --max-force and --area (study model "
         "'asperity'), and the BEM island compression with --bem (model 'load_unload'). --paper002 fills in "
@@ -170,6 +175,8 @@ def add_commands(commands) -> None:
     asperity.add_argument("--grid", type=int, default=128, help="grid of paper 002's synthetic island")
     asperity.add_argument("--seed", type=int, default=0, help="seed of paper 002's synthetic island")
     add_realisations(asperity, "paper 002's synthetic island (--bem --paper002)")
+    from ..papers import paper002
+
     paper = paper002.load_unload_keys()
     asperity.add_argument(
         "--substrate", help=f"substrate of the film for --bem (paper 002: {paper['substrate']})"

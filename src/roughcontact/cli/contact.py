@@ -7,6 +7,11 @@ import argparse
 from .options import CommandStudy, add_device, add_material_options, add_output_options, new_command, options
 from .output import run_command
 
+COMMANDS = {
+    "contact": "solve the normal contact of a file's surface against a flat",
+}
+"""This module's commands and their lines in ``roughcontact --help``."""
+
 
 def _contact(args: argparse.Namespace) -> int:
     command = CommandStudy("roughcontact contact", f"normal contact of {args.file.name} against a flat")
@@ -41,7 +46,7 @@ def add_commands(commands) -> None:
         commands,
         "contact",
         _contact,
-        "solve the normal contact of a file's surface against a flat",
+        COMMANDS["contact"],
         "Elastic (or elastic-perfectly-plastic with --hardness) normal contact of the surface "
         "against a flat (study model 'normal'). Give exactly one of --pressure, --force, --approach, with "
         "units. -o writes the case, its figures and a report.",

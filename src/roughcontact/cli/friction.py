@@ -13,7 +13,6 @@ import argparse
 from pathlib import Path
 
 from ..errors import InputError
-from ..papers import paper000
 from .options import (
     CommandStudy,
     add_output_options,
@@ -24,6 +23,12 @@ from .options import (
     size_argument,
 )
 from .output import run_command
+
+COMMANDS = {
+    "friction": "adhesive + mechanical friction of a surface (Winkler layer + Lennard-Jones, paper 000)",
+    "friction-compare": "simulated vs measured mu per sample: t-tests and Pearson r (paper 000's validation)",
+}
+"""This module's commands and their lines in ``roughcontact --help``."""
 
 
 def _readings(texts: list[str]) -> tuple[str | None, dict[str, str]]:
@@ -89,6 +94,8 @@ def _sample_argument(text: str) -> tuple[str, list[Path]]:
 
 def _paper000_scans(command: CommandStudy, args: argparse.Namespace) -> dict:
     """Paper 000's synthetic scans and tip (generators ``paper000_scan``, ``paper000_tip``): their keys."""
+    from ..papers import paper000
+
     first = next(iter(paper000.PAPER000_SAMPLES))
     command.topography("scan", {"generate": "paper000_scan", "shape": args.grid, "sample": first}, "--grid")
     command.topography("tip", {"generate": "paper000_tip", "shape": args.grid, "seed": args.seed}, "--grid")
@@ -97,6 +104,8 @@ def _paper000_scans(command: CommandStudy, args: argparse.Namespace) -> dict:
 
 
 def _friction_compare(args: argparse.Namespace) -> int:
+    from ..papers import paper000
+
     command = CommandStudy(
         "roughcontact friction-compare", f"simulated mu against the measured values of {args.measured.name}"
     )
@@ -151,6 +160,8 @@ def _friction_compare(args: argparse.Namespace) -> int:
 
 def _shared_options(parser: argparse.ArgumentParser, *, paper: bool) -> None:
     """Add the model's options; ``paper``: their defaults are paper 000's (``friction-compare``)."""
+    from ..papers import paper000
+
     keys = paper000.friction_keys()
     parser.add_argument(
         "--surface-energy",
@@ -192,11 +203,13 @@ def _shared_options(parser: argparse.ArgumentParser, *, paper: bool) -> None:
 
 def add_commands(commands) -> None:
     """Add ``friction`` and ``friction-compare`` to the subparsers ``commands``."""
+    from ..papers import paper000
+
     friction = new_command(
         commands,
         "friction",
         _friction,
-        "adhesive + mechanical friction of a surface (Winkler layer + Lennard-Jones, paper 000)",
+        COMMANDS["friction"],
         "Friction of FILE (merged with COUNTER_FILE if given) against a flat at --normal-force, "
         "or over --normal-forces, with the adhesive and mechanical parts and mu = F / N (study model "
         "'friction').",
@@ -239,7 +252,7 @@ def add_commands(commands) -> None:
         commands,
         "friction-compare",
         _friction_compare,
-        "simulated vs measured mu per sample: t-tests and Pearson r (paper 000's validation)",
+        COMMANDS["friction-compare"],
         "Simulate mu for every scan of every sample (--sample NAME=a.di,b.di ...; without "
         "--sample: paper 000's case, seven synthetic seeded scans per sample) and compare with MEASURED "
         "(CSV sample,mu): per-sample t-tests and the Pearson r of the means.",

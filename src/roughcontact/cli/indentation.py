@@ -11,6 +11,11 @@ from pathlib import Path
 from .options import CommandStudy, add_output_options, new_command, options
 from .output import run_command
 
+COMMANDS = {
+    "nanoindent": "sample modulus from a load-displacement CSV: Oliver-Pharr with the hold-creep correction",
+}
+"""This module's commands and their lines in ``roughcontact --help``."""
+
 
 def _nanoindent(args: argparse.Namespace) -> int:
     command = CommandStudy("roughcontact nanoindent", f"Oliver-Pharr analysis of {args.file.name}")
@@ -29,7 +34,7 @@ def add_commands(commands) -> None:
         commands,
         "nanoindent",
         _nanoindent,
-        "sample modulus from a load-displacement CSV: Oliver-Pharr with the hold-creep correction",
+        COMMANDS["nanoindent"],
         "Oliver-Pharr analysis with Tang-Ngan's viscous correction as in seed paper 001 "
         "eqs. 5-8 (study model 'nanoindentation'): power law fitted to the upper unloading curve, creep "
         "rate from the hold at maximum load, unloading rate from the onset of unloading, ideal Berkovich "

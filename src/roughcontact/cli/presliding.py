@@ -13,7 +13,6 @@ import argparse
 from pathlib import Path
 
 from ..errors import InputError
-from ..papers import paper001
 from ..units import quantity, written
 from .options import (
     CommandStudy,
@@ -25,6 +24,12 @@ from .options import (
 )
 from .output import run_command
 
+COMMANDS = {
+    "presliding": "partial-slip friction loops of a rough ball on a flat, K_L vs Mindlin (paper 001)",
+    "loop-analysis": "stroke, mu, eq. 9 fit and K_L at A, B, C of a measured friction loop (paper 001)",
+}
+"""This module's commands and their lines in ``roughcontact --help``."""
+
 
 def _paper001(command: CommandStudy, args: argparse.Namespace) -> tuple[dict, dict]:
     """Paper 001's balls (generator ``paper001_ball``) at Table 1's loads: keys and zipped axes.
@@ -32,6 +37,8 @@ def _paper001(command: CommandStudy, args: argparse.Namespace) -> tuple[dict, di
     ``paper001 = true`` fills in each case's material, flat, radius, stroke and mu
     (:func:`roughcontact.papers.paper001.presliding_keys`).
     """
+    from ..papers import paper001
+
     if args.file is not None:
         raise InputError("FILE", "--paper001 generates the balls.", "drop FILE, or drop --paper001.")
     zipped: dict[str, list] = {"sample": [], "topography": [], "normal_force": []}
@@ -143,11 +150,13 @@ def _loop_analysis(args: argparse.Namespace) -> int:
 
 def add_commands(commands) -> None:
     """Add ``presliding`` and ``loop-analysis`` to the subparsers ``commands``."""
+    from ..papers import paper001
+
     presliding = new_command(
         commands,
         "presliding",
         _presliding,
-        "partial-slip friction loops of a rough ball on a flat, K_L vs Mindlin (paper 001)",
+        COMMANDS["presliding"],
         "Press the ball FILE (heights with its spherical shape) on a flat with --normal-force, "
         "move the flat 0 -> --stroke -> 0 for --cycles cycles, and analyse the last loop; or drive it along "
         "your own displacement or force programme (--path CSV); or run paper 001's HDPE/POM cases with "
@@ -235,7 +244,7 @@ def add_commands(commands) -> None:
         commands,
         "loop-analysis",
         _loop_analysis,
-        "stroke, mu, eq. 9 fit and K_L at A, B, C of a measured friction loop (paper 001)",
+        COMMANDS["loop-analysis"],
         "Analyse the last loop of a friction record (CSV of displacement and force) as paper 001 "
         "does (study model 'loop_analysis'); -o writes the figure of the loop, its fits and points.",
     )

@@ -16,6 +16,16 @@ from pathlib import Path
 from ..errors import InputError
 from .options import EXIT_CASES_FAILED, EXIT_INTERRUPTED, add_device, new_command, output_folder
 
+COMMANDS = {
+    "run": "run a study file (TOML): every case, the results table, figures and an HTML report",
+    "validate": "check a study file and list its cases without computing anything",
+    "models": "list the models a study can name, or one model's keys",
+    "report": "write OUT/report.html: the tables and figures of a study on one offline page",
+    "demo": "run the embedded demo study (examples/demo.toml: an AFM scan's statistics, normal contact, "
+    "the three papers on small grids) and write its report",
+}
+"""This module's commands and their lines in ``roughcontact --help``."""
+
 
 def _describe(study) -> list[str]:
     lines = [f"study {study.name!r} ({study.path}): {len(study.cases)} cases"]
@@ -262,7 +272,7 @@ def add_commands(commands) -> None:
         commands,
         "run",
         _run,
-        "run a study file (TOML): every case, the results table, figures and an HTML report",
+        COMMANDS["run"],
         "Validate STUDY (all problems at once, nothing computed), run its cases in-process, on a "
         "local Dask cluster (--workers) or on a running one (--scheduler), and write OUT/results.csv, "
         "OUT/cases/, OUT/figures/, OUT/tables/, OUT/provenance.json and OUT/report.html.",
@@ -281,18 +291,14 @@ def add_commands(commands) -> None:
     run.add_argument("--no-progress", action="store_true", help="no progress bar")
     add_device(run)
 
-    simple = (  # name, handler, summary, its one argument (flags, keywords)
-        ("validate", _validate, "check a study file and list its cases without computing anything",
-         (("study",), {"type": Path, "help": "study file (TOML)"})),
-        ("models", _models, "list the models a study can name, or one model's keys",
-         (("name",), {"nargs": "?", "help": "a model, e.g. normal"})),
-        ("report", _report, "write OUT/report.html: the tables and figures of a study on one offline page",
-         (("folder",), {"type": Path, "help": "the output folder of 'roughcontact run'"})),
-        ("demo", _demo, "run the embedded demo study (examples/demo.toml: an AFM scan's statistics, normal "
-         "contact, the three papers on small grids) and write its report",
-         (("-o", "--output"), {"type": output_folder, "default": Path("demo-output"),
-                                "help": "folder of its results and report.html (default demo-output)"})),
+    simple = (  # name, handler, its one argument (flags, keywords)
+        ("validate", _validate, (("study",), {"type": Path, "help": "study file (TOML)"})),
+        ("models", _models, (("name",), {"nargs": "?", "help": "a model, e.g. normal"})),
+        ("report", _report, (("folder",), {"type": Path, "help": "the output folder of 'roughcontact run'"})),
+        ("demo", _demo, (("-o", "--output"), {"type": output_folder, "default": Path("demo-output"),
+                          "help": "folder of its results and report.html (default demo-output)"})),
     )  # fmt: skip
-    for name, handler, summary, (flags, keywords) in simple:
+    for name, handler, (flags, keywords) in simple:
+        summary = COMMANDS[name]
         description = summary[0].upper() + summary[1:] + "."
         new_command(commands, name, handler, summary, description).add_argument(*flags, **keywords)

@@ -14,13 +14,17 @@ import numpy as np
 from .._files import not_a_folder
 from .._json import json_ready
 from ..errors import InputError
-from ..study.display import shown
 from ..topography import Topography
 from ..topography.io import MAX_FILLED, channel_of, channel_words, max_filled_allowing
 from ..topography.process import LEVELLING, SPECK
-from ..topography.statistics import SUMMARY
 from ..units import format_si
 from .options import dpi_argument, levelling, new_command, read_file
+
+COMMANDS = {
+    "inspect": "print channels, grid, physical size, units and statistics of a file",
+    "plot": "draw the height map and PSD of a file, or re-draw a study's figures (plot OUT/)",
+}
+"""This module's commands and their lines in ``roughcontact --help``."""
 
 
 def describe(topography: Topography, undefined=None) -> dict:
@@ -35,7 +39,7 @@ def describe(topography: Topography, undefined=None) -> dict:
     """
     from scipy import ndimage
 
-    from ..topography.statistics import summary
+    from ..topography.statistics import SUMMARY, summary
 
     description = {
         "name": topography.info.get("name") or topography.info.get("source"),
@@ -68,6 +72,9 @@ def describe(topography: Topography, undefined=None) -> dict:
 
 def format_description(description: dict) -> str:
     """Render :func:`describe` output as an aligned text table with SI-prefixed units."""
+    from ..study.display import shown
+    from ..topography.statistics import SUMMARY
+
     size = " x ".join(format_si(s, "m") for s in description["size_m"])
     spacing = " x ".join(format_si(s, "m") for s in description["spacing_m"])
     lines = [f"surface        {description['name']}"]
@@ -206,7 +213,7 @@ def add_commands(commands) -> None:
         commands,
         "inspect",
         _inspect,
-        "print channels, grid, physical size, units and statistics of a file",
+        COMMANDS["inspect"],
         file=True,
     )
     inspect.add_argument("--json", action="store_true", help="print one JSON document (SI units)")
@@ -215,7 +222,7 @@ def add_commands(commands) -> None:
         commands,
         "plot",
         _plot,
-        "draw the height map and PSD of a file, or re-draw a study's figures (plot OUT/)",
+        COMMANDS["plot"],
         "FILE a topography: draw its height map and PSD into -o. FILE a study's output "
         "folder: re-draw its figures and tables from the stored results (nothing is solved again).",
         file=True,

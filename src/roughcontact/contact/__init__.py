@@ -14,45 +14,41 @@ ball, paper 001's model), ``sweep``
 (:func:`load_path`: warm-started sequences of normal solves), ``paths`` (tangential programmes:
 paper 001's stroke path, symmetric cycles, a CSV) and their results, each with ``scalars()``,
 ``UNITS`` and ``to_xarray()`` (:mod:`roughcontact.results`).
+
+The names here load on first use (:mod:`roughcontact._lazy`): importing one solver's module does
+not import the others.
 """
 
-from .adhesive import solve_adhesive
-from .adhesive_result import AdhesiveResult
-from .frictional import solve_frictional
-from .interaction import Exponential, LennardJones, MaugisDugdale
-from .load_unload import LoadUnloadResult, SurfacePlasticity, VolumePlasticity, load_unload
-from .normal import compliance_for, solve_normal
-from .paths import read_path_csv, read_programme_csv, stroke_path, symmetric_path
-from .presliding import PreslidingResult, presliding
-from .result import NormalContactResult
-from .shear_solver import ShearSolver
-from .sweep import load_path
-from .tangential import solve_tangential
-from .tangential_result import TangentialPathResult, TangentialState
+from .._lazy import lazy_names
 
-__all__ = [
-    "AdhesiveResult",
-    "Exponential",
-    "LennardJones",
-    "LoadUnloadResult",
-    "MaugisDugdale",
-    "SurfacePlasticity",
-    "VolumePlasticity",
-    "NormalContactResult",
-    "PreslidingResult",
-    "TangentialPathResult",
-    "TangentialState",
-    "compliance_for",
-    "load_path",
-    "load_unload",
-    "presliding",
-    "ShearSolver",
-    "solve_frictional",
-    "read_path_csv",
-    "read_programme_csv",
-    "solve_adhesive",
-    "solve_normal",
-    "solve_tangential",
-    "stroke_path",
-    "symmetric_path",
-]
+_HOMES = {
+    "AdhesiveResult": ".adhesive_result",
+    "compliance_for": ".normal",
+    "Exponential": ".interaction",
+    "LennardJones": ".interaction",
+    "load_path": ".sweep",
+    "load_unload": ".load_unload",
+    "LoadUnloadResult": ".load_unload",
+    "MaugisDugdale": ".interaction",
+    "NormalContactResult": ".result",
+    "presliding": ".presliding",
+    "PreslidingResult": ".presliding",
+    "read_path_csv": ".paths",
+    "read_programme_csv": ".paths",
+    "ShearSolver": ".shear_solver",
+    "solve_adhesive": ".adhesive",
+    "solve_frictional": ".frictional",
+    "solve_normal": ".normal",
+    "solve_tangential": ".tangential",
+    "stroke_path": ".paths",
+    "SurfacePlasticity": ".load_unload",
+    "symmetric_path": ".paths",
+    "TangentialPathResult": ".tangential_result",
+    "TangentialState": ".tangential_result",
+    "VolumePlasticity": ".load_unload",
+}
+"""Public name -> the submodule that defines it (imported on first use)."""
+
+__all__ = sorted(_HOMES)
+
+__getattr__, __dir__ = lazy_names(__name__, _HOMES)

@@ -18,7 +18,7 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
-from scipy import optimize
+import scipy
 
 from .._device import gpu_module, to_host
 from .._version import __version__
@@ -390,7 +390,7 @@ def _capped_at_force(compliance, separation, target_force, initial, guess, measu
         while excess(high) < 0:
             low, high = high, 2.0 * high
     relative = common["tolerance"]
-    delta = optimize.brentq(excess, low, high, xtol=relative * high, rtol=max(relative, 4e-16))
+    delta = scipy.optimize.brentq(excess, low, high, xtol=relative * high, rtol=max(relative, 4e-16))
     excess(delta)
     return dataclasses.replace(solved[delta], iterations=sum(raw.iterations for raw in solved.values()))
 

@@ -12,41 +12,31 @@ Two families, both returning matplotlib objects and touching no global pyplot st
 Names load from their modules on first use.
 """
 
-from importlib import import_module
+from .._lazy import lazy_names
 
 _HOMES = {
-    "as_cases": "cases",
-    "figure_caption": "cases",
-    "ResultCase": "cases",
-    "plot_area_load": "asperity",
-    "plot_load_interference": "asperity",
-    "plot_von_mises_maps": "asperity",
-    "plot_contact_area": "contact",
-    "plot_contact_overview": "contact",
-    "plot_gap": "contact",
-    "plot_load_approach": "contact",
-    "plot_pressure": "contact",
-    "plot_von_mises": "contact",
-    "plot_friction_vs_load": "friction",
-    "plot_mu_boxes": "friction",
-    "plot_mu_means": "friction",
-    "plot_heights": "topography",
-    "plot_overview": "topography",
-    "plot_psd": "topography",
+    "as_cases": ".cases",
+    "figure_caption": ".cases",
+    "ResultCase": ".cases",
+    "plot_area_load": ".asperity",
+    "plot_load_interference": ".asperity",
+    "plot_von_mises_maps": ".asperity",
+    "plot_contact_area": ".contact",
+    "plot_contact_overview": ".contact",
+    "plot_gap": ".contact",
+    "plot_load_approach": ".contact",
+    "plot_pressure": ".contact",
+    "plot_von_mises": ".contact",
+    "plot_friction_vs_load": ".friction",
+    "plot_mu_boxes": ".friction",
+    "plot_mu_means": ".friction",
+    "plot_heights": ".topography",
+    "plot_overview": ".topography",
+    "plot_psd": ".topography",
 }
 """Public name -> its module in this package (imported on first use)."""
 
 __all__ = sorted(_HOMES)
 
 
-def __getattr__(name: str):
-    """Load a public name from its module on first use (no matplotlib before a figure is drawn)."""
-    if name in _HOMES:
-        value = getattr(import_module(f"{__name__}.{_HOMES[name]}"), name)
-        globals()[name] = value
-        return value
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(__all__))
+__getattr__, __dir__ = lazy_names(__name__, _HOMES)

@@ -52,7 +52,8 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
-from scipy import fft, optimize
+import scipy
+from scipy import fft
 
 from ..checks import no_string, positive
 from ..errors import InputError
@@ -630,7 +631,7 @@ def _continuum_band(ratio: float, bandwidth: float, hurst: float) -> tuple[float
                 f"with hurst={hurst:g} the bandwidth alpha = {bandwidth:.4g} needs q_s / q_L beyond e^128.",
                 "use a larger hurst (alpha grows as (q_s / q_L)^(2 H)), or check m0, m2, m4.",
             )
-    log_magnification = optimize.brentq(excess, 0.0, upper, xtol=1e-14)
+    log_magnification = scipy.optimize.brentq(excess, 0.0, upper, xtol=1e-14)
     j0, j2, _ = integrals(log_magnification)
     q_long = math.sqrt(2.0 * ratio * j0 / j2)  # m2 / m0 = (I2 / 2) / I0 = q_L^2 J2 / (2 J0)
     return q_long, q_long * math.exp(log_magnification)
@@ -678,7 +679,7 @@ def _lattice_band(
             return math.inf, math.nan
         if excess(magnitude[end - 1]) < 0:  # even a flat disc is too smooth in slope
             return -math.inf, math.nan
-        q_long = optimize.brentq(excess, magnitude[0], magnitude[end - 1], rtol=1e-13)
+        q_long = scipy.optimize.brentq(excess, magnitude[0], magnitude[end - 1], rtol=1e-13)
         s0, s2, s4 = sums(q_long, end)
         return s0 * s4 / s2**2, q_long
 

@@ -171,12 +171,12 @@ def is_native_file(path: PathLike) -> bool:
     Reads only the file's signature and attributes; a damaged HDF5 file counts as not native
     (it is left to the instrument readers, which report it).
     """
-    import h5netcdf
-
     path = Path(path)
     with path.open("rb") as stream:
         if stream.read(len(_HDF5_MAGIC)) != _HDF5_MAGIC:
             return False
+    import h5netcdf  # only for an HDF5 file (an instrument file's read does not load it)
+
     try:
         with h5netcdf.File(path, "r") as handle:
             return handle.attrs.get("format") == NATIVE_FORMAT

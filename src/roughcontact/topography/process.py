@@ -15,8 +15,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy import ndimage, optimize, sparse
-from scipy.sparse import linalg as sparse_linalg
+import scipy
 
 from ..errors import InputError
 from ..units import format_si
@@ -82,10 +81,10 @@ def fill_undefined(heights: np.ndarray, *, field: str = "heights") -> np.ndarray
     rows = np.concatenate([np.arange(n), *rows])
     cols = np.concatenate([np.arange(n), *cols])
     vals = np.concatenate([degree, *vals])
-    laplacian = sparse.csc_matrix((vals, (rows, cols)), shape=(n, n))
+    laplacian = scipy.sparse.csc_matrix((vals, (rows, cols)), shape=(n, n))
     # regions cut off from every measured point would be singular: they cannot exist here because
     # the grid is connected and at least one point is defined.
-    heights[missing] = sparse_linalg.spsolve(laplacian, rhs)
+    heights[missing] = scipy.sparse.linalg.spsolve(laplacian, rhs)
     return heights
 
 
@@ -116,8 +115,8 @@ def find_specks(undefined: np.ndarray, *, max_points: int = SPECK) -> np.ndarray
     """
     if not undefined.any():
         return np.zeros(undefined.shape, dtype=bool)
-    labels, count = ndimage.label(~undefined)
-    sizes = ndimage.sum(~undefined, labels, np.arange(1, count + 1))
+    labels, count = scipy.ndimage.label(~undefined)
+    sizes = scipy.ndimage.sum(~undefined, labels, np.arange(1, count + 1))
     return np.isin(labels, 1 + np.flatnonzero(sizes < max_points))
 
 
@@ -351,7 +350,7 @@ def remove_sphere(topography: Topography, *, fit: str = "sphere") -> tuple[Topog
     if fit == "sphere":
         apex = [-s / (2.0 * quadratic) for s in slopes]
         start = [*apex, offset - sum(s**2 for s in slopes) / (4.0 * quadratic), curvature]
-        solution = optimize.least_squares(
+        solution = scipy.optimize.least_squares(
             lambda p: (_spherical_cap(coordinates, p) - heights)[trusted],
             start,
             x_scale="jac",
@@ -462,11 +461,11 @@ def _sample_masks(topography: Topography, shape, spacing) -> dict[str, np.ndarra
         if mask is None:
             result[name] = None
             continue
-        wide = ndimage.binary_dilation(mask, iterations=1).astype(float)
+        wide = scipy.ndimage.binary_dilation(mask, iterations=1).astype(float)
         axes = list(zip(shape, spacing, topography.shape, topography.spacing, strict=True))
         grid = np.meshgrid(*[np.arange(n) * (new / old) for n, new, _, old in axes], indexing="ij")
         mode = "grid-wrap" if topography.periodic else "nearest"
-        result[name] = ndimage.map_coordinates(wide, grid, order=1, mode=mode) > 0
+        result[name] = scipy.ndimage.map_coordinates(wide, grid, order=1, mode=mode) > 0
     return result
 
 
@@ -495,7 +494,7 @@ def _sample(topography: Topography, shape: tuple[int, ...], spacing: tuple[float
     positions = [np.arange(n) * (new / old) for n, new, _, old in axes]
     grid = np.meshgrid(*positions, indexing="ij")
     mode = "grid-wrap" if topography.periodic else "nearest"
-    return ndimage.map_coordinates(topography.heights, grid, order=3, mode=mode)
+    return scipy.ndimage.map_coordinates(topography.heights, grid, order=3, mode=mode)
 
 
 def _shape_for(

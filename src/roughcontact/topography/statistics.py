@@ -64,7 +64,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import fft, signal
+import scipy
+from scipy import fft
 
 from ..checks import positive
 from ..errors import InputError
@@ -538,7 +539,7 @@ def _windowed(topography: Topography, axes: tuple[int, ...], window: str | None)
     if window is None:
         return z
     for axis in axes:
-        w = signal.windows.hann(z.shape[axis], sym=False)
+        w = scipy.signal.windows.hann(z.shape[axis], sym=False)
         w /= np.sqrt(np.mean(w**2))
         z = z * np.expand_dims(w, tuple(a for a in range(z.ndim) if a != axis))
     return z

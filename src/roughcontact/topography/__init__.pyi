@@ -1,0 +1,14 @@
+"""Type stub of :mod:`roughcontact.topography`: its lazy public names, for type checkers and IDEs."""
+
+from .io import list_channels as list_channels
+from .io import read_topography as read_topography
+from .native import load_topography as load_topography
+from .native import save_topography as save_topography
+from .process import combine as combine
+from .process import detrend as detrend
+from .process import level as level
+from .process import remove_sphere as remove_sphere
+from .statistics import mccool_parameters as mccool_parameters
+from .statistics import spectral_moments as spectral_moments
+from .statistics import summary as summary
+from .surface import Topography as Topography
