@@ -19,17 +19,25 @@ def shared_topographies() -> Path:
 
 
 @pytest.fixture(scope="session", autouse=True)
-def fftw_wisdom_of_the_session(tmp_path_factory):
-    """FFTW wisdom goes to a file of this session, not the user's cache (subprocesses inherit it)."""
+def caches_of_the_session(tmp_path_factory):
+    """FFTW wisdom and converted files go to folders of this session, not the user's cache.
+
+    Subprocesses inherit them. The file cache stays on, so the suite reads through it.
+    """
     import os
 
     from roughcontact import _fftw_wisdom
+    from roughcontact.topography import file_cache
 
-    path = tmp_path_factory.mktemp("fftw") / "wisdom.json"
-    previous = os.environ.get(_fftw_wisdom.ENVIRONMENT_VARIABLE)
-    os.environ[_fftw_wisdom.ENVIRONMENT_VARIABLE] = str(path)
-    yield path
-    if previous is None:
-        del os.environ[_fftw_wisdom.ENVIRONMENT_VARIABLE]
-    else:
-        os.environ[_fftw_wisdom.ENVIRONMENT_VARIABLE] = previous
+    paths = {
+        _fftw_wisdom.ENVIRONMENT_VARIABLE: tmp_path_factory.mktemp("fftw") / "wisdom.json",
+        file_cache.ENVIRONMENT_VARIABLE: tmp_path_factory.mktemp("converted-files"),
+    }
+    previous = {variable: os.environ.get(variable) for variable in paths}
+    os.environ.update({variable: str(path) for variable, path in paths.items()})
+    yield paths
+    for variable, value in previous.items():
+        if value is None:
+            del os.environ[variable]
+        else:
+            os.environ[variable] = value

@@ -26,6 +26,8 @@ import platform
 import tempfile
 from pathlib import Path
 
+from ._cache import cache_path
+
 ENVIRONMENT_VARIABLE = "ROUGHCONTACT_FFTW_WISDOM"
 """Path of the wisdom file, or ``off`` (also ``0``, ``no`` or empty) for none."""
 
@@ -34,12 +36,7 @@ _loaded: set[Path] = set()
 
 def wisdom_path() -> Path | None:
     """Return the wisdom file of this machine, or None when it is switched off (module docstring)."""
-    value = os.environ.get(ENVIRONMENT_VARIABLE)
-    if value is not None:
-        value = value.strip()
-        return None if value.lower() in ("", "off", "0", "no") else Path(value).expanduser()
-    cache = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache")
-    return cache / "roughcontact" / f"fftw-wisdom-{_machine_key()}.json"
+    return cache_path(ENVIRONMENT_VARIABLE, f"fftw-wisdom-{_machine_key()}.json")
 
 
 @functools.cache

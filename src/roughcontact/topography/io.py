@@ -32,7 +32,7 @@ import shlex
 import zlib
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 from datetime import date, datetime
 from pathlib import Path
 from typing import Any
@@ -50,6 +50,7 @@ from ..errors import (
 )
 from ..units import format_si, length_unit_factor, quantity
 from .channels import ChannelKind, classify_channel
+from .file_cache import ConvertedCopy
 from .native import channel_name, is_native_file, read_native
 from .process import crop as crop_topography
 from .process import crop_window, fill_undefined, find_specks
@@ -60,6 +61,11 @@ __all__ = ["ChannelInfo", "channel_of", "channel_words", "list_channels", "read_
 
 _GZIP_MAGIC = b"\x1f\x8b"
 _UNDEFINED_CHOICES = ("refuse", "interpolate")
+
+READER_VERSION = 1
+"""Version of what :func:`read_scan` makes of an instrument file: raise it when the same file would
+read otherwise (other heights, size, info), so that converted copies of older reads are not used
+(:mod:`roughcontact.topography.file_cache`)."""
 
 MAX_FILLED = 0.05
 """Largest fraction of a file's points that filling undefined points may invent without being told more."""
@@ -155,9 +161,15 @@ def list_channels(path: PathLike) -> list[ChannelInfo]:
                 True,
             )
         ]
+    copy = ConvertedCopy(path, "channels", {}, READER_VERSION)
+    found = copy.load()
+    if found is not None:
+        return [ChannelInfo(**channel) for channel in found[0]["channels"]]
     with _open_reader(path) as reader:
         default = reader.default_channel.index
-        return [_channel_info(channel, channel.index == default) for channel in reader.channels]
+        channels = [_channel_info(channel, channel.index == default) for channel in reader.channels]
+    copy.store({"channels": tuple(asdict(channel) for channel in channels)})
+    return channels
 
 
 def read_topography(
@@ -358,12 +370,43 @@ def read_scan(
     """Read one channel of a file as stored: a :class:`Scan` (NaN where undefined), SI units.
 
     As :func:`read_topography` without deciding about undefined points; a roughcontact ``.nc``
-    file (never holding undefined points) is returned as the :class:`Topography` it is.
+    file (never holding undefined points) is returned as the :class:`Topography` it is. An
+    instrument file read before with the same options is served from its converted copy,
+    without loading the readers (:mod:`roughcontact.topography.file_cache`).
     """
     path = existing_file(path, empty_fix=_REREAD_FIX)
     if is_native_file(path):
         topography = read_native(path, channel=channel)
         return _with_options(topography, path, size, height_unit, periodic, override_file_values)
+    options = {
+        "channel": channel,
+        "size": size,
+        "height_unit": height_unit,
+        "periodic": periodic,
+        "treat_as_height": treat_as_height,
+        "override_file_values": override_file_values,
+    }
+    copy = ConvertedCopy(path, "scan", options, READER_VERSION)
+    found = copy.load()
+    if found is not None:
+        record, heights = found
+        return Scan(heights, record["size"], record["periodic"], record["info"], path)
+    scan = _read_instrument_file(path, **options)
+    copy.store({"size": scan.size, "periodic": scan.periodic, "info": scan.info}, scan.heights)
+    return scan
+
+
+def _read_instrument_file(
+    path: Path,
+    *,
+    channel: int | str | None,
+    size: SizeLike | None,
+    height_unit: str | None,
+    periodic: bool,
+    treat_as_height: bool,
+    override_file_values: bool,
+) -> Scan:
+    """Read one channel of an instrument file with SurfaceTopography (:func:`read_scan`'s options)."""
     with _open_reader(path) as reader:
         selected = _select_channel(reader, channel, path)
         file_size_unit, file_height_unit = _file_units(selected)

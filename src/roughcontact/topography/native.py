@@ -96,7 +96,7 @@ def save_topography(topography: Topography, path: PathLike) -> None:
             "size": list(topography.size),
             "size_units": "m",
             "periodic": int(topography.periodic),
-            "info": _encode_info(topography.info),
+            "info": encode_info(topography.info),
         },
     )
     masks = {
@@ -160,7 +160,7 @@ def load_topography(path: PathLike) -> Topography:
         dataset["heights"].values,
         size,
         periodic=bool(attrs["periodic"]),
-        info=_decode_info(attrs["info"]),
+        info=decode_info(attrs["info"]),
         **masks,
     )
 
@@ -223,7 +223,7 @@ def read_native(path: PathLike, *, channel: int | str | None = None) -> Topograp
 # --- info encoding and the atomic write ----------------------------------------------------------
 
 
-def _encode_info(info: Mapping[str, Any]) -> str:
+def encode_info(info: Mapping[str, Any]) -> str:
     """Return ``info`` as JSON, tuples tagged so that they are restored as tuples."""
 
     def encode(value: Any, where: str) -> Any:
@@ -251,7 +251,9 @@ def _encode_info(info: Mapping[str, Any]) -> str:
     return json.dumps(encode(dict(info), "info"))
 
 
-def _decode_info(text: str) -> dict[str, Any]:
+def decode_info(text: str) -> dict[str, Any]:
+    """Return the ``info`` that :func:`encode_info` wrote, its tuples restored as tuples."""
+
     def restore(mapping: dict) -> Any:
         return tuple(mapping[_TUPLE_TAG]) if mapping.keys() == {_TUPLE_TAG} else mapping
 
