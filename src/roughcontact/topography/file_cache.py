@@ -110,6 +110,7 @@ class ConvertedCopy:
         folder: Path | None = None,
     ):
         self.folder = cache_folder() if folder is None else folder
+        self.what = what
         self.given = str(path)  # as the info names it
         self.path = Path(path).resolve()
         self.key = None if self.folder is None else self._key(what, options, reader_version)
@@ -149,7 +150,7 @@ class ConvertedCopy:
         for file in (heights_file, record_file):  # used now: the last to be pruned
             with contextlib.suppress(OSError):
                 os.utime(file)
-        logger.info("read %s from its converted copy %s", self.path.name, record_file)
+        logger.info("took the %s of %s from its converted copy %s", self.what, self.path.name, record_file)
         return record, heights
 
     def store(self, record: Mapping[str, Any], heights: np.ndarray | None = None) -> None:
