@@ -1,6 +1,7 @@
 """Converted copies of instrument files (issue 36): a file is parsed once; a later read is the same scan."""
 
 import json
+import logging
 import os
 import shutil
 import subprocess
@@ -10,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from roughcontact.errors import MissingMetadataError
+from roughcontact.errors import MissingMetadataError, UnsupportedFormatError
 from roughcontact.topography import file_cache
 from roughcontact.topography.io import list_channels, read_scan, read_topography
 
@@ -29,16 +30,40 @@ def copies(folder: Path) -> list[str]:
     return sorted(p.name for p in folder.iterdir()) if folder.exists() else []
 
 
+def assert_same_types(first, second, where="info"):
+    """Assert that two equal values hold the same Python types all the way down (tuples stay tuples)."""
+    assert type(first) is type(second), where
+    if isinstance(first, dict):
+        for key, value in first.items():
+            assert_same_types(value, second[key], f"{where}[{key!r}]")
+    elif isinstance(first, tuple | list):
+        for index, (one, other) in enumerate(zip(first, second, strict=True)):
+            assert_same_types(one, other, f"{where}[{index}]")
+
+
 def assert_same_scan(first, second):
     assert first.heights.dtype == second.heights.dtype
     np.testing.assert_array_equal(first.heights, second.heights)  # NaN where NaN
     assert first.heights.tobytes() == second.heights.tobytes()
     assert first.size == second.size and all(type(s) is float for s in second.size)
+    assert type(second.size) is tuple and type(second.periodic) is bool
     assert first.periodic == second.periodic
     assert first.info == second.info
-    for key, value in first.info.items():  # tuples stay tuples
-        assert type(second.info[key]) is type(value), key
+    assert_same_types(first.info, second.info)
     assert first.path == second.path
+
+
+def whole_copy(folder: Path) -> bool:
+    """Whether the folder holds exactly one copy, whose heights load and match its record."""
+    heights, record = sorted(folder.glob("*.npy")), sorted(folder.glob("*.json"))
+    if len(heights) != 1 or len(record) != 1 or heights[0].stem != record[0].stem:
+        return False
+    try:
+        shape, dtype = json.loads(record[0].read_text())["heights"]
+        loaded = np.load(heights[0], allow_pickle=False)
+    except (ValueError, EOFError, KeyError):
+        return False
+    return [list(loaded.shape), str(loaded.dtype)] == [shape, dtype]
 
 
 def test_a_second_read_is_the_same_scan_from_the_copy(folder, tmp_path):
@@ -50,12 +75,24 @@ def test_a_second_read_is_the_same_scan_from_the_copy(folder, tmp_path):
     assert isinstance(second.info["history"], tuple)
 
 
-def test_undefined_points_and_a_gzip_file_keep_their_values(folder, shared_topographies):
-    for name in ("sur-2.sur", "matrix-4.txt.gz"):
+def test_undefined_points_a_gzip_file_and_instrument_metadata_keep_their_values(folder, shared_topographies):
+    for name in ("sur-2.sur", "matrix-4.txt.gz", "di-3.di", "dektak-1.csv"):
         first = read_scan(shared_topographies / name)
         assert_same_scan(first, read_scan(shared_topographies / name))
         if name == "sur-2.sur":
             assert np.isnan(first.heights).sum() == 117
+        if name == "dektak-1.csv":  # nested dicts of the instrument's parameters
+            assert isinstance(first.info["instrument"]["parameters"]["tip_radius"], dict)
+
+
+def test_a_read_from_the_copy_says_so_at_info_level(folder, tmp_path, caplog):
+    file = shutil.copy(SCAN, tmp_path / "scan.top")
+    read_scan(file)
+    with caplog.at_level(logging.DEBUG, logger=file_cache.__name__):
+        read_scan(file)
+    [record] = [r for r in caplog.records if r.name == file_cache.__name__]
+    assert record.levelno == logging.INFO  # roughcontact -v shows it
+    assert record.getMessage().startswith("read scan.top (scan) from its converted copy ")
 
 
 def test_a_read_from_the_copy_loads_no_reader(folder, tmp_path):
@@ -82,6 +119,16 @@ def test_the_channel_list_is_kept_too(folder, shared_topographies):
     assert list_channels(shared_topographies / "di-3.di") == first
 
 
+def test_a_record_without_a_scan_s_keys_is_read_afresh(folder, tmp_path):
+    file = shutil.copy(SCAN, tmp_path / "scan.top")
+    first = read_scan(file)
+    record = next(folder.glob("*.json"))
+    stored = json.loads(record.read_text())
+    stored["record"] = json.dumps({"size": [1.0, 1.0]})
+    record.write_text(json.dumps(stored))
+    assert_same_scan(first, read_scan(file))
+
+
 def test_a_changed_file_is_read_again(folder, tmp_path):
     file = tmp_path / "matrix.txt"
     np.savetxt(file, np.arange(16.0).reshape(4, 4))
@@ -101,7 +148,12 @@ def test_a_copy_of_the_file_under_another_name_has_its_own_name(folder, tmp_path
 
 @pytest.mark.parametrize(
     "options",
-    [{"channel": 0}, {"height_unit": "um", "override_file_values": True}, {"periodic": True}],
+    [
+        {"channel": 0},
+        {"height_unit": "um", "override_file_values": True},
+        {"size": "1 um", "override_file_values": True},
+        {"periodic": True},
+    ],
 )
 def test_other_options_are_another_copy(folder, tmp_path, options):
     file = shutil.copy(SCAN, tmp_path / "scan.top")
@@ -112,15 +164,27 @@ def test_other_options_are_another_copy(folder, tmp_path, options):
     assert_same_scan(read_scan(file), plain)
 
 
-def test_a_damaged_copy_is_read_afresh_and_written_again(folder, tmp_path):
+@pytest.mark.parametrize(
+    ("suffix", "damage"),
+    [
+        (".npy", lambda content: content[:100]),  # a torn write
+        (".npy", lambda content: content[: len(content) // 2]),
+        (".npy", lambda content: b""),  # a rename not flushed before a crash
+        (".npy", lambda content: b"garbage"),
+        (".json", lambda content: content[: len(content) // 2]),
+        (".json", lambda content: b""),
+        (".json", lambda content: json.dumps({"shape": [1, 1]}).encode()),
+        (".json", lambda content: content.replace(b"[256, 256]", b"[256, 255]")),
+    ],
+)
+def test_a_damaged_copy_is_read_afresh_and_written_again(folder, tmp_path, suffix, damage):
     file = shutil.copy(SCAN, tmp_path / "scan.top")
     first = read_scan(file)
-    heights = next(folder.glob("*.npy"))
-    heights.write_bytes(heights.read_bytes()[:100])  # a torn write
+    part = next(folder.glob(f"*{suffix}"))
+    part.write_bytes(damage(part.read_bytes()))
+    assert not whole_copy(folder)
     assert_same_scan(first, read_scan(file))
-    assert_same_scan(first, read_scan(file))
-    record = next(folder.glob("*.json"))
-    record.write_text(json.dumps({"shape": [1, 1]}))
+    assert whole_copy(folder)  # written again
     assert_same_scan(first, read_scan(file))
 
 
@@ -145,10 +209,42 @@ def test_a_cache_folder_that_cannot_be_made_does_not_fail_the_read(tmp_path, mon
     assert_same_scan(read_scan(SCAN), read_scan(SCAN))
 
 
+def test_a_cache_folder_that_cannot_be_written_does_not_fail_the_read(folder, tmp_path, monkeypatch):
+    file = shutil.copy(SCAN, tmp_path / "scan.top")
+    first = read_scan(file)
+    kept = copies(folder)
+
+    def refused(path):
+        raise PermissionError(13, "Permission denied", str(path))
+
+    monkeypatch.setattr(file_cache, "replacing", refused)  # as a read-only folder refuses
+    other = read_scan(file, periodic=True)
+    assert other.periodic and copies(folder) == kept
+    assert_same_scan(first, read_scan(file))  # the copies there are still read
+
+
+@pytest.mark.skipif(os.name != "posix" or os.geteuid() == 0, reason="root writes to read-only folders")
+def test_a_read_only_cache_folder_does_not_fail_the_read(folder, tmp_path):
+    file = shutil.copy(SCAN, tmp_path / "scan.top")
+    first = read_scan(file)
+    kept = copies(folder)
+    folder.chmod(0o555)
+    try:
+        assert read_scan(file, periodic=True).periodic
+        assert_same_scan(first, read_scan(file))
+        assert copies(folder) == kept
+    finally:
+        folder.chmod(0o755)
+
+
 def test_a_refused_read_keeps_nothing(folder, shared_topographies):
     with pytest.raises(MissingMetadataError):
         read_scan(shared_topographies / "xyz-1.txt")
+    with pytest.raises(UnsupportedFormatError):
+        read_scan(shared_topographies / "nonsense_txt_file.txt")
     assert copies(folder) == []
+    read_scan(shared_topographies / "xyz-1.txt", size="4 um", height_unit="um")
+    assert len(copies(folder)) == 2  # the same file, given what it lacks
 
 
 def test_the_least_recently_used_copies_go_beyond_the_limit(folder, tmp_path):
@@ -164,3 +260,15 @@ def test_the_least_recently_used_copies_go_beyond_the_limit(folder, tmp_path):
     assert file_cache.prune(folder, limit=2 * one + 1) == 1
     kept = {p.stem for p in folder.iterdir()}
     assert stamps[0].stem in kept and stamps[1].stem not in kept and stamps[2].stem in kept
+
+
+def test_the_folder_stays_within_the_limit(folder, tmp_path, monkeypatch):
+    files = [shutil.copy(SCAN, tmp_path / f"scan{i}.top") for i in range(4)]
+    read_scan(files[0])
+    one = sum(p.stat().st_size for p in folder.iterdir())
+    monkeypatch.setattr(file_cache, "LIMIT", 2 * one + one // 2)
+    for file in files[1:]:
+        read_scan(file)
+        assert sum(p.stat().st_size for p in folder.iterdir()) <= file_cache.LIMIT
+    assert len(copies(folder)) == 4  # the two copies read last
+    assert_same_scan(read_scan(files[3]), read_scan(files[3]))

@@ -27,7 +27,11 @@ Each is written through a temporary file renamed into place, the ``.json`` last,
 whole once its ``.json`` exists, also with several processes reading the same file at once. A
 copy that does not load or does not match its ``.json`` counts as absent and is written again.
 Only successful reads are kept: a file that is refused is refused again, by its reader. A
-cache folder that cannot be written costs the next read its time, nothing else.
+cache folder that cannot be written costs the next read its time, nothing else. A successful
+read says nothing a copy would have to repeat: roughcontact's readers warn of nothing, and
+SurfaceTopography's readers (and igor2, h5py under them) only log at debug level (how many header
+rows a text reader skipped, how a binary header was parsed), so a read from a copy is as quiet. It
+logs ``read NAME (scan) from its converted copy PATH`` at info level (``roughcontact -v`` shows it).
 
 The folder is bounded: after each write, the copies used least recently are removed until it
 holds at most :data:`LIMIT` bytes (a copy that is used is touched). Delete the folder to clear it.
@@ -145,12 +149,12 @@ class ConvertedCopy:
                 if [list(heights.shape), str(heights.dtype)] != stored["heights"]:
                     return None
             record = decode_info(stored["record"])
-        except (OSError, ValueError, KeyError, TypeError):
+        except (OSError, EOFError, ValueError, KeyError, TypeError):  # EOFError: an empty .npy
             return None
         for file in (heights_file, record_file):  # used now: the last to be pruned
             with contextlib.suppress(OSError):
                 os.utime(file)
-        logger.info("took the %s of %s from its converted copy %s", self.what, self.path.name, record_file)
+        logger.info("read %s (%s) from its converted copy %s", Path(self.given).name, self.what, record_file)
         return record, heights
 
     def store(self, record: Mapping[str, Any], heights: np.ndarray | None = None) -> None:
@@ -179,11 +183,13 @@ class ConvertedCopy:
             logger.debug("no converted copy of %s kept in %s: %s", self.path.name, self.folder, error)
 
 
-def prune(folder: Path, limit: int = LIMIT) -> int:
+def prune(folder: Path, limit: int | None = None) -> int:
     """Remove the copies used least recently until ``folder`` holds at most ``limit`` bytes; return how many.
 
-    A copy's two files go together; files that are not copies (other names) are left alone.
+    ``limit`` defaults to :data:`LIMIT` (read at the call). A copy's two files go together; files
+    that are not copies (other names, the temporary files of writes under way) are left alone.
     """
+    limit = LIMIT if limit is None else limit
     copies: dict[str, list[Path]] = {}
     for file in folder.iterdir():
         if file.suffix in (".npy", ".json") and not file.name.startswith("."):

@@ -388,7 +388,7 @@ def read_scan(
     }
     copy = ConvertedCopy(path, "scan", options, READER_VERSION)
     found = copy.load()
-    if found is not None:
+    if found is not None and {"size", "periodic", "info"} <= found[0].keys():
         record, heights = found
         return Scan(heights, record["size"], record["periodic"], record["info"], path)
     scan = _read_instrument_file(path, **options)
