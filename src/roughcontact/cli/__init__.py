@@ -1,7 +1,7 @@
 """Command line: ``roughcontact inspect | plot | contact | adhesion | friction | presliding | run | ...``.
 
 One module per command group: :mod:`.topography` (``inspect``, ``plot``), :mod:`.study` (``run``,
-``validate``, ``report``, ``models``, ``demo``), :mod:`.contact`, :mod:`.adhesion`,
+``validate``, ``report``, ``models``, ``demo``, ``cite``), :mod:`.contact`, :mod:`.adhesion`,
 :mod:`.friction`, :mod:`.asperity`, :mod:`.presliding` (``presliding``, ``loop-analysis``) and
 :mod:`.indentation` (``nanoindent``). What they share is public in :mod:`.options` (options, a
 command as a study) and :mod:`.output` (running it and showing its results).

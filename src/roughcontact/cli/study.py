@@ -1,4 +1,4 @@
-"""The study commands: ``run``, ``validate``, ``report``, ``models``, ``demo``, and ``plot OUT/``.
+"""The study commands: ``run``, ``validate``, ``report``, ``models``, ``demo``, ``cite``, and ``plot OUT/``.
 
 ``roughcontact run STUDY.toml -o OUT/ [--workers N | --scheduler ADDR] [--resume]`` validates the
 whole study first (every problem reported at once, nothing computed), then runs the cases and
@@ -23,6 +23,7 @@ COMMANDS = {
     "report": "write OUT/report.html: the tables and figures of a study on one offline page",
     "demo": "run the embedded demo study (examples/demo.toml: an AFM scan's statistics, normal contact, "
     "the three papers on small grids) and write its report",
+    "cite": "print the BibTeX of the papers a finished study's models implement, or one model's (--model)",
 }
 """This module's commands and their lines in ``roughcontact --help``."""
 
@@ -169,7 +170,7 @@ HELP_WIDTH = 110
 
 
 def describe_kind(kind) -> list[str]:
-    """Lines describing a study model: its keys (type, default), figures, tables and comparison keys."""
+    """Lines describing a study model: its keys (type, default), figures, tables, compare keys, references."""
     from pydantic_core import PydanticUndefined
 
     from ..study.schema import unit_of
@@ -194,6 +195,8 @@ def describe_kind(kind) -> list[str]:
         lines.append(f"  tables: {', '.join(kind.tables)}")
     if kind.compare is not None:
         lines.append(f"  [analysis.compare] keys: {', '.join(kind.compare.model_fields)}")
+    cited = ", ".join(kind.references) + f" (roughcontact cite --model {kind.name} prints their BibTeX)"
+    lines += textwrap.wrap(cited, HELP_WIDTH, initial_indent="  references: ", subsequent_indent="    ")
     return lines
 
 
@@ -266,8 +269,50 @@ def _demo(args: argparse.Namespace) -> int:
     return status
 
 
+def _provenance_references(folder: Path) -> list[dict]:
+    """Return the references of a study's ``provenance.json``; InputError naming the folder without one."""
+    import json
+
+    path = folder / "provenance.json"
+    if not path.is_file():
+        raise InputError(
+            str(folder),
+            "has no provenance.json: it is not the output folder of a finished study.",
+            "give the folder that 'roughcontact run STUDY.toml -o OUT' (or a command's -o OUT) wrote.",
+        )
+    references = json.loads(path.read_text()).get("references")
+    if not references:
+        raise InputError(
+            str(path),
+            "lists no references (an older roughcontact wrote it).",
+            f"rerun the study into it with --resume: roughcontact run STUDY.toml -o {folder} --resume.",
+        )
+    return references
+
+
+def _cite(args: argparse.Namespace) -> int:
+    from ..references import ROUGHCONTACT, Reference, bibtex, references_of
+
+    if (args.folder is None) == (args.model is None):
+        raise InputError(
+            "cite",
+            "give a study's output folder or --model NAME.",
+            "roughcontact cite OUT/ or roughcontact cite --model normal.",
+        )
+    if args.model is None:
+        references = [Reference.from_dict(entry) for entry in _provenance_references(args.folder)]
+    else:
+        from ..study.kinds import get_kind, kind_names
+
+        if args.model not in kind_names(aliases=True):
+            raise InputError("--model", f"unknown model {args.model!r}.", f"use one of {kind_names()}.")
+        references = [ROUGHCONTACT, *references_of(get_kind(args.model).references)]
+    print(bibtex(references), end="")
+    return 0
+
+
 def add_commands(commands) -> None:
-    """Add ``run``, ``validate``, ``report``, ``models`` and ``demo`` to the subparsers ``commands``."""
+    """Add ``run``, ``validate``, ``report``, ``models``, ``demo`` and ``cite`` to the subparsers."""
     run = new_command(
         commands,
         "run",
@@ -302,3 +347,19 @@ def add_commands(commands) -> None:
         summary = COMMANDS[name]
         description = summary[0].upper() + summary[1:] + "."
         new_command(commands, name, handler, summary, description).add_argument(*flags, **keywords)
+
+    cite = new_command(
+        commands,
+        "cite",
+        _cite,
+        COMMANDS["cite"],
+        "Print as BibTeX the papers and books a finished study's models implement (read from "
+        "OUT/provenance.json) and roughcontact itself; with --model NAME, those of one model. "
+        "CITATION.cff in the repository says how to cite roughcontact.",
+    )
+    cite.add_argument(
+        "folder", type=Path, nargs="?", help="the output folder of 'roughcontact run' or a command's -o"
+    )
+    cite.add_argument(
+        "--model", help="a model instead of a study, e.g. presliding (roughcontact models lists them)"
+    )

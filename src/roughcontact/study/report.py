@@ -13,6 +13,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
+from ..references import Reference
 from ..topography.io import channel_words
 from ..topography.process import LEVELLING
 from ..units import format_si
@@ -190,6 +191,22 @@ def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) 
     return "\n".join(parts)
 
 
+def _references(provenance: dict[str, Any]) -> list[str]:
+    """Return the report's list of the works its models implement (``provenance.json``), DOIs as links."""
+    items = []
+    for entry in provenance.get("references") or []:
+        reference = Reference.from_dict(entry)
+        doi = html.escape(reference.doi or "")
+        link = f' <a href="https://doi.org/{doi}">doi:{doi}</a>' if doi else ""
+        items.append(f"<li>{html.escape(reference.citation())}{link}</li>")
+    if not items:
+        return []
+    intro = (
+        "The works this study's models implement (<code>roughcontact cite OUT/</code> writes their BibTeX):"
+    )
+    return ["<h2>References</h2>", f"<p>{intro}</p><ul>", *items, "</ul>"]
+
+
 def _run_line(provenance: dict[str, Any]) -> str:
     wall, cases = (float(provenance.get(k) or 0.0) for k in ("wall_seconds", "case_seconds"))
     return (
@@ -253,13 +270,16 @@ def write_report(folder: str | Path, *, redraw: bool = True, dpi: int = 150) -> 
     surfaces = [preparation_line(n, p) for n, p in prepared.items()]
     parts.append("<h2>Methods</h2>")
     parts += [f"<p>{html.escape(text)}</p>" for text in methods_paragraph(analyses, provenance, surfaces)]
+    parts += _references(provenance)
     for analysis in analyses:
         parts.append(_analysis_section(folder, analysis, [r for r in rows if r["analysis"] == analysis.name]))
     parts.append("<h2>Provenance</h2>")
     inputs = provenance.get("input_files", {})
     if inputs:
         parts.append(_table([{"file": path, "sha256": digest} for path, digest in inputs.items()]))
-    shown = {k: v for k, v in provenance.items() if k not in ("input_files", "seeds", "materials")}
+    shown = {
+        k: v for k, v in provenance.items() if k not in ("input_files", "seeds", "materials", "references")
+    }
     parts.append(f"<pre>{html.escape(json.dumps(shown, indent=2))}</pre>")
     study_file = folder / "study.toml"
     if study_file.exists():

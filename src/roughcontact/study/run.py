@@ -40,6 +40,7 @@ from typing import Any
 
 from .._files import not_a_folder
 from ..errors import InputError
+from ..references import ROUGHCONTACT, references_of
 from .config import Case, Study
 from .inputs import CaseInputs
 from .kind import CaseParameters, CaseRecord
@@ -528,6 +529,12 @@ def materials_used(study: Study) -> list[dict[str, Any]]:
     return list(rows.values())
 
 
+def references_used(study: Study) -> list[dict[str, Any]]:
+    """Return the works the study's models implement (``Kind.references``), roughcontact first, each once."""
+    keys = [key for analysis in study.analyses for key in analysis.kind.references]
+    return [reference.to_dict() for reference in (ROUGHCONTACT, *references_of(keys))]
+
+
 def dependency_versions() -> dict[str, str]:
     """Return the installed version of every dependency roughcontact declares (for a methods section).
 
@@ -560,6 +567,7 @@ def write_summary_files(study: Study, folder: Path, summary: RunSummary, started
         "platform": platform.platform(),
         "packages": dependency_versions(),
         "materials": materials_used(study),
+        "references": references_used(study),
         "command": sys.argv,
         "study_file": None if study.path is None else str(study.path),
         "study_sha256": hashlib.sha256(study.text.encode()).hexdigest(),

@@ -331,4 +331,15 @@ KIND = Kind(
         "peak_interference",
     ),
     renamed={"surface": "topography", "counter": "counter_body"},
+    references=(
+        "paper002",
+        "greenwood1966",
+        "nayak1971",
+        "mccool1986",
+        "chang1987",
+        "kogut2002",
+        "jackson2005",
+        "etsion2005",
+        "kadin2006",
+    ),
 )

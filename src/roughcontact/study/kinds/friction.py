@@ -1,6 +1,6 @@
 r"""Study kind ``friction``: the Winkler-layer Lennard-Jones friction of paper 000 at one load per case.
 
-Wraps :func:`roughcontact.winkler_lj_model` and its ``solve(load)`` (details and the
+Wraps :func:`roughcontact.winkler_lj.winkler_lj_model` and its ``solve(load)`` (details and the
 derivations in ``docs/winkler_lj.md``). The two topographies (``topography``, e.g. a polysilicon
 scan, and ``counter_topography``, e.g. the AFM tip) are merged into one composite surface z_i facing a rigid
 flat (paper 000, Fig. 1); each pixel is a spring, a cuboid of top area S (the pixel area) and
@@ -335,7 +335,7 @@ def _check_relaxed(relaxed: float, material) -> None:
 def check_inputs(parameters: FrictionParameters, known) -> None:
     """Refuse at validation what the model would: a profile, grids that do not merge, no surface energy.
 
-    See :func:`roughcontact.winkler_lj_model`.
+    See :func:`roughcontact.winkler_lj.winkler_lj_model`.
     """
     from ...winkler_lj import surface_energy_of
 
@@ -357,7 +357,7 @@ def build_model(parameters: FrictionParameters, inputs):
 
     ``inputs`` holds the case's topographies and materials. Raises InputError for a relaxed modulus
     above the surface material's Young's modulus, or any refusal of
-    :func:`~roughcontact.winkler_lj_model`.
+    :func:`~roughcontact.winkler_lj.winkler_lj_model`.
     """
     from ...winkler_lj import winkler_lj_model
     from ...winkler_lj.viscoelastic import standard_linear_solid
@@ -644,4 +644,14 @@ KIND = Kind(
         "counter": "counter_body",
         "load": "normal_force",
     },
+    references=(
+        "paper000",
+        "johnson1985",
+        "greenwood1997",
+        "israelachvili2011",
+        "girifalco1957",
+        "welch1947",
+        "polonsky1999",
+        "rey2017",
+    ),
 )

@@ -394,4 +394,16 @@ KIND = Kind(
     compare=MeasuredCurve,
     headline=("peak_interference", "residual_interference", "peak_contact_area", "max_von_mises_at_peak"),
     renamed={"surface": "topography", "peak_force": "max_force"},
+    references=(
+        "paper002",
+        "polonsky1999",
+        "stanley1997",
+        "liu2000",
+        "almqvist2007",
+        "jacq2002",
+        "frerot2019",
+        "perriot2004",
+        "johnson1985",
+        "frigo2005",
+    ),
 )

@@ -118,4 +118,9 @@ KIND = Kind(
     figures={"loop": figure("presliding.loop_analysis_figure")},
     check=check,
     headline=("stroke", "mu", "energy", "K_L_A", "K_L_B", "K_L_C"),
+    references=(
+        "paper001",
+        "mindlin1953",
+        "johnson1985",
+    ),
 )

@@ -143,4 +143,10 @@ KIND = Kind(
     figures={"indentation": figure("indentation.indentation_figure")},
     check=check,
     headline=("youngs_modulus", "uncorrected_youngs_modulus", "reduced_modulus", "contact_depth"),
+    references=(
+        "paper001",
+        "oliver1992",
+        "tang2003",
+        "feng2002",
+    ),
 )

@@ -167,4 +167,13 @@ KIND = Kind(
         "max_pressure",
     ),
     renamed={"surface": "topography", "counter": "counter_body"},
+    references=(
+        "polonsky1999",
+        "stanley1997",
+        "liu2000",
+        "almqvist2007",
+        "perriot2004",
+        "johnson1985",
+        "frigo2005",
+    ),
 )

@@ -530,4 +530,15 @@ KIND = Kind(
         "locked_in_stick_fraction": "no normal loading steps",
         "locked_in_shear_rms": "no normal loading steps",
     },
+    references=(
+        "paper001",
+        "bazrafshan2019",
+        "cattaneo1938",
+        "mindlin1949",
+        "mindlin1953",
+        "johnson1985",
+        "polonsky1999",
+        "liu2000",
+        "frigo2005",
+    ),
 )

@@ -61,4 +61,10 @@ KIND = Kind(
     figures={"heights": figure("topography.heights_figure"), "psd": figure("topography.psd_figure")},
     headline=("Sq", "Sa", "Rq", "Ra", "rms_slope", "summit_radius"),
     renamed={"surface": "topography"},
+    references=(
+        "paper002",
+        "nayak1971",
+        "mccool1986",
+        "jacobs2017",
+    ),
 )
