@@ -13,7 +13,8 @@ scipy's ``OptimizeResult``:
 * a result a solver produced also has ``converged``, ``iterations`` and ``residual``.
 
 Tables, the study report, the command line's ``--json`` and its printed summaries all derive
-from these, so a new result needs nothing else to be shown everywhere.
+from these, so a new result needs nothing else to be shown everywhere; in a notebook, it shows
+itself by inheriting :class:`roughcontact.display_html.NotebookDisplay`.
 """
 
 from __future__ import annotations

@@ -19,6 +19,7 @@ import re
 from collections.abc import Sequence
 from decimal import Decimal
 from numbers import Real
+from typing import Any
 
 from .errors import UnitError
 
@@ -525,6 +526,54 @@ def format_si(value: float | None, unit: str, *, digits: int = 4, missing: str =
     if text is None:
         text, label = f"{value:.{digits}g}", prefixed_scale(0.0, unit)[1]
     return f"{text} {label}".rstrip()
+
+
+DIGITS = 4
+"""Significant digits of every number shown."""
+
+
+def number(value: Any) -> float | int | None:
+    """Return the value as a number (an int stays one), or None for text, booleans, blanks and NaN."""
+    if isinstance(value, bool) or value is None:
+        return None
+    if isinstance(value, int):
+        return value
+    if isinstance(value, str):
+        text = value.strip()
+        if text.lstrip("+-").isdigit():
+            return int(text)
+        try:
+            value = float(text)
+        except ValueError:
+            return None
+    try:
+        value = float(value)
+    except (TypeError, ValueError):
+        return None
+    return value if math.isfinite(value) else None
+
+
+def blank(value: Any) -> bool:
+    """Tell whether a table shows the value as an empty cell: None, "", NaN (as a number or as text)."""
+    if value is None or (isinstance(value, str) and value.strip().lower() in ("", "nan")):
+        return True
+    return isinstance(value, float) and math.isnan(value)
+
+
+def shown(value: Any, unit: str | None, missing: str = MISSING) -> str:
+    """One value as text with its own SI prefix and unit (``2.81 µm``); labels as they are.
+
+    A missing value (None, NaN, blank) reads ``missing``, not a bare unit. The one rule of a
+    single value, in the commands' summaries and in a result's display in a notebook.
+    """
+    if isinstance(value, list):
+        return ", ".join(shown(v, unit, missing) for v in value)
+    numeric = number(value)
+    if numeric is None:
+        return missing if blank(value) or isinstance(value, float) else str(value)
+    if isinstance(numeric, int) and not unit:
+        return str(numeric)
+    return format_si(numeric, unit, digits=DIGITS) if unit else f"{numeric:.{DIGITS}g}"
 
 
 def common_scale(values: Sequence[float], unit: str, *, digits: int = 4) -> tuple[float, str] | None:

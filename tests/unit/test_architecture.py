@@ -11,8 +11,9 @@ SOURCE = Path(__file__).resolve().parents[2] / "src"
 PACKAGE = "roughcontact"
 
 LAYERS = (
-    {"errors", "units", "checks", "results", "materials", "_json", "_files", "_deprecation", "_text_table",
-     "_backend", "_device", "_gpu", "_fftw_wisdom", "_cache", "_lazy", "_version", "progress", "spread"},
+    {"errors", "units", "checks", "results", "display_html", "materials", "_json", "_files", "_deprecation",
+     "_text_table", "_backend", "_device", "_gpu", "_fftw_wisdom", "_cache", "_lazy", "_version", "progress",
+     "spread", "references"},
     {"topography", "elasticity", "analytic"},
     {"contact", "asperity", "experiment"},
     {"winkler_lj", "friction"},

@@ -442,9 +442,9 @@ def wavy_jkr_pressure(
 
         p(x) = 2 p^* \cos\theta \sqrt{\sin^2\psi - \sin^2\theta}
                - \frac{p_1 \cos\theta}{\sqrt{\sin^2\psi - \sin^2\theta}}, \quad
-        \theta = \frac{\pi x}{\lambda}, \; |x| < a
+        \theta = \frac{\pi x}{\lambda}, \; ``|x|`` < a
 
-    zero outside the contact and -inf at its edges, where p ~ -K_I / sqrt(2 pi (a - |x|)) with
+    zero outside the contact and -inf at its edges, where p ~ -K_I / sqrt(2 pi (a - ``|x|``)) with
     K_I = p_1 sqrt(lambda cot psi) = sqrt(2 E* w).
     """
     a = float(_half_width(contact_half_width, wavelength))

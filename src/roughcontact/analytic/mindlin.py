@@ -44,7 +44,7 @@ R. D. Mindlin and H. Deresiewicz, "Elastic spheres in contact under varying obli
 J. Appl. Mech. 20 (1953) 327-344. doi:10.1115/1.4010702
 
 Seed paper 001, "Evaluation of pre-sliding behavior at a rough interface: modeling and
-experiment", ASME J. Tribol. (2020), eqs. 10-12. doi:10.1115/1.4045900
+experiment", ASME J. Appl. Mech. (2020), eqs. 10-12. doi:10.1115/1.4045900
 """
 
 from __future__ import annotations

@@ -48,6 +48,7 @@ import numpy as np
 from scipy import optimize
 
 from ..checks import positive
+from ..display_html import NotebookDisplay
 from ..errors import InputError
 from . import elastic_plastic as ep
 from .greenwood_williamson import SummitDistribution
@@ -64,7 +65,7 @@ _NEGLIGIBLE = 1e-9  # probability of summits beyond the fits' range that may be 
 
 
 @dataclass(frozen=True)
-class StatisticalLoadUnload:
+class StatisticalLoadUnload(NotebookDisplay):
     """Load-unload curves of a statistical asperity model (SI).
 
     Attributes

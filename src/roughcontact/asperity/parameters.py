@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass
 from typing import ClassVar
 
+from ..display_html import NotebookDisplay
 from ..errors import InputError
 from ..materials import Material, compliance_sum, contact_modulus
 from ..topography.statistics import mccool_parameters
@@ -12,7 +13,7 @@ from . import elastic_plastic as ep
 
 
 @dataclass(frozen=True)
-class AsperityParameters:
+class AsperityParameters(NotebookDisplay):
     """Summit statistics and elastic-plastic scales of a rough surface against a counter-body (SI).
 
     Attributes

@@ -8,6 +8,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from ..display_html import NotebookDisplay
 from ..topography import Topography
 from ..units import format_si
 from .interaction import INTERACTION_FRACTION, MaugisDugdale
@@ -41,7 +42,7 @@ MAP_STATES = ("peak", "pull_off", "end")
 
 
 @dataclass(frozen=True, eq=False)
-class AdhesiveResult:
+class AdhesiveResult(NotebookDisplay):
     """Adhesive contact along an approach programme (SI; per step unless noted).
 
     Attributes

@@ -113,7 +113,7 @@ def solve_frictional(
         touch [m] after each step (a scalar holds it constant). Must stay > 0.
     displacement, force : array_like, shape (n,) or (n, 2)
         Exactly one: the rigid tangential displacement of the flat [m] or the tangential force
-        on the rough body [N] after each step (1D: along x). Under force control |F| must stay
+        on the rough body [N] after each step (1D: along x). Under force control ``|F|`` must stay
         below mu times the normal force (else the contact slides: the message says so).
     counter_body : Material, optional
         The flat (default rigid).

@@ -47,6 +47,7 @@ from typing import ClassVar
 import numpy as np
 
 from .._deprecation import folded, renamed
+from ..display_html import NotebookDisplay
 from ..elasticity.halfspace import ElasticLayer
 from ..elasticity.stress import StressField, subsurface_stress
 from ..errors import InputError
@@ -122,7 +123,7 @@ PLASTICITY = {"surface": SurfacePlasticity, "volume": VolumePlasticity}
 
 
 @dataclass(frozen=True)
-class LoadUnloadResult:
+class LoadUnloadResult(NotebookDisplay):
     """A load-unload path (all SI): the curve, the peak and the residual interference.
 
     Attributes

@@ -166,7 +166,23 @@ def solve_normal(
     device: str | None = None,
     precision: str = "double",
 ) -> NormalContactResult:
-    """Solve the normal contact of ``topography`` against a flat.
+    r"""Solve the normal contact of ``topography`` against a flat.
+
+    The rough surface (heights :math:`h`, initial separation :math:`h_0 = \max h - h`) is pressed
+    by a rigid approach :math:`\delta`; the pressure :math:`p` and the gap :math:`g` satisfy the
+    complementarity conditions of paper 001 eq. 4,
+
+    .. math::
+
+        g = K p + h_0 - \delta, \qquad p \ge 0, \quad g \ge 0, \quad p\, g = 0,
+        \qquad \int p \, \mathrm{d}A = F \ \text{(load control)},
+
+    with :math:`K` the elastic surface compliance: in Fourier space
+    :math:`\hat u(q) = 2 \hat p(q) / (E^* |q|)` for a periodic half-space, Love's influence
+    coefficients on a zero-padded grid for a free one, and
+    :math:`1/E^* = (1 - \nu_1^2)/E_1 + (1 - \nu_2^2)/E_2`. Solved by Polonsky and Keer's
+    constrained conjugate gradients (with ``hardness``: :math:`p \le H`), to the scale-free
+    residual ``tolerance``; theory and validation in ``docs/normal_contact.md``.
 
     Parameters
     ----------

@@ -34,6 +34,7 @@ from ..analytic.mindlin import (
     tangential_force,
 )
 from ..checks import finite_array, positive
+from ..display_html import NotebookDisplay
 from ..errors import InputError
 from ..experiment.friction_loop import LoopAnalysis, analyse_loop
 from ..materials import Material, compliance_sum, contact_modulus, johnson_shear_modulus
@@ -232,7 +233,7 @@ def _start_stick_area(result) -> float:
 
 
 @dataclass(frozen=True)
-class PreslidingResult:
+class PreslidingResult(NotebookDisplay):
     """A rough ball on a flat under a tangential programme, its last loop analysed, against Mindlin.
 
     The result of :func:`presliding` (paper 001's model): the normal contact at F0, the
@@ -593,7 +594,7 @@ def presliding(
         How F0 is applied before the programme (:func:`~roughcontact.contact.tangential.solve_tangential`):
         "auto" is "frictional" for a coupled pair (beta != 0), which locks in shear (Spence 1975).
     loading_steps : int
-        Steps of the frictional normal loading (default 10: enough for |beta|/mu of paper 001's
+        Steps of the frictional normal loading (default 10: enough for ``|beta|``/mu of paper 001's
         pairs; beta/mu near 1 needs 30 or more to resolve Spence's stick zone).
     max_stick_change : float, optional
         Step control (default 0.1): steps are inserted where the stick fraction would change by

@@ -9,6 +9,7 @@ from typing import Any, ClassVar
 import numpy as np
 from scipy import ndimage
 
+from ..display_html import NotebookDisplay
 from ..topography import Topography
 from .trust import area_resolution, contact_shares, one_pixel_patches, patch_resolution, share_warnings
 
@@ -39,7 +40,7 @@ def count_patches(mask: np.ndarray, *, periodic: bool) -> int:
 
 
 @dataclass(frozen=True)
-class NormalContactResult:
+class NormalContactResult(NotebookDisplay):
     """Converged normal contact of a surface against a rigid flat (all SI).
 
     Attributes
@@ -87,6 +88,9 @@ class NormalContactResult:
     tolerance: float
     hardness: float | None = None
     parameters: dict[str, Any] = field(default_factory=dict)
+
+    FIGURE = "contact.plot_pressure"
+    """The figure a notebook shows under the table of scalars (:mod:`roughcontact.display_html`)."""
 
     UNITS: ClassVar[dict[str, str]] = {
         "force": "N",
@@ -207,7 +211,7 @@ class NormalContactResult:
 
         * Elastic contact with a peak pressure above ``slope_pressure * E*``: the half-space
           (Boussinesq) solution assumes small surface slopes; a local pressure of order E* means
-          local slopes of order one (p ~ E* |grad h| / 2 for a wedge), where the linear theory
+          local slopes of order one (p ~ E* ``|grad h|`` / 2 for a wedge), where the linear theory
           and the material's elasticity both fail. The usual remedies are a hardness (plastic cap)
           or a coarser, instrument-limited scan.
         * Full contact (every point touching): the answer no longer depends on the roughness,

@@ -128,7 +128,7 @@ def solve_tangential(
     displacement, force : array_like, shape (n,) or (n, 2)
         Exactly one: the rigid tangential displacement of the flat after each step [m]
         (a 1D path is along x; e.g. :func:`roughcontact.contact.paths.stroke_path`) or the
-        tangential force on the rough body [N] (force control: |F| must stay below mu F_0).
+        tangential force on the rough body [N] (force control: ``|F|`` must stay below mu F_0).
         A periodic surface needs force control: the mean tangential displacement of a periodic
         half-space is undetermined.
     counter_body : Material, optional

@@ -8,6 +8,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from ..display_html import NotebookDisplay
 from ..topography import Topography
 from .paths import reversals
 from .result import NormalContactResult
@@ -69,7 +70,7 @@ class TangentialState:
 
     @property
     def slip(self) -> np.ndarray:
-        """Contact points that slip in this step (|q| = mu p, eq. 3)."""
+        """Contact points that slip in this step (``|q|`` = mu p, eq. 3)."""
         return self.contact & ~self.stick
 
     @property
@@ -89,7 +90,7 @@ class TangentialState:
 
 
 @dataclass(frozen=True)
-class TangentialPathResult:
+class TangentialPathResult(NotebookDisplay):
     """A frictional loading programme (paper 001 Figs. 6, 10-14; combined normal and tangential steps).
 
     Attributes
@@ -182,8 +183,8 @@ class TangentialPathResult:
         """Shear locked in by the frictional normal loading (NaN without one).
 
         ``locked_in_stick_fraction``: stick area over contact area at its last step (Spence's
-        (c/a)^2 for a sphere); ``locked_in_shear_rms``: rms |q| over the contact [Pa];
-        ``locked_in_shear_ratio``: largest |q| / (mu p) inside the stick zone.
+        (c/a)^2 for a sphere); ``locked_in_shear_rms``: rms ``|q|`` over the contact [Pa];
+        ``locked_in_shear_ratio``: largest ``|q|`` / (mu p) inside the stick zone.
         """
         loading = self.loading
         names = ("locked_in_stick_fraction", "locked_in_shear_rms", "locked_in_shear_ratio")

@@ -52,6 +52,7 @@ import numba as nb
 import numpy as np
 
 from .._version import __version__
+from ..display_html import NotebookDisplay
 from ..elasticity import eigenstrain
 from ..elasticity.halfspace import ElasticLayer
 from ..elasticity.stress import StressField, subsurface_stress
@@ -179,7 +180,7 @@ class _Anderson:
 
 
 @dataclass(frozen=True)
-class VolumePlasticResult:
+class VolumePlasticResult(NotebookDisplay):
     """A programme of elastic-plastic contact steps with plasticity in the volume (all SI).
 
     Attributes

@@ -9,7 +9,7 @@ friction force F at constant normal force F0, simulated or measured. The analysi
 2. keeps the last complete loop (the last two complete branches: the converged cycle, paper 001
    sec. 4) and takes the stroke d_s = max - min of its displacement;
 3. finds on each branch the gross-sliding plateau and the friction coefficient
-   mu = mean |F| on the plateaus / F0 ("ratio of the sliding friction force to the normal force",
+   mu = mean ``|F|`` on the plateaus / F0 ("ratio of the sliding friction force to the normal force",
    paper 001 sec. 4);
 4. fits paper 001 eq. 9, F = c1 (1 - (1 - c2 delta)^n), to the pre-sliding part of a branch,
    with delta and F counted from the branch's reversal point, and evaluates
@@ -25,11 +25,11 @@ Plateau level and start (point D)
     The plateau force change is the median of (F - F_r) over the last ``plateau_tail`` fraction
     of the branch's displacement range. The pre-sliding span is its magnitude, S. Point D
     (start of full sliding) is the first sample at which the running median (``window``
-    samples) of |F - F_r| reaches (1 - ``plateau_tolerance``) S; the plateau is every sample
+    samples) of ``|F - F_r|`` reaches (1 - ``plateau_tolerance``) S; the plateau is every sample
     from D to the end of the branch. A branch whose force still rises by more than
     5 % of S (linear trend) over that tail has no plateau (mu is then nan).
 Eq. 9 fit
-    On the samples from the reversal to D, x = |delta - delta_r|, y = |F - F_r| is fitted with
+    On the samples from the reversal to D, x = ``|delta - delta_r|``, y = ``|F - F_r|`` is fitted with
     y = c1 (1 - (1 - c2 x)^n) (``(1 - c2 x)`` clipped at 0, i.e. saturated at c1 beyond 1/c2),
     by :func:`scipy.optimize.curve_fit` started from the Mindlin-Deresiewicz values
     c1 = S, c2 = 1/x_D, n = 3/2. For the Mindlin contact this form is exact: the Masing branch
@@ -39,7 +39,7 @@ Points A, B, C
     branch's pre-sliding span S (= 2 mu F0 for a loop that slides in both directions).
     x = (1 - (1 - f S / c1)^(1/n)) / c2 and K_L from eq. 9 there.
 Energy
-    The area enclosed by the last loop, |closed-path integral of F d(delta)| (trapezoids; the
+    The area enclosed by the last loop, ``|closed-path integral of F d(delta)|`` (trapezoids; the
     shoelace formula closes the path with a straight segment).
 
 All quantities are SI inside (m, N, J, N/m); :func:`read_loop_csv` converts the file's units once.
@@ -47,7 +47,7 @@ All quantities are SI inside (m, N, J, N/m); :func:`read_loop_csv` converts the 
 References
 ----------
 Seed paper 001, "Evaluation of pre-sliding behavior at a rough interface: modeling and experiment",
-ASME J. Tribol. (2020), sec. 4 (stroke, mu) and sec. 5, eq. 9 and Fig. 10 (points A-D).
+ASME J. Appl. Mech. (2020), sec. 4 (stroke, mu) and sec. 5, eq. 9 and Fig. 10 (points A-D).
 doi:10.1115/1.4045900
 
 R. D. Mindlin and H. Deresiewicz, "Elastic spheres in contact under varying oblique forces",
@@ -69,6 +69,7 @@ import numpy as np
 from scipy.optimize import OptimizeWarning, curve_fit
 
 from .._text_table import read_text_table
+from ..display_html import NotebookDisplay
 from ..errors import InputError
 from ..units import quantity
 
@@ -314,7 +315,7 @@ def split_branches(displacement, *, min_excursion: float = 0.05) -> list[tuple[i
 
 
 def loop_energy(displacement, force) -> float:
-    """Area enclosed by a closed loop, |closed-path integral of F d(delta)| [J] (shoelace form)."""
+    """Area enclosed by a closed loop, ``|closed-path integral of F d(delta)|`` [J] (shoelace form)."""
     d = np.asarray(displacement, dtype=float)
     f = np.asarray(force, dtype=float)
     return abs(0.5 * float(np.sum((f + np.roll(f, -1)) * (np.roll(d, -1) - d))))
@@ -348,13 +349,13 @@ class BranchAnalysis:
     reversal_displacement, reversal_force : float
         delta_r [m] and F_r [N] at the start of the branch.
     span : float
-        Pre-sliding force change S = |F_plateau - F_r| [N] (2 mu F0 for a sliding loop).
+        Pre-sliding force change S = ``|F_plateau - F_r|`` [N] (2 mu F0 for a sliding loop).
     plateau_force : float
-        Mean |F| on the plateau [N] (nan without plateau).
+        Mean ``|F|`` on the plateau [N] (nan without plateau).
     sliding_start : int or None
         Sample index of point D (start of full sliding), None without plateau.
     sliding_distance : float
-        |delta_D - delta_r|, the pre-sliding distance [m] (nan without plateau).
+        ``|delta_D - delta_r|``, the pre-sliding distance [m] (nan without plateau).
     c1, c2, n : float
         Eq. 9 parameters [N], [1/m], [-] for the force change vs distance from the reversal.
     fractions : tuple of float
@@ -362,7 +363,7 @@ class BranchAnalysis:
     point_displacement, point_force : ndarray
         delta [m] and F [N] of the points in the record's coordinates.
     point_distance : ndarray
-        |delta - delta_r| at the points [m].
+        ``|delta - delta_r|`` at the points [m].
     point_stiffness : ndarray
         K_L at the points from eq. 9 [N/m].
     """
@@ -395,7 +396,7 @@ _PLATEAU_MAX_RISE = 0.05
 
 
 @dataclass(frozen=True)
-class LoopAnalysis:
+class LoopAnalysis(NotebookDisplay):
     """Result of :func:`analyse_loop` (SI units).
 
     Attributes
@@ -403,7 +404,7 @@ class LoopAnalysis:
     stroke : float
         d_s = max - min displacement of the last loop [m].
     mu : float
-        Mean |F| on the gross-sliding plateaus of the last loop / F0 [-] (nan if none slides).
+        Mean ``|F|`` on the gross-sliding plateaus of the last loop / F0 [-] (nan if none slides).
     normal_force : float
         F0 [N].
     energy : float
@@ -546,7 +547,7 @@ def _analyse_branch(
     plateau_tolerance: float,
     plateau_tail: float,
 ) -> tuple[BranchAnalysis, np.ndarray]:
-    """Analyse one branch; returns the analysis and the plateau |F| samples."""
+    """Analyse one branch; returns the analysis and the plateau ``|F|`` samples."""
     direction = 1 if d[stop] > d[start] else -1
     lo = max(0, start - window + 1)
     f_r = float(np.median(f[lo : start + 1]))

@@ -147,6 +147,19 @@ def figure_caption(function: Callable[..., Any]) -> str:
     return getattr(function, "caption", "")
 
 
+def plotting_function(name: str) -> Callable[..., Any]:
+    """Return the function ``"module.function"`` of :mod:`roughcontact.plotting`, importing its module.
+
+    How a study kind names its figures (``"adhesion.force_approach_figure"``) and a result the
+    figure a notebook shows under it (``"contact.plot_pressure"``): matplotlib loads here, when
+    the figure is drawn.
+    """
+    from importlib import import_module
+
+    module, function = name.rsplit(".", 1)
+    return getattr(import_module(f".{module}", __package__), function)
+
+
 def evenly_chosen(items: Sequence, count: int) -> list:
     """At most ``count`` items, evenly spread over ``items`` (first and last included)."""
     if len(items) <= count:

@@ -17,6 +17,7 @@ summary. The commands only parse options and print what it says.
 
 from __future__ import annotations
 
+import html
 import json
 import shutil
 import tomllib
@@ -93,6 +94,11 @@ class StudyAnswer:
                 lines += table_lines(rows, indent="    ", missing=analysis.kind.missing)
             lines += [f"  {line}" for line in realisation_lines(analysis)]
         return lines
+
+    def _repr_html_(self) -> str:
+        where = "in memory" if self.folder is None else f"in {self.folder}"
+        head = f"<p><strong>{html.escape(self.study.name)}</strong> ({html.escape(where)})</p>"
+        return f"<div>{head}{''.join(analysis._repr_html_() for analysis in self.analyses)}</div>"
 
     def document(self) -> dict[str, Any]:
         """Return the answer as one JSON-ready document (``--json``): parameters, scalars, tables."""

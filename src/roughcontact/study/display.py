@@ -12,7 +12,8 @@ number between 1 and 1000, never a prefix together with an exponent.
 * A column spanning too many decades for that (a numerical zero, ``8e-22 J``, beside ``29 aJ``)
   has no unit in its header: each cell is written with its own prefix and unit
   (:func:`roughcontact.units.format_si`).
-* A single value (a summary line, a cell of a quantity table) takes its own prefix.
+* A single value (a summary line, a cell of a quantity table) takes its own prefix
+  (:func:`roughcontact.units.shown`, also a result's display in a notebook).
 * A missing value (None, NaN, blank) of a numeric column reads ``none`` (:data:`MISSING`), with
   the reason where the analysis gives one (``none (no jump on loading)``), never a bare unit;
   a text column leaves it empty.
@@ -24,14 +25,10 @@ such a table (:data:`PER_ROW_UNIT`) are shown in that row's unit, with the unit 
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from ..units import MISSING, common_scale, format_si
-
-DIGITS = 4
-"""Significant digits of every number shown."""
+from ..units import DIGITS, MISSING, blank, common_scale, format_si, number, shown
 
 PER_ROW_UNIT = ("paper", "this_case", "printed_inputs", "ours")
 """Column-name prefixes of a quantity table whose columns take their row's ``unit``."""
@@ -55,34 +52,6 @@ def split_header(text: str) -> tuple[str, str | None]:
         name, _, unit = text[:-1].rpartition(" [")
         return name, unit or None
     return text, None
-
-
-def number(value: Any) -> float | int | None:
-    """Return the value as a number (an int stays one), or None for text, booleans, blanks and NaN."""
-    if isinstance(value, bool) or value is None:
-        return None
-    if isinstance(value, int):
-        return value
-    if isinstance(value, str):
-        text = value.strip()
-        if text.lstrip("+-").isdigit():
-            return int(text)
-        try:
-            value = float(text)
-        except ValueError:
-            return None
-    try:
-        value = float(value)
-    except (TypeError, ValueError):
-        return None
-    return value if math.isfinite(value) else None
-
-
-def blank(value: Any) -> bool:
-    """Tell whether a table shows the value as an empty cell: None, "", NaN (as a number or as text)."""
-    if value is None or (isinstance(value, str) and value.strip().lower() in ("", "nan")):
-        return True
-    return isinstance(value, float) and math.isnan(value)
 
 
 def _text(value: float | int | None, scale: float = 1.0, missing: str = MISSING) -> str:
@@ -137,21 +106,6 @@ def column_cells(values: Sequence[Any], unit: str | None, missing: str = MISSING
     is shown as written (label "") and blanks are empty.
     """
     return scaled(values, unit, missing) or ("", ["" if blank(v) else str(v) for v in values])
-
-
-def shown(value: Any, unit: str | None, missing: str = MISSING) -> str:
-    """One value as text with its own SI prefix and unit (``2.81 µm``); labels as they are.
-
-    A missing value (None, NaN, blank) reads ``missing``, not a bare unit.
-    """
-    if isinstance(value, list):
-        return ", ".join(shown(v, unit, missing) for v in value)
-    numeric = number(value)
-    if numeric is None:
-        return missing if blank(value) or isinstance(value, float) else str(value)
-    if isinstance(numeric, int) and not unit:
-        return str(numeric)
-    return format_si(numeric, unit, digits=DIGITS) if unit else f"{numeric:.{DIGITS}g}"
 
 
 def columns(

@@ -24,7 +24,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
-from ..plotting.cases import axis_words, figure_caption
+from ..plotting.cases import axis_words, figure_caption, plotting_function
 from ..units import format_si
 from .schema import Strict
 
@@ -204,10 +204,7 @@ class figure:  # noqa: N801 - used like a function in the kinds' tables of figur
     @property
     def draws(self) -> Callable[..., Any]:
         """The plotting function."""
-        from importlib import import_module
-
-        module, function = self.name.rsplit(".", 1)
-        return getattr(import_module(f"roughcontact.plotting.{module}"), function)
+        return plotting_function(self.name)
 
     @property
     def caption(self) -> str:
@@ -258,6 +255,9 @@ class Kind:
     missing : mapping
         Scalar name -> why a case may have no value of it (``"no jump on loading"``): the tables
         and summaries show such a value as ``none (no jump on loading)`` rather than a bare unit.
+    references : tuple of str
+        Keys of :data:`roughcontact.references.REFERENCES`: the papers and books the model
+        implements, listed in a study's ``provenance.json`` and printed by ``roughcontact cite``.
     """
 
     name: str
@@ -273,3 +273,4 @@ class Kind:
     headline: tuple[str, ...] = ()
     renamed: Mapping[str, str] = field(default_factory=dict)
     missing: Mapping[str, str] = field(default_factory=dict)
+    references: tuple[str, ...] = ()

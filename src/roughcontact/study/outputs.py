@@ -13,13 +13,17 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from ..display_html import html_table
 from ..errors import InputError
-from .display import header
+from .display import columns, header
 from .kind import CaseRecord, FigureContext, Kind
 from .schema import STORED
 from .store import read_record, replacing, write_table
 
 log = logging.getLogger(__name__)
+
+CASES_SHOWN = 50
+"""Cases a notebook shows of an analysis (its table says how many more there are)."""
 
 
 @dataclass(frozen=True)
@@ -45,6 +49,13 @@ class StoredAnalysis:
     def finished(self) -> list[CaseRecord]:
         """Records of the cases that finished."""
         return [r for r in self.records if r is not None and r.done]
+
+    def _repr_html_(self) -> str:
+        rows = case_rows(self)
+        titles, cells = columns(rows[:CASES_SHOWN], missing=self.kind.missing)
+        table = html_table(titles, cells, title=self.name, caption=f"({self.kind.name}): {self.summary}")
+        more = len(rows) - CASES_SHOWN
+        return table + (f"<p>… {more} more cases</p>" if more > 0 else "")
 
 
 def context(analysis: StoredAnalysis, analyses: list[StoredAnalysis]) -> FigureContext:
@@ -111,6 +122,21 @@ def axis_columns(record: CaseRecord, units: dict[str, str]) -> dict[str, Any]:
         for axis, value in (record.data.get("axes_si") or {}).items()
         if axis not in ("sample", "replicate")
     }
+
+
+def case_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
+    """Return one row per case of an analysis as a notebook shows it: :func:`result_rows` less bookkeeping.
+
+    Its analysis, model and time are left out, so is the replicate where none is repeated and the
+    status where every case is done.
+    """
+    rows = result_rows([analysis])
+    dropped = {"analysis", "model", "seconds"}
+    if not any(row.get("replicate") for row in rows):
+        dropped.add("replicate")
+    if all(row["status"] == "done" for row in rows):
+        dropped.add("status")
+    return [{key: value for key, value in row.items() if key not in dropped} for row in rows]
 
 
 def result_rows(analyses: list[StoredAnalysis]) -> list[dict[str, Any]]:

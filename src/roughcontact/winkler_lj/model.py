@@ -149,7 +149,7 @@ def work_of_adhesion(
 
 @dataclass(frozen=True, eq=False)
 class WinklerLJModel:
-    """A prepared surface and its constants; :meth:`solve` gives the friction at a load.
+    """A prepared surface and its constants; :meth:`~WinklerLJModel.solve` gives the friction at a load.
 
     Build it with :func:`winkler_lj_model`. The heights are sorted once, so repeated solves
     (load sweeps, crossover search) cost one pass over the adhesive springs per residual

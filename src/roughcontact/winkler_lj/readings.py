@@ -94,7 +94,7 @@ class Readings:
         Height in eq. 17: the same cuboid height as in eq. 15, or 1/d as printed.
     mechanical_energy : {"two_stage", "eq16_signed"}
         Energy to break a mechanical contact held at l_im < epsilon: the text's two stages,
-        |work from l_im to epsilon| + dgamma = 2 dgamma - e(l_im), or eq. 16 as printed,
+        ``|work from l_im to epsilon|`` + dgamma = 2 dgamma - e(l_im), or eq. 16 as printed,
         e(l_im), which turns negative above a stress of 16 dgamma / epsilon (such springs then
         add no friction and are counted in the result).
     shear_poisson : {"geometric", "surface", "counter"}

@@ -9,11 +9,12 @@ import numpy as np
 
 from ..contact.adhesive_result import AdhesiveResult
 from ..contact.trust import contact_shares, share_warnings
+from ..display_html import NotebookDisplay
 from ..topography import Topography
 
 
 @dataclass(frozen=True, eq=False)
-class WinklerLJResult:
+class WinklerLJResult(NotebookDisplay):
     """Friction of the Winkler-Lennard-Jones model at one normal load (SI).
 
     Attributes
@@ -139,7 +140,7 @@ class WinklerLJResult:
         With ``gap_model="bem"`` also ``gap_model`` (the gap field the friction sums used; the
         attribute names it in either case), ``bem_force`` (the boundary-element solution's normal
         force, equal to ``normal_force`` within :data:`BEM_LOAD_RTOL`) and ``bem_load_error``
-        (|bem_force - N| / N).
+        (``|bem_force - N|`` / N).
         """
         extra = {}
         if self.bem is not None:
@@ -209,7 +210,7 @@ class WinklerLJResult:
 
 
 @dataclass(frozen=True, eq=False)
-class FrictionSweep:
+class FrictionSweep(NotebookDisplay):
     """Friction of the model over a list of loads (arrays of one value per load, SI)."""
 
     normal_force: np.ndarray
@@ -221,6 +222,9 @@ class FrictionSweep:
     mechanical_springs: np.ndarray
     adhesive_springs: np.ndarray
     bonded_springs: np.ndarray
+
+    FIGURE = "friction.plot_friction_vs_load"
+    """The figure a notebook shows under the table of scalars (:mod:`roughcontact.display_html`)."""
 
     UNITS: ClassVar[dict[str, str]] = {
         "normal_force_min": "N",
@@ -265,7 +269,7 @@ class FrictionSweep:
 
 
 @dataclass(frozen=True, eq=False)
-class WinklerNormalCurve:
+class WinklerNormalCurve(NotebookDisplay):
     """Normal force of the Winkler-Lennard-Jones model against the flat's approach (SI, per approach).
 
     The approach is counted as :func:`roughcontact.contact.solve_adhesive` counts it: from the first

@@ -174,7 +174,7 @@ def write_indentation_csv(
     curve : IndentationCurve
         The record (SI); its time column is written when it has one.
     comments : sequence of str
-        Lines written first, each after ``# ``.
+        Lines written first, each after ``#`` and a space.
     depth_unit, load_unit, time_unit : str
         Units of the columns, written in the header.
     digits : int

@@ -24,7 +24,7 @@ are in :mod:`.fits`.
 
 Choices where the paper is silent or wrong (see ``docs/nanoindentation.md``):
 
-* ``rate_sign="magnitude"`` (default) uses |F_dot| in eq. 5: creep makes the apparent
+* ``rate_sign="magnitude"`` (default) uses ``|F_dot|`` in eq. 5: creep makes the apparent
   stiffness too high, and the correction must lower it. The paper prints the signed unloading
   rate; with F_dot < 0 that raises the stiffness instead. ``rate_sign="printed"`` keeps that
   literal form for reproducing it.
@@ -59,6 +59,7 @@ from typing import ClassVar
 import numpy as np
 
 from ...checks import poissons_ratio_checked, positive
+from ...display_html import NotebookDisplay
 from ...errors import InputError
 from ...materials import Material, contact_modulus, get_material
 from .curve import IndentationCurve, Segments, detect_segments
@@ -71,7 +72,7 @@ BERKOVICH_AREA_COEFFICIENT = 24.5
 """Ideal Berkovich area function A_c = 24.5 d_c^2 (paper 001 does not give its calibrated one)."""
 
 RATE_SIGNS = ("magnitude", "printed")
-"""Readings of eq. 5's unloading rate (``rate_sign`` of :func:`oliver_pharr`): |F_dot| or signed F_dot."""
+"""Readings of eq. 5's unloading rate (``rate_sign`` of :func:`oliver_pharr`): ``|F_dot|`` or signed F_dot."""
 
 
 def berkovich_area(contact_depth: float) -> float:
@@ -91,7 +92,7 @@ def berkovich_area(contact_depth: float) -> float:
 
 
 @dataclass(frozen=True)
-class IndentationResult:
+class IndentationResult(NotebookDisplay):
     """Oliver-Pharr analysis with the viscous correction (paper 001 eqs. 5-8), SI units.
 
     Attributes
@@ -155,6 +156,9 @@ class IndentationResult:
     segments: Segments
     curve: IndentationCurve
     options: dict
+
+    FIGURE = "indentation.plot_indentation"
+    """The figure a notebook shows under the table of scalars (:mod:`roughcontact.display_html`)."""
 
     UNITS: ClassVar[dict[str, str]] = {
         "stiffness": "N/m",
@@ -341,7 +345,7 @@ def oliver_pharr(
     fit_range : (float, float)
         Fractions of F_max between which the unloading power law is fitted (default 20-95 %).
     rate_sign : {"magnitude", "printed"}
-        ``"magnitude"`` (default): 1/S_e = 1/S + d_dot/|F_dot|, the correct reading that lowers
+        ``"magnitude"`` (default): 1/S_e = 1/S + d_dot/``|F_dot|``, the correct reading that lowers
         the stiffness when the sample creeps. ``"printed"``: the paper's literal d_dot/F_dot with
         the signed (negative) unloading rate, which raises it instead; for reproduction only.
     creep_fit : {"tang_ngan", "linear", "none"}

@@ -11,7 +11,7 @@ into the given modulus:
   :math:`F = \alpha (d_e - d_f)^m`, whose slope at F_max is the S_e of the chosen modulus,
   while the creep carries on at the hold law's rate scaled by F / F_max, so that at the onset
   of unloading it runs at the end-of-hold rate: Tang and Ngan's (2003) assumption, under which
-  eq. 5 with |F_dot| recovers S_e exactly.
+  eq. 5 with ``|F_dot|`` recovers S_e exactly.
 
 Paper 001's protocol (10 mN, 20 mN/min loading and unloading, 60 s hold) is the default;
 ``examples/paper001_indentation.py`` writes the example curve of its HDPE with it.
@@ -67,7 +67,7 @@ def synthetic_indentation_curve(
       F = alpha (d_e - d_f)^m whose slope at F_max is the S_e that eqs. 6-8 turn into
       ``youngs_modulus``; the creep carries on, at the hold law's rate scaled by F / F_max (a
       viscous flow driven by the load), so its rate at the onset of unloading is the end-of-hold
-      rate: Tang and Ngan's assumption, under which eq. 5 with |F_dot| recovers S_e.
+      rate: Tang and Ngan's assumption, under which eq. 5 with ``|F_dot|`` recovers S_e.
 
     The contact depth comes from the hardness, A_c(d_c) = F_max / H; d_max = d_c + eps F_max / S_e.
 
@@ -82,7 +82,7 @@ def synthetic_indentation_curve(
     max_force : float
         F_max [N].
     loading_rate, unloading_rate : float
-        |dF/dt| [N/s] (paper 001: 20 mN/min).
+        ``|dF/dt|`` [N/s] (paper 001: 20 mN/min).
     hold_time : float
         [s] (paper 001: 60 s).
     creep_rate : float
