@@ -14,6 +14,7 @@ import sys
 import types
 from collections.abc import Callable, Mapping
 from importlib import import_module
+from importlib.util import find_spec
 
 
 class _Package(types.ModuleType):
@@ -52,7 +53,8 @@ def lazy_names(package: str, homes: Mapping[str, str]) -> tuple[Callable, Callab
     -------
     __getattr__, __dir__
         To be bound to those names in the package; a loaded name is kept in the package's
-        namespace, so ``__getattr__`` runs once per name.
+        namespace, so ``__getattr__`` runs once per name. A submodule is an attribute as well,
+        imported on first use (``rc.topography.level``), as after ``import roughcontact.topography``.
     """
     module = sys.modules[package]
     module.__class__ = _Package
@@ -61,6 +63,8 @@ def lazy_names(package: str, homes: Mapping[str, str]) -> tuple[Callable, Callab
 
     def __getattr__(name: str):
         if name not in homes:
+            if not name.startswith("_") and find_spec(f"{package}.{name}") is not None:
+                return import_module(f"{package}.{name}")  # a subpackage or module: rc.topography
             raise AttributeError(f"module {package!r} has no attribute {name!r}")
         home = import_module(homes[name], package)
         value = getattr(home, name) if hasattr(home, name) else import_module(f"{home.__name__}.{name}")

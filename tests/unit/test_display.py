@@ -158,3 +158,18 @@ def test_specks_amid_undefined_points_do_not_set_a_height_scale():
     low, high = ax.collections[0].get_clim()
     assert -5 < low < 0 < high < 5  # nm: set by the real surface, not by the -70 um specks
     assert "30 specks" in ax.get_title()
+
+
+def test_a_height_map_is_drawn_about_its_mean_also_far_from_zero():
+    """An unlevelled scan (120 nm above zero, as top-1.top reads) gets the colour scale of its relief."""
+    from roughcontact.plotting.topography import plot_heights
+    from roughcontact.topography import Topography
+
+    rng = np.random.default_rng(2)
+    relief = rng.normal(0.0, 1e-9, (40, 40))
+    limits = []
+    for offset in (0.0, 120e-9):
+        fig, ax = plot_heights(Topography(relief + offset, 1e-6))
+        limits.append(ax.collections[0].get_clim())
+    np.testing.assert_allclose(limits[1], limits[0], rtol=1e-6)
+    assert limits[0][0] < 0 < limits[0][1]

@@ -40,3 +40,21 @@ def test_contact_maps_and_curves_are_labelled(tmp_path):
     fig, ax = plot_von_mises(stress, 0)
     assert "von Mises" in ax.get_title()
     assert np.isfinite(stress.von_mises()).all()
+
+
+def test_a_single_spike_does_not_set_the_pressure_colour_scale():
+    from roughcontact.plotting import plot_pressure
+    from roughcontact.plotting.layout import colour_scale
+
+    surface = _ball()
+    spiky = surface.heights.copy()
+    spiky[5, 5] = spiky.max() + 20e-9  # one point 20 nm above the apex, away from it
+    result = solve_normal(type(surface)(spiky, surface.size), 1e9, force=1e-3)
+    fig, ax = plot_pressure(result)
+    mesh = ax.collections[0]
+    scale = colour_scale(result.pressure, from_zero=True)
+    factor, _ = scale.prefixed("Pa")
+    assert result.pressure[5, 5] == result.pressure.max() > 2 * scale.high  # the spike's load
+    assert mesh.get_clim()[1] * factor == scale.high  # the top: the 99.5th percentile of nonzero
+    assert "99.5th pct." in fig.axes[-1].get_ylabel()
+    assert np.ma.is_masked(mesh.get_array())  # no contact: masked, drawn grey

@@ -16,23 +16,23 @@ from .layout import axes_for, legend
 from .study import map_length_scale
 
 
-def _map(ax: Axes, result, values: np.ndarray, label: str, cmap: str):
-    fig = ax.figure
-    topography = result.topography
-    size_scale, size_label = prefixed_scale(max(topography.size), "m")
-    x, y = (c / size_scale for c in topography.coordinates())
-    image = ax.pcolormesh(x, y, values.T, cmap=cmap, shading="auto", rasterized=True)
-    ax.set_aspect("equal")
-    ax.set_xlabel(f"x ({size_label})")
-    ax.set_ylabel(f"y ({size_label})")
-    fig.colorbar(image, ax=ax, label=label)
+def _field_map(ax: Axes, result, name: str, unit: str, cmap: str, *, empty: float | None):
+    """Draw a result's field on the colour scale of the study figures, ``empty`` in grey.
+
+    The scale runs from 0 to the 99.5th percentile of the nonzero values, so that no single spike
+    sets it; the colour bar says so.
+    """
+    from .layout import colour_scale
+    from .study import map_axes
+
+    field = result.to_xarray()[name]
+    map_axes(ax, field, name, unit, cmap=cmap, scale=colour_scale(field, from_zero=True), empty=empty)
 
 
 def plot_pressure(result, ax: Axes | None = None, *, cmap: str = "magma"):
-    """Draw the contact pressure map of a 2D NormalContactResult; returns ``(fig, ax)``."""
+    """Draw the contact pressure map of a 2D NormalContactResult (grey: no contact); returns ``(fig, ax)``."""
     fig, ax = axes_for(ax)
-    scale, unit = prefixed_scale(float(result.pressure.max()) or 1.0, "Pa")
-    _map(ax, result, result.pressure / scale, f"pressure ({unit})", cmap)
+    _field_map(ax, result, "pressure", "Pa", cmap, empty=0.0)
     ax.set_title(f"contact pressure, {100 * result.contact_fraction:.2g} % in contact")
     return fig, ax
 
@@ -40,8 +40,7 @@ def plot_pressure(result, ax: Axes | None = None, *, cmap: str = "magma"):
 def plot_gap(result, ax: Axes | None = None, *, cmap: str = "viridis"):
     """Draw the gap map of a 2D NormalContactResult (contact where the gap is zero); returns ``(fig, ax)``."""
     fig, ax = axes_for(ax)
-    scale, unit = prefixed_scale(float(np.max(result.gap)) or 1e-9, "m")
-    _map(ax, result, result.gap / scale, f"gap ({unit})", cmap)
+    _field_map(ax, result, "gap", "m", cmap, empty=None)
     ax.set_title(f"gap, mean {format_si(result.mean_gap, 'm', digits=3)}")
     return fig, ax
 

@@ -63,11 +63,10 @@ def plot_heights(
     if undefined is not None:
         heights[undefined] = np.nan
         specks = find_specks(undefined)
+    heights -= np.nanmean(heights if specks is None else np.where(specks, np.nan, heights))
     surface = heights if specks is None else np.where(specks, np.nan, heights)  # what sets the scale
-    mean = np.nanmean(surface)
-    heights -= mean
     size_scale, size_label = prefixed_scale(max(topography.size), "m")
-    scale = colour_scale(surface - mean, percentiles=percentiles)
+    scale = colour_scale(surface, percentiles=percentiles)
     height_scale, height_label = scale.prefixed("m")
     coords = [c / size_scale for c in topography.coordinates()]
     if topography.dim == 1:
