@@ -26,14 +26,17 @@ Paper typos that concern moduli are documented beside the functions and in ``doc
 
 References
 ----------
-.. [J85] K. L. Johnson, *Contact Mechanics*, Cambridge University Press, 1985.
-   doi:10.1017/CBO9781139171731
-.. [P000] "Simulation model for frictional contact of two elastic surfaces in micro/nanoscale and
-   its validation" (seed paper 000; DOI not given in the seed text).
-.. [P001] "Evaluation of pre-sliding behavior at a rough interface: modeling and experiment",
-   ASME J. Tribol. (2020). doi:10.1115/1.4045900
-.. [P002] "Contact stress analysis of lightly compressed thin films: modeling and experimentation"
-   (seed paper 002; DOI not given in the seed text).
+Johnson, K. L. (1985). *Contact Mechanics*. Cambridge University Press.
+doi:10.1017/CBO9781139171731
+
+Seed paper 000: "Simulation model for frictional contact of two elastic surfaces in micro/nanoscale
+and its validation" (DOI not given in the seed text).
+
+Seed paper 001: "Evaluation of pre-sliding behavior at a rough interface: modeling and experiment",
+ASME J. Appl. Mech. (2020). doi:10.1115/1.4045900
+
+Seed paper 002: "Contact stress analysis of lightly compressed thin films: modeling and
+experimentation" (DOI not given in the seed text).
 """
 
 from __future__ import annotations

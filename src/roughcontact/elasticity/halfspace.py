@@ -52,7 +52,7 @@ class ElasticLayer:
             )
 
     def factor(self, q: np.ndarray) -> np.ndarray:
-        """F(|q| t): the layer's compliance relative to a half-space of the layer's material."""
+        """F(``|q|`` t): the layer's compliance relative to a half-space of the layer's material."""
         m = self.material
         if isinstance(self.base, str):
             return kernels.layer_on_rigid_base_factor(q * self.thickness, m.poissons_ratio, base=self.base)
@@ -363,7 +363,7 @@ class SurfaceCompliance:
         The preconditioner M is the Fourier inverse of the operator taken as periodic on the
         window's own grid: for a periodic grid the exact inverse of K; for a free boundary an
         approximation that differs from the inverse of the zero-padded operator near the window's
-        edges only (|q| is a local operator: its kernel decays as 1/r^3), at a quarter of the
+        edges only (``|q|`` is a local operator: its kernel decays as 1/r^3), at a quarter of the
         transform size. Measured against the padded inverse: the same iteration counts within
         one or two on free Hertz and rough-ball cases, 256^2 to 1024^2.
         """

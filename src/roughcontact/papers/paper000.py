@@ -22,6 +22,7 @@ import numpy as np
 from .._deprecation import renamed
 from ..contact.adhesive import solve_adhesive
 from ..contact.interaction import LennardJones
+from ..display_html import NotebookDisplay
 from ..materials import Material, get_material
 from ..spread import realisation_seed
 from ..topography import Topography
@@ -120,7 +121,7 @@ def adhesion_keys(given: Mapping[str, Any] | None = None) -> dict[str, Any]:
 def paper000_model_options(
     *, surface_energy: float = SURFACE_ENERGY, readings: Readings | None = None
 ) -> dict:
-    """Return the keyword arguments of :func:`~roughcontact.winkler_lj_model` for paper 000.
+    """Return the keyword arguments of :func:`~roughcontact.winkler_lj.winkler_lj_model` for paper 000.
 
     Parameters
     ----------
@@ -152,7 +153,7 @@ def paper000_model(
 ):
     """Return paper 000's Winkler-Lennard-Jones model of ``scan`` (polysilicon) against ``tip`` (SiO2).
 
-    :func:`~roughcontact.winkler_lj_model` with the materials of sec. 3 and
+    :func:`~roughcontact.winkler_lj.winkler_lj_model` with the materials of sec. 3 and
     :func:`paper000_model_options`; ``model.solve(NORMAL_FORCE)`` is the paper's load.
     """
     return winkler_lj_model(
@@ -278,7 +279,7 @@ def paper000_simulation(
 
 
 @dataclass(frozen=True, eq=False)
-class WinklerBesideBEM:
+class WinklerBesideBEM(NotebookDisplay):
     """Paper 000's Winkler-Lennard-Jones model beside the adhesive BEM on one surface (SI).
 
     Both are evaluated over the same approach programme, counted from the first touch of the
@@ -377,7 +378,7 @@ def winkler_beside_bem(
     """Run paper 000's Winkler-Lennard-Jones model and the adhesive BEM on one surface and programme.
 
     The Winkler model is built as the friction model builds it
-    (:func:`~roughcontact.winkler_lj_model`: composite surface, E of eq. 1, dgamma from
+    (:func:`~roughcontact.winkler_lj.winkler_lj_model`: composite surface, E of eq. 1, dgamma from
     the surface energies by ``readings.work_of_adhesion``); the BEM solves that composite surface
     on an elastic half-space of contact modulus E with ``LennardJones(dgamma, epsilon)``, the law
     of eq. 7 with the gap counted from epsilon (:func:`~roughcontact.contact.solve_adhesive`).
@@ -386,7 +387,7 @@ def winkler_beside_bem(
     ----------
     topography, material, counter_body, counter_topography, layer_thickness, epsilon,
     surface_energy, counter_surface_energy, readings, resample :
-        As :func:`~roughcontact.winkler_lj_model` (defaults: paper 000's 50 nm, 2 nm).
+        As :func:`~roughcontact.winkler_lj.winkler_lj_model` (defaults: paper 000's 50 nm, 2 nm).
     approach : sequence of float
         The flat's approach [m] from the first touch, e.g. loading then unloading
         ``[-4e-9, ..., 4e-9, ..., -4e-9]``; the BEM continues the last stroke to detachment.

@@ -88,7 +88,7 @@ def _surfacetopography_version() -> str:
 
 
 class ConvertedCopy:
-    """The converted copy of one file: what a reading made of it, to :meth:`load` or :meth:`store`.
+    """The converted copy of one file: what a reading made of it, to load or to store.
 
     Parameters
     ----------

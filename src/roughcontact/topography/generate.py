@@ -23,10 +23,10 @@ the c_q in one of two ``modes`` (:data:`MODES`):
     normalised on the lattice of all wavevectors in the band, not on the grid. The surface is then
     one continuum field whatever the grid: two grids of the same size, seed and band have equal
     coefficients in their shared modes (to round-off), and a coarse grid is a fine one low-passed
-    and sampled. The Nyquist modes (|k| = n / 2 along an axis of even n) are left out, so that a
+    and sampled. The Nyquist modes (``|k|`` = n / 2 along an axis of even n) are left out, so that a
     grid holds each of its modes whole. The band must end at a given wavelength (``short_cutoff``).
 
-Both keep the Hermitian symmetry (c_-q = conj(c_q)), so the heights are real, periodic with
+Both keep the Hermitian symmetry (``c_-q = conj(c_q)``), so the heights are real, periodic with
 period ``size``, of zero mean, and reproducible for a given ``seed``. :func:`matched_moments`
 solves the band of a self-affine PSD for given spectral moments (paper 002 eqs. 1-3).
 
@@ -179,7 +179,7 @@ def _flat_band(field: str) -> InputError:
 
 
 def _wavevector_magnitude(shape: tuple[int, ...], size: tuple[float, ...]) -> np.ndarray:
-    """Return |q| [rad/m] on the real-FFT grid (last axis halved)."""
+    """Return ``|q|`` [rad/m] on the real-FFT grid (last axis halved)."""
     axes = [2.0 * np.pi * fft.fftfreq(n, d=s / n) for n, s in zip(shape[:-1], size[:-1], strict=True)]
     axes.append(2.0 * np.pi * fft.rfftfreq(shape[-1], d=size[-1] / shape[-1]))
     grids = np.meshgrid(*axes, indexing="ij")
@@ -194,12 +194,12 @@ def _integer_wavevectors(shape: tuple[int, ...]) -> list[np.ndarray]:
 
 
 def _lattice_magnitude(wavevectors: list[np.ndarray], size: tuple[float, ...]) -> np.ndarray:
-    """Return |q| = 2 pi |(k_x / L_x, k_y / L_y)| [rad/m], the same float for the same k on every grid."""
+    """Return ``|q|`` = 2 pi |(k_x / L_x, k_y / L_y)| [rad/m], the same float for the same k on every grid."""
     return 2.0 * np.pi * np.sqrt(sum((k / s) ** 2 for k, s in zip(wavevectors, size, strict=True)))
 
 
 def _half_lattice(size: tuple[float, ...], q_max: float, field: str) -> tuple[list[np.ndarray], np.ndarray]:
-    """Return the wavevectors 0 < |q| <= ``q_max`` of the period ``size``, one of each pair +-k, and |q|.
+    """Return the wavevectors 0 < ``|q|`` <= ``q_max`` of the period ``size`` (one of each +-k), and ``|q|``.
 
     Integer components (k_x[, k_y]) of q = 2 pi (k_x / L_x, k_y / L_y); the half is k_y > 0, or
     k_y = 0 and k_x > 0 (k > 0 for a profile). Sums of even functions of q over the lattice are
@@ -272,7 +272,7 @@ def _wavevector_coefficients(
     """Return the unit complex Gaussian of each mode of the real-FFT layout, drawn from (seed, k).
 
     Hermitian: on the k_y = 0 column of a map the mode -k is the conjugate of the draw of k (k_x > 0
-    drawn). The q = 0 mode and the Nyquist modes (|k| = n / 2 along an axis of even n) are zero, so
+    drawn). The q = 0 mode and the Nyquist modes (``|k|`` = n / 2 along an axis of even n) are zero, so
     every mode a grid holds has the same coefficient on every grid that holds it.
     """
     wavevectors = np.broadcast_arrays(*wavevectors)
@@ -299,7 +299,7 @@ def _filtered_noise(
 
     ``"grid"``: the real FFT of white noise on the grid times sqrt(psd_shape), E|c_q|^2 =
     psd_shape / N for N grid points (unscaled: the caller rescales). ``"wavevector"``: c_q = z_q
-    sqrt(psd_shape(|q|)) with z_q of :func:`_wavevector_coefficients`, so E|c_q|^2 = psd_shape
+    sqrt(psd_shape(``|q|``)) with z_q of :func:`_wavevector_coefficients`, so E|c_q|^2 = psd_shape
     exactly. The q = 0 component is always zero, so the heights have zero mean.
     """
     if modes == "grid":
@@ -330,9 +330,9 @@ def _normalised_noise(
 ) -> np.ndarray:
     """Return ``"wavevector"`` heights whose PSD is normalised on the lattice, not on the grid.
 
-    Every mode 0 < |q| <= q_max of the period ``size`` (held by the grid or not) gets the variance
-    E|c_q|^2 = target^2 psd_shape(|q|) / sum_lattice w(q) psd_shape(|q|), w = 1 (``target`` the rms
-    height [m]) or |q|^2 (``target`` the rms gradient [-], continuum derivative): the expected
+    Every mode 0 < ``|q|`` <= q_max of the period ``size`` (held by the grid or not) gets the variance
+    E|c_q|^2 = target^2 psd_shape(``|q|``) / sum_lattice w(q) psd_shape(``|q|``), w = 1 (``target`` the rms
+    height [m]) or ``|q|``^2 (``target`` the rms gradient [-], continuum derivative): the expected
     mean square of the continuum field is target^2, and the same number on every grid.
     """
     _, magnitude = _half_lattice(size, q_max, field)
@@ -895,7 +895,7 @@ def matched_moments(
 
 
 def _lattice_variance(psd: Callable[[np.ndarray], np.ndarray], shape, size) -> float:
-    """Return sum over the grid's nonzero wavevectors of C(|q|) / area (Jacobs et al. 2017 normalisation)."""
+    """Return the sum over the grid's nonzero wavevectors of C(``|q|``) / area (Jacobs et al. 2017)."""
     magnitude = _wavevector_magnitude(shape, size)
     weights = np.full(magnitude.shape, 2.0)  # the real FFT's half plane: each column stands for two
     weights[..., 0] = 1.0
@@ -916,7 +916,7 @@ def matched_psd(
     r"""Make a random map with the radially averaged PSD of a measured scan (a stand-in for more spots).
 
     The template's isotropic PSD :math:`C(q)` is its radial PSD
-    (:func:`~roughcontact.topography.statistics.psd_radial`, default window) over rings of |q|
+    (:func:`~roughcontact.topography.statistics.psd_radial`, default window) over rings of ``|q|``
     that grow by ``ring_ratio`` (narrow: a ring's mean C is C at its mean q to a few per cent even
     where C falls as q^-3.6; the lowest rings hold single lattice circles), interpolated
     linearly in log q - log C; below its lowest wavevector it continues flat (a roll-off plateau:
@@ -939,7 +939,7 @@ def matched_psd(
     seed : int, optional
         Seed of ``numpy.random.default_rng``.
     ring_ratio : float
-        Ratio of the outer to the inner |q| of a ring of the template's radial PSD (> 1).
+        Ratio of the outer to the inner ``|q|`` of a ring of the template's radial PSD (> 1).
 
     Returns
     -------
@@ -1235,7 +1235,7 @@ def flat_punch(
     """Flat circular punch face: height 0 within ``radius`` of the centre, ``-depth`` outside.
 
     A grid point at distance r belongs to the face when r <= radius. For a profile the face is the
-    segment |x - centre| <= radius (a flat strip).
+    segment ``|x - centre|`` <= radius (a flat strip).
 
     Parameters
     ----------

@@ -661,7 +661,7 @@ def psd_radial(
     nbins : int, optional
         Number of bins; default ``max(shape) // 2``.
     ring_ratio : float, optional
-        Instead of equal-width bins, rings whose outer |q| is ``ring_ratio`` (> 1) times their inner
+        Instead of equal-width bins, rings whose outer ``|q|`` is ``ring_ratio`` (> 1) times their inner
         one, from the lowest wavevector up: narrow on a log scale, so a ring's mean C is C at its
         mean q even where C falls steeply, and the lowest rings hold single lattice circles.
     window, workers
