@@ -4,7 +4,8 @@ Jupyter (and VS Code, and every front end of IPython) shows an object through it
 ``_repr_html_``, as it shows xarray's. Every public result inherits :class:`NotebookDisplay`,
 whose display is :func:`html_summary`: the class and the first line of its docstring, one row per
 scalar of ``scalars()`` in engineering units (:func:`roughcontact.units.shown`, the rule of the
-commands' printed summaries, so notebook and terminal agree), how the solver ended, and, where the
+commands' printed summaries, so notebook and terminal agree), how the solver ended, where the result
+leaves its model's range (``range_warnings()``, what the commands print as warnings), and, where the
 class names a figure of :mod:`roughcontact.plotting` in ``FIGURE``, a thumbnail of it: matplotlib
 is imported when a notebook shows the result, never when the result's module is imported. The
 study's answer shows its cases through :func:`html_table`. ``repr()`` stays the dataclass's text.
@@ -116,8 +117,23 @@ def figure_html(result: Any) -> str:
     return f'<img alt="{html.escape(name)}" src="data:image/png;base64,{data}">'
 
 
+def range_html(result: Any) -> str:
+    """Return where the result leaves its model's range (its ``range_warnings()``) as a list; "" if nowhere.
+
+    What the commands print as warnings after a result is shown here under its table, so that a
+    number outside its model's validity says so where it is read.
+    """
+    find = getattr(result, "range_warnings", None)
+    lines = find() if callable(find) else []
+    if not lines:
+        return ""
+    items = "".join(f"<li>{html.escape(line)}</li>" for line in lines)
+    said = '<p style="color:#a40000;margin-bottom:0"><strong>outside the model\'s range:</strong></p>'
+    return f"{said}<ul>{items}</ul>"
+
+
 def html_summary(result: Any) -> str:
-    """Return a result as HTML: its class, a table of its scalars with units, its solver, its figure.
+    """Return a result as HTML: its class, its scalars with units, its solver, its range, its figure.
 
     Parameters
     ----------
@@ -135,7 +151,7 @@ def html_summary(result: Any) -> str:
     table = html_table(("scalar", "value"), cells, title=kind.__name__, caption=summary_of(kind))
     solver = solver_line(result)
     ended = f"<p>{html.escape(solver)}</p>" if solver else ""
-    return f"<div>{table}{ended}{figure_html(result)}</div>"
+    return f"<div>{table}{ended}{range_html(result)}{figure_html(result)}</div>"
 
 
 class NotebookDisplay:

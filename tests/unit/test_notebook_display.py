@@ -21,7 +21,7 @@ from roughcontact.display_html import NotebookDisplay, value_text
 from roughcontact.results import SolverResult, units_of
 from roughcontact.units import shown
 
-CHECKED = {"div", "table", "caption", "thead", "tbody", "tr", "th", "td", "p", "strong"}
+CHECKED = {"div", "table", "caption", "thead", "tbody", "tr", "th", "td", "p", "strong", "ul", "li"}
 
 
 class _Tags(HTMLParser):
@@ -107,6 +107,24 @@ def test_normal_contact_shows_area_convergence_and_a_pressure_map():
     png = base64.b64decode(image.group(1))
     assert png.startswith(b"\x89PNG") and len(png) < 60_000
     assert repr(result).startswith("NormalContactResult(topography=")  # the text repr is the dataclass's
+
+
+def test_a_result_outside_its_model_s_range_says_so_under_its_table():
+    from roughcontact.contact import solve_normal
+    from roughcontact.topography.generate import sphere
+
+    ball = sphere((32, 32), (40e-6, 40e-6), radius=50e-6, kind="paraboloid")
+    result = solve_normal(ball, 1e9, force=0.1)  # Hertz: peak 0.2 GPa, beyond 0.1 E*: steep slopes
+    warnings = result.range_warnings()
+    assert warnings
+    text = result._repr_html_()
+    assert "outside the model's range" in text
+    for line in warnings:
+        assert f"<li>{html.escape(line)}</li>" in text
+    assert (
+        "outside the model" not in BUILDERS["normal contact"]()._repr_html_()
+        or BUILDERS["normal contact"]().range_warnings()
+    )
 
 
 @dataclass(frozen=True)
