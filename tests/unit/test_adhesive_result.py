@@ -36,3 +36,17 @@ def test_an_interaction_reaching_the_window_edge_is_reported(cycle):
     small = sphere((24, 24), 120e-9, radius=1e-6)
     wide = solve_adhesive(small, 4e9, MaugisDugdale(0.05, 6e-9), approach=[-12e-9, 1e-9, -12e-9])
     assert any("window's edge" in w and "underestimated" in w for w in wide.range_warnings())
+
+
+def test_the_tail_of_a_law_far_from_the_contact_is_no_contact_in_the_edge_shares():
+    """An exponential law leaves tractions of a fraction of a pascal tens of nanometres from the contact:
+    a sphere in the middle of its window has none of its contact at the window's edge."""
+    from roughcontact.contact.interaction import Exponential
+
+    ball = sphere((64, 64), 600e-9, radius=5e-6)
+    law = Exponential(0.05, 0.5e-9)
+    programme = np.r_[np.linspace(-2.5e-9, 3e-9, 6), np.linspace(3e-9, -2.5e-9, 6)[1:]]
+    result = solve_adhesive(ball, 4e9, law, approach=programme)
+    pressure, gap = result.maps["peak"]
+    assert np.count_nonzero((pressure > 0) & ~law.in_contact(gap))  # the tail: positive, no contact
+    assert result.shares["edge_area_share"] == 0.0 and result.shares["edge_load_share"] == 0.0

@@ -361,9 +361,13 @@ class AdhesiveResult(NotebookDisplay):
         """Shares of the load and the contact at the deepest approach on filled points, specks and an edge.
 
         :func:`roughcontact.contact.trust.contact_shares` of the compressive pressure of the
-        ``"peak"`` state.
+        ``"peak"`` state, the contact where the law says the surfaces touch (``in_contact(gap)``,
+        as :attr:`contact_area` counts it), not wherever the pressure is positive: the tail of a
+        law leaves tractions of a fraction of a pascal tens of nanometres from the contact.
         """
-        return contact_shares(self.maps["peak"][0], self.topography, self.boundary)
+        pressure, gap = self.maps["peak"]
+        touching = self.interaction.in_contact(gap)
+        return contact_shares(np.where(touching, pressure, 0.0), self.topography, self.boundary, touching)
 
     def to_xarray(self):
         """Return the force-approach curve per step and the pressure and gap maps of :data:`MAP_STATES`."""

@@ -125,7 +125,9 @@ def _shares(pressure: np.ndarray, contact: np.ndarray, mask: np.ndarray) -> tupl
     return load_share, (int(np.count_nonzero(on_mask)) / count if count else 0.0)
 
 
-def contact_shares(pressure: np.ndarray, topography, boundary: str) -> dict[str, float]:
+def contact_shares(
+    pressure: np.ndarray, topography, boundary: str, contact: np.ndarray | None = None
+) -> dict[str, float]:
     """Return the shares of the load and of the contact area on filled points, specks and a free edge.
 
     Only the shares that apply are returned: ``filled_*`` for a surface with filled points,
@@ -139,6 +141,10 @@ def contact_shares(pressure: np.ndarray, topography, boundary: str) -> dict[str,
     topography : Topography
         The surface solved (its ``filled`` and ``specks`` masks).
     boundary : {"periodic", "free"}
+    contact : ndarray of bool, optional
+        Where the surfaces touch, for a model that says so by other means than the sign of the
+        pressure (an adhesive law's ``in_contact(gap)``: its tail of small tractions far from the
+        contact is no contact). Default: where the pressure is positive.
 
     Returns
     -------
@@ -146,7 +152,7 @@ def contact_shares(pressure: np.ndarray, topography, boundary: str) -> dict[str,
         Shares in [0, 1]; 0 when nothing is in contact.
     """
     pressure = np.asarray(pressure, dtype=float).reshape(topography.shape)
-    contact = pressure > 0
+    contact = pressure > 0 if contact is None else np.asarray(contact, dtype=bool).reshape(topography.shape)
     shares = {}
     for name, mask in (("filled", topography.filled), ("speck", topography.specks)):
         if mask is not None:
