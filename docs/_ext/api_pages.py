@@ -42,6 +42,13 @@ DOCUMENTED = (
     "roughcontact.papers.paper001",
     "roughcontact.papers.paper002",
     "roughcontact.plotting",
+    "roughcontact.plotting.topography",
+    "roughcontact.plotting.contact",
+    "roughcontact.plotting.adhesion",
+    "roughcontact.plotting.friction",
+    "roughcontact.plotting.presliding",
+    "roughcontact.plotting.asperity",
+    "roughcontact.plotting.indentation",
     "roughcontact.study",
     "roughcontact",
 )

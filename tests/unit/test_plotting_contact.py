@@ -58,3 +58,21 @@ def test_a_single_spike_does_not_set_the_pressure_colour_scale():
     assert mesh.get_clim()[1] * factor == scale.high  # the top: the 99.5th percentile of nonzero
     assert "99.5th pct." in fig.axes[-1].get_ylabel()
     assert np.ma.is_masked(mesh.get_array())  # no contact: masked, drawn grey
+
+
+def test_the_unloading_branch_starts_at_the_peak():
+    curve = {
+        "approach": np.array([0.0, 1e-9, 2e-9, 1.5e-9, 1e-9]),
+        "force": np.array([0.0, 1e-3, 3e-3, 1e-3, 0.0]),
+        "branch": np.array(["loading", "loading", "loading", "unloading", "unloading"]),
+    }
+    fig, ax = plot_load_approach(curve)
+    loading, unloading = ax.get_lines()
+    assert tuple(unloading.get_xydata()[0]) == tuple(loading.get_xydata()[-1])  # they meet at the peak
+
+
+def test_one_result_is_one_case():
+    from roughcontact.plotting import as_cases
+
+    result = solve_normal(_ball(), 1e9, force=1e-3)
+    assert len(as_cases(result)) == 1 and len(as_cases([result, result])) == 2

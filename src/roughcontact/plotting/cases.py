@@ -18,7 +18,7 @@ Nothing here imports matplotlib.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol, TypeVar
 
@@ -82,7 +82,7 @@ class ResultCase:
 
 
 def as_cases(
-    results: Iterable[Any],
+    results: Any,
     *,
     labels: Sequence[str] | None = None,
     samples: Sequence[str] | None = None,
@@ -91,15 +91,16 @@ def as_cases(
 
     Parameters
     ----------
-    results : iterable
-        Result objects of the result protocol (``scalars()`` and ``to_xarray()``), or cases already
-        (returned as they are).
+    results : result or iterable
+        A result of the result protocol (``scalars()`` and ``to_xarray()``), several, or cases
+        already (returned as they are).
     labels : sequence of str, optional
         Legend labels (default ``case 1``, ``case 2``, ...).
     samples : sequence of str, optional
         Sample labels, for figures that group cases by sample.
     """
-    results = list(results)
+    one = hasattr(results, "scalars") or (hasattr(results, "has_fields") and hasattr(results, "dataset"))
+    results = [results] if one else list(results)
     labels = list(labels) if labels is not None else [f"case {k + 1}" for k in range(len(results))]
     samples = list(samples) if samples is not None else [""] * len(results)
     if not len(labels) == len(samples) == len(results):

@@ -46,7 +46,11 @@ def plot_gap(result, ax: Axes | None = None, *, cmap: str = "viridis"):
 
 
 def plot_load_approach(curve: dict, ax: Axes | None = None, *, label: str | None = None):
-    """Draw force against approach from ``LoadUnloadResult.curve()`` (or any dict with those keys)."""
+    """Draw force against approach from ``LoadUnloadResult.curve()`` (or any dict with those keys).
+
+    The unloading branch is drawn from the peak, the last point of the loading branch, so that
+    the two meet as the path does.
+    """
     fig, ax = axes_for(ax)
     approach, force = np.asarray(curve["approach"]), np.asarray(curve["force"])
     a_scale, a_unit = prefixed_scale(float(np.max(np.abs(approach))) or 1e-9, "m")
@@ -54,6 +58,8 @@ def plot_load_approach(curve: dict, ax: Axes | None = None, *, label: str | None
     branches = np.asarray(curve.get("branch", ["loading"] * len(force)))
     for branch, style in (("loading", "-o"), ("unloading", "--s")):
         keep = branches == branch
+        if branch == "unloading" and keep.any() and np.argmax(keep) > 0:
+            keep[np.argmax(keep) - 1] = True  # unloading starts at the peak, where loading ended
         if keep.any():
             name = branch if label is None else f"{label}, {branch}"
             ax.plot(approach[keep] / a_scale, force[keep] / f_scale, style, ms=3, label=name)
