@@ -9,7 +9,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ..units import format_si, unit_factor
-from .cases import caption, evenly_chosen, grouped, realisations_of, with_fields
+from .cases import branch_points, caption, evenly_chosen, grouped, realisations_of, with_fields
 from .contact import plot_von_mises
 from .layout import axes_for, legend
 
@@ -69,14 +69,6 @@ def plot_load_interference(
     legend(ax, fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2))  # below: no curve hidden
     ax.grid(True, alpha=0.3)
     return fig, ax
-
-
-def branch_points(branches: np.ndarray, branch: str) -> np.ndarray:
-    """Return the indices of a branch's points; the unloading branch starts at the peak (the point before)."""
-    points = np.flatnonzero(np.asarray(branches) == branch)
-    if branch == "unloading" and points.size and points[0] > 0:
-        points = np.concatenate([[points[0] - 1], points])
-    return points
 
 
 def plot_area_load(curves: dict[str, dict], ax: Axes | None = None):

@@ -322,3 +322,11 @@ def box_around(mask: np.ndarray, margin: int) -> tuple[slice, slice] | None:
         slice(max(int(rows.min()) - margin, 0), min(int(rows.max()) + margin + 1, nx)),
         slice(max(int(columns.min()) - margin, 0), min(int(columns.max()) + margin + 1, ny)),
     )
+
+
+def branch_points(branches: np.ndarray, branch: str) -> np.ndarray:
+    """Return the indices of a branch's points; the unloading branch starts at the peak (the point before)."""
+    points = np.flatnonzero(np.asarray(branches) == branch)
+    if branch == "unloading" and points.size and points[0] > 0:
+        points = np.concatenate([[points[0] - 1], points])
+    return points

@@ -11,7 +11,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ..units import format_si, prefixed_scale
-from .cases import caption, evenly_chosen, grouped, realisations_of, scalar_series, with_fields
+from .cases import branch_points, caption, evenly_chosen, grouped, realisations_of, scalar_series, with_fields
 from .layout import axes_for, legend
 from .study import map_length_scale
 
@@ -57,10 +57,8 @@ def plot_load_approach(curve: dict, ax: Axes | None = None, *, label: str | None
     f_scale, f_unit = prefixed_scale(float(np.max(np.abs(force))) or 1.0, "N")
     branches = np.asarray(curve.get("branch", ["loading"] * len(force)))
     for branch, style in (("loading", "-o"), ("unloading", "--s")):
-        keep = branches == branch
-        if branch == "unloading" and keep.any() and np.argmax(keep) > 0:
-            keep[np.argmax(keep) - 1] = True  # unloading starts at the peak, where loading ended
-        if keep.any():
+        keep = branch_points(branches, branch)
+        if keep.size:
             name = branch if label is None else f"{label}, {branch}"
             ax.plot(approach[keep] / a_scale, force[keep] / f_scale, style, ms=3, label=name)
     ax.set_xlabel(f"approach ({a_unit})")
