@@ -225,8 +225,13 @@ def _contact_area_axes(ax: Axes, pressure, contact: np.ndarray, *, ring: bool) -
         handles.append(
             ax.scatter([], [], s=40, facecolors="none", edgecolors="#2166ac", label=f"{count} patches")
         )
-    ax.legend(
-        handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="x-small", frameon=False
+    ax.legend(  # below the map, not beside it: a legend beside widens the column for every row
+        handles=handles,
+        loc="upper center",
+        bbox_to_anchor=(0.5, -0.22),
+        ncols=len(handles),
+        fontsize="x-small",
+        frameon=False,
     )
 
 
