@@ -7,33 +7,20 @@ import pytest
 from roughcontact.cli import EXIT_INPUT_ERROR
 from roughcontact.references import ROUGHCONTACT, bibtex, references_of
 from roughcontact.study.kinds import get_kind
+from study_documents import NORMAL_CONTACT, rough_scan
 
-STUDY = """
-[study]
-name = "cite"
-
-[topographies.scan]
-generate = "self_affine"
-shape = 32
-size = "2 um"
-hurst = 0.8
-rms_height = "5 nm"
-seed = 1
-
+STUDY = (
+    rough_scan("cite")
+    + """
 [[analysis]]
 name = "roughness"
 model = "statistics"
 topography = "scan"
 figures = []
-
-[[analysis]]
-name = "contact"
-model = "normal"
-topography = "scan"
-material = "polysilicon"
-mean_pressure = "20 MPa"
-figures = []
 """
+    + NORMAL_CONTACT
+    + "figures = []\n"
+)
 
 
 @pytest.fixture(scope="module")

@@ -25,33 +25,13 @@ from roughcontact.study.config import StudyError
 from roughcontact.study.run import execute, make_task
 from roughcontact.study.store import read_table
 from roughcontact.topography.generate import sphere
+from study_documents import ADHESION_CYCLE, adhesive_ball
 
 FILM = Material(4e9, 0.3, name="film")
 EXAMPLE_SCAN = Path(__file__).resolve().parents[2] / "src" / "roughcontact" / "data" / "top-1.top"
 BALL = {"shape": (32, 32), "size": 200e-9, "radius": 1e-6}
 
-STUDY = """
-[study]
-name = "adhesive ball"
-[topographies.ball]
-generate = "sphere"
-shape = 32
-size = "200 nm"
-radius = "1 um"
-[materials.film]
-youngs_modulus = "4 GPa"
-poissons_ratio = 0.3
-surface_energy = "{gamma}"
-[[analysis]]
-name = "cycle"
-model = "adhesion"
-topography = "ball"
-material = "film"
-interaction_range = "1.9 nm"
-max_approach = "1 nm"
-steps = 10
-{extra}
-"""
+STUDY = adhesive_ball("adhesive ball", "{gamma}") + ADHESION_CYCLE + "steps = 10\n{extra}\n"
 
 
 def _study(tmp_path, *, gamma="25 mJ/m^2", extra='work_of_adhesion = "50 mJ/m^2"'):

@@ -8,29 +8,16 @@ from roughcontact.errors import InputError
 from roughcontact.study import StudyAnswer, answer
 from roughcontact.study.answers import reusable
 from roughcontact.study.config import build_study
+from study_documents import NORMAL_CONTACT, rough_scan
 
-STUDY = """
-[study]
-name = "answers"
-
-[topographies.scan]
-generate = "self_affine"
-shape = 32
-size = "2 um"
-hurst = 0.8
-rms_height = "5 nm"
-seed = 1
-
-[[analysis]]
-name = "contact"
-model = "normal"
-topography = "scan"
-material = "polysilicon"
-mean_pressure = "20 MPa"
-
+STUDY = (
+    rough_scan("answers")
+    + NORMAL_CONTACT
+    + """
 [analysis.sweep]
 mean_pressure = ["10 MPa", "40 MPa"]
 """
+)
 
 
 def _study(tmp_path, text=STUDY):

@@ -24,6 +24,7 @@ import pytest
 from roughcontact.study import load_study, run_study
 from roughcontact.study.kinds import get_kind, kind_names
 from roughcontact.study.outputs import produce, read_study
+from study_documents import ADHESION_CYCLE, adhesive_ball
 
 IDENTIFIER = re.compile(r"\b[a-z][a-z0-9]*_[a-z0-9_]+\b")
 DIMENSIONLESS = (
@@ -43,29 +44,14 @@ NOT_DRAWN_HERE = {
     ("presliding", "lateral_stiffness"): "examples/paper001.toml (tests/study/test_presliding_study.py)",
 }
 
-ADHESION = """
-[study]
-name = "adhesive ball"
-[topographies.ball]
-generate = "sphere"
-shape = 32
-size = "200 nm"
-radius = "1 um"
-[materials.film]
-youngs_modulus = "4 GPa"
-poissons_ratio = 0.3
-surface_energy = "25 mJ/m^2"
-[[analysis]]
-name = "cycle"
-model = "adhesion"
-topography = "ball"
-material = "film"
-interaction_range = "1.9 nm"
-max_approach = "1 nm"
-steps = 10
+ADHESION = (
+    adhesive_ball("adhesive ball")
+    + ADHESION_CYCLE
+    + """steps = 10
 [analysis.sweep]
 work_of_adhesion = ["30 mJ/m^2", "50 mJ/m^2"]
 """
+)
 
 FRICTION = """
 [study]

@@ -7,27 +7,12 @@ import pytest
 from roughcontact.study import load_study, run_study
 from roughcontact.study.outputs import read_study
 from roughcontact.study.report import write_report
+from study_documents import ADHESION_CYCLE, adhesive_ball
 
-STUDY = """
-[study]
-name = "methods"
-[topographies.ball]
-generate = "sphere"
-shape = 32
-size = "200 nm"
-radius = "1 um"
-[materials.film]
-youngs_modulus = "4 GPa"
-poissons_ratio = 0.3
-surface_energy = "25 mJ/m^2"
-[[analysis]]
-name = "cycle"
-model = "adhesion"
-topography = "ball"
-material = "film"
-counter_body = "SiO2"
-interaction_range = "1.9 nm"
-max_approach = "1 nm"
+STUDY = (
+    adhesive_ball("methods")
+    + ADHESION_CYCLE
+    + """counter_body = "SiO2"
 steps = 6
 [[analysis]]
 name = "pressed"
@@ -37,6 +22,7 @@ material = "film"
 counter_body = "SiO2"
 force = "1 uN"
 """
+)
 
 
 @pytest.fixture(scope="module")

@@ -1,0 +1,58 @@
+"""Small study documents the tests of several folders share (a study file's text, composed).
+
+``adhesive_ball`` and ``rough_scan`` start a document (its ``[study]`` and surface tables);
+``ADHESION_CYCLE`` and ``NORMAL_CONTACT`` are analyses to append, each test adding its own keys.
+"""
+
+
+def adhesive_ball(name: str, surface_energy: str = "25 mJ/m^2") -> str:
+    """Return the start of a study of a 1 um ball (32^2, 200 nm) of a 4 GPa film with ``surface_energy``."""
+    return f"""[study]
+name = "{name}"
+[topographies.ball]
+generate = "sphere"
+shape = 32
+size = "200 nm"
+radius = "1 um"
+[materials.film]
+youngs_modulus = "4 GPa"
+poissons_ratio = 0.3
+surface_energy = "{surface_energy}"
+"""
+
+
+ADHESION_CYCLE = """[[analysis]]
+name = "cycle"
+model = "adhesion"
+topography = "ball"
+material = "film"
+interaction_range = "1.9 nm"
+max_approach = "1 nm"
+"""
+"""An adhesive cycle of :func:`adhesive_ball`'s ball (append ``steps``, a sweep, ...)."""
+
+
+def rough_scan(name: str) -> str:
+    """Return the start of a study of a self-affine scan (32^2, 2 um, H = 0.8, Rq = 5 nm, seed 1)."""
+    return f"""[study]
+name = "{name}"
+
+[topographies.scan]
+generate = "self_affine"
+shape = 32
+size = "2 um"
+hurst = 0.8
+rms_height = "5 nm"
+seed = 1
+"""
+
+
+NORMAL_CONTACT = """
+[[analysis]]
+name = "contact"
+model = "normal"
+topography = "scan"
+material = "polysilicon"
+mean_pressure = "20 MPa"
+"""
+"""Normal contact of :func:`rough_scan`'s scan in polysilicon at 20 MPa (append a sweep, ...)."""
