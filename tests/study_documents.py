@@ -56,3 +56,35 @@ material = "polysilicon"
 mean_pressure = "20 MPa"
 """
 """Normal contact of :func:`rough_scan`'s scan in polysilicon at 20 MPa (append a sweep, ...)."""
+
+
+SCAN_AND_TIP = """[study]
+name = "swept"
+seed = 8
+[topographies.scan]
+generate = "self_affine"
+shape = 24
+size = "0.48 um"
+hurst = 0.8
+rms_height = "1.5 nm"
+[topographies.tip]
+generate = "sphere"
+shape = 24
+size = "0.48 um"
+radius = "1 um"
+"""
+"""The start of a study of paper 000's kind: a self-affine scan (24^2, 20 nm pixels) and a 1 um tip."""
+
+FRICTION_OVER_TWO_LOADS = """[[analysis]]
+name = "friction"
+model = "friction"
+topography = "scan"
+counter_topography = "tip"
+material = "polysilicon"
+counter_body = "SiO2"
+normal_force = "1 uN"
+surface_energy = "50 mJ/m^2"
+[analysis.sweep]
+normal_force = ["5 uN", "10 uN"]
+"""
+"""Friction of :data:`SCAN_AND_TIP` at 5 and 10 uN (append the sweep's other axes, ...)."""

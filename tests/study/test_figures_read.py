@@ -24,7 +24,7 @@ import pytest
 from roughcontact.study import load_study, run_study
 from roughcontact.study.kinds import get_kind, kind_names
 from roughcontact.study.outputs import produce, read_study
-from study_documents import ADHESION_CYCLE, adhesive_ball
+from study_documents import ADHESION_CYCLE, FRICTION_OVER_TWO_LOADS, SCAN_AND_TIP, adhesive_ball
 
 IDENTIFIER = re.compile(r"\b[a-z][a-z0-9]*_[a-z0-9_]+\b")
 DIMENSIONLESS = (
@@ -53,33 +53,10 @@ work_of_adhesion = ["30 mJ/m^2", "50 mJ/m^2"]
 """
 )
 
-FRICTION = """
-[study]
-name = "swept"
-seed = 8
-[topographies.scan]
-generate = "self_affine"
-shape = 24
-size = "0.48 um"
-hurst = 0.8
-rms_height = "1.5 nm"
-[topographies.tip]
-generate = "sphere"
-shape = 24
-size = "0.48 um"
-radius = "1 um"
-[[analysis]]
-name = "friction"
-model = "friction"
-topography = "scan"
-counter_topography = "tip"
-material = "polysilicon"
-counter_body = "SiO2"
-normal_force = "1 uN"
-surface_energy = "50 mJ/m^2"
-[analysis.sweep]
-normal_force = ["5 uN", "10 uN"]
-replicate = [0, 1]
+FRICTION = (
+    SCAN_AND_TIP
+    + FRICTION_OVER_TWO_LOADS
+    + """replicate = [0, 1]
 sample = ["a", "b"]
 [[analysis]]
 name = "friction_at_one_load"
@@ -94,6 +71,7 @@ surface_energy = "50 mJ/m^2"
 replicate = [0, 1, 2, 3, 4]
 sample = ["a", "b"]
 """
+)
 
 
 def _names_given(text: str) -> set[str]:

@@ -29,6 +29,7 @@ from roughcontact.study.store import read_table
 from roughcontact.topography.generate import self_affine, sphere_with_roughness
 from roughcontact.topography.statistics import ra
 from roughcontact.winkler_lj import PAPER, PronySeries, Readings, winkler_lj_model
+from study_documents import FRICTION_OVER_TWO_LOADS, SCAN_AND_TIP
 
 SAMPLES = ["Ra 1.45 nm", "Ra 1.49 nm", "Ra 1.7 nm"]
 REDUCED = {
@@ -422,41 +423,16 @@ def test_the_reported_csv_is_labelled_and_has_seven_values_per_sample(examples):
 
 # --- comparison with a load sweep ------------------------------------------------------------------
 
-SWEPT = """
-[study]
-name = "swept"
-seed = 8
-
-[topographies.scan]
-generate = "self_affine"
-shape = 24
-size = "0.48 um"
-hurst = 0.8
-rms_height = "1.5 nm"
-
-[topographies.tip]
-generate = "sphere"
-shape = 24
-size = "0.48 um"
-radius = "1 um"
-
-[[analysis]]
-name = "friction"
-model = "friction"
-topography = "scan"
-counter_topography = "tip"
-material = "polysilicon"
-counter_body = "SiO2"
-normal_force = "1 uN"
-surface_energy = "50 mJ/m^2"
-[analysis.sweep]
-normal_force = ["5 uN", "10 uN"]
-replicate = [0, 1, 2]
+SWEPT = (
+    SCAN_AND_TIP
+    + FRICTION_OVER_TWO_LOADS
+    + """replicate = [0, 1, 2]
 sample = ["a", "b"]
 [analysis.compare]
 measured = "measured.csv"
 {load}
 """
+)
 
 
 def test_a_load_sweep_is_compared_at_the_load_of_the_measurements(tmp_path, caplog):
