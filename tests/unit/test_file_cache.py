@@ -129,6 +129,16 @@ def test_a_record_without_a_scan_s_keys_is_read_afresh(folder, tmp_path):
     assert_same_scan(first, read_scan(file))
 
 
+def test_a_record_without_the_channel_list_is_read_afresh(folder, tmp_path):
+    file = shutil.copy(SCAN, tmp_path / "scan.top")
+    first = list_channels(file)
+    record = next(folder.glob("*.json"))
+    stored = json.loads(record.read_text())
+    stored["record"] = json.dumps({"size": [1.0, 1.0]})
+    record.write_text(json.dumps(stored))
+    assert list_channels(file) == first
+
+
 def test_a_changed_file_is_read_again(folder, tmp_path):
     file = tmp_path / "matrix.txt"
     np.savetxt(file, np.arange(16.0).reshape(4, 4))

@@ -133,10 +133,11 @@ class ConvertedCopy:
     def _files(self) -> tuple[Path, Path]:
         return self.folder / f"{self.key}.npy", self.folder / f"{self.key}.json"
 
-    def load(self) -> tuple[dict[str, Any], np.ndarray | None] | None:
+    def load(self, *keys: str) -> tuple[dict[str, Any], np.ndarray | None] | None:
         """Return the copy's record and its heights (None if it has none); None where there is no copy.
 
-        A damaged or partial copy is None too (it is written again after the next reading).
+        A damaged or partial copy is None too, as is a record without each of ``keys`` (the keys
+        the reading stores): it is written again after the next reading.
         """
         if self.key is None:
             return None
@@ -150,6 +151,8 @@ class ConvertedCopy:
                     return None
             record = decode_info(stored["record"])
         except (OSError, EOFError, ValueError, KeyError, TypeError):  # EOFError: an empty .npy
+            return None
+        if not isinstance(record, dict) or not set(keys) <= record.keys():
             return None
         for file in (heights_file, record_file):  # used now: the last to be pruned
             with contextlib.suppress(OSError):

@@ -162,7 +162,7 @@ def list_channels(path: PathLike) -> list[ChannelInfo]:
             )
         ]
     copy = ConvertedCopy(path, "channels", {}, READER_VERSION)
-    found = copy.load()
+    found = copy.load("channels")
     if found is not None:
         return [ChannelInfo(**channel) for channel in found[0]["channels"]]
     with _open_reader(path) as reader:
@@ -387,8 +387,8 @@ def read_scan(
         "override_file_values": override_file_values,
     }
     copy = ConvertedCopy(path, "scan", options, READER_VERSION)
-    found = copy.load()
-    if found is not None and {"size", "periodic", "info"} <= found[0].keys():
+    found = copy.load("size", "periodic", "info")
+    if found is not None:
         record, heights = found
         return Scan(heights, record["size"], record["periodic"], record["info"], path)
     scan = _read_instrument_file(path, **options)
