@@ -543,6 +543,11 @@ def references_of(keys: Iterable[str]) -> list[Reference]:
     return [REFERENCES[key] for key in dict.fromkeys(keys)]
 
 
+def cited(keys: Iterable[str]) -> list[Reference]:
+    """Return what to cite for models of these reference ``keys``: roughcontact, then each work once."""
+    return [ROUGHCONTACT, *references_of(keys)]
+
+
 _SPECIAL = str.maketrans(
     {
         "\\": r"\textbackslash{}",

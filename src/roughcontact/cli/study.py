@@ -291,7 +291,7 @@ def _provenance_references(folder: Path) -> list[dict]:
 
 
 def _cite(args: argparse.Namespace) -> int:
-    from ..references import ROUGHCONTACT, Reference, bibtex, references_of
+    from ..references import Reference, bibtex, cited
 
     if (args.folder is None) == (args.model is None):
         raise InputError(
@@ -306,7 +306,7 @@ def _cite(args: argparse.Namespace) -> int:
 
         if args.model not in kind_names(aliases=True):
             raise InputError("--model", f"unknown model {args.model!r}.", f"use one of {kind_names()}.")
-        references = [ROUGHCONTACT, *references_of(get_kind(args.model).references)]
+        references = cited(get_kind(args.model).references)
     print(bibtex(references), end="")
     return 0
 

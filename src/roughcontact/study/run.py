@@ -40,7 +40,7 @@ from typing import Any
 
 from .._files import not_a_folder
 from ..errors import InputError
-from ..references import ROUGHCONTACT, references_of
+from ..references import cited
 from .config import Case, Study
 from .inputs import CaseInputs
 from .kind import CaseParameters, CaseRecord
@@ -532,7 +532,7 @@ def materials_used(study: Study) -> list[dict[str, Any]]:
 def references_used(study: Study) -> list[dict[str, Any]]:
     """Return the works the study's models implement (``Kind.references``), roughcontact first, each once."""
     keys = [key for analysis in study.analyses for key in analysis.kind.references]
-    return [reference.to_dict() for reference in (ROUGHCONTACT, *references_of(keys))]
+    return [reference.to_dict() for reference in cited(keys)]
 
 
 def dependency_versions() -> dict[str, str]:
