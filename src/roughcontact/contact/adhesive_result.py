@@ -367,7 +367,7 @@ class AdhesiveResult(NotebookDisplay):
         """
         pressure, gap = self.maps["peak"]
         touching = self.interaction.in_contact(gap)
-        return contact_shares(np.where(touching, pressure, 0.0), self.topography, self.boundary, touching)
+        return contact_shares(pressure, self.topography, self.boundary, touching)
 
     def to_xarray(self):
         """Return the force-approach curve per step and the pressure and gap maps of :data:`MAP_STATES`."""
