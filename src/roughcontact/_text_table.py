@@ -19,6 +19,7 @@ from pathlib import Path
 
 from ._files import read_text
 from .errors import InputError
+from .origin import DataOrigin, origin_of
 
 HEADER_UNIT = re.compile(r"^\s*(.*?)\s*(?:[\[\(]\s*([^\]\)]*?)\s*[\]\)])?\s*$")
 """A header cell ``name [unit]`` or ``name (unit)``: group 1 the name, group 2 the unit (or None).
@@ -45,6 +46,9 @@ class TextTable:
         The column separator; None for whitespace.
     header : list of str or None
         The header cells as written, stripped (None without a header), for messages.
+    comments : tuple of str
+        The ``#`` lines, without their ``#`` (where the file says its origin:
+        :func:`roughcontact.origin.origin_of`).
     """
 
     names: list[str] | None
@@ -52,6 +56,11 @@ class TextTable:
     rows: list[list[str]]
     delimiter: str | None = None
     header: list[str] | None = None
+    comments: tuple[str, ...] = ()
+
+    def origin(self, field: str = "origin") -> DataOrigin:
+        """Return the origin the comment lines declare (measured by default; :mod:`roughcontact.origin`)."""
+        return origin_of(self.comments, field=field)
 
     @property
     def width(self) -> int:
@@ -92,11 +101,9 @@ def read_text_table(path: str | Path, *, expected: str, delimiter: str | None = 
     path = Path(path)
     if not path.is_file():
         raise InputError("path", f"{path} does not exist.", f"give the path of a CSV with {expected}.")
-    lines = [
-        line.strip()
-        for line in read_text(path, holds=f"a CSV with {expected}").splitlines()
-        if line.strip() and not line.lstrip().startswith("#")
-    ]
+    text = read_text(path, holds=f"a CSV with {expected}").splitlines()
+    lines = [line.strip() for line in text if line.strip() and not line.lstrip().startswith("#")]
+    comments = tuple(line.strip()[1:].strip() for line in text if line.lstrip().startswith("#"))
     if not lines:
         raise InputError("path", f"{path} has no data lines.", f"give {expected}.")
     if delimiter is None:
@@ -108,9 +115,9 @@ def read_text_table(path: str | Path, *, expected: str, delimiter: str | None = 
     )
     rows = [[cell.strip() for cell in split(line)] for line in lines]
     if all(_numeric(cell) for cell in rows[0]):
-        return TextTable(None, None, rows, delimiter)
+        return TextTable(None, None, rows, delimiter, comments=comments)
     names, units = zip(*(split_header(cell) for cell in rows[0]), strict=True)
-    return TextTable(list(names), list(units), rows[1:], delimiter, rows[0])
+    return TextTable(list(names), list(units), rows[1:], delimiter, rows[0], comments)
 
 
 def split_header(cell: str) -> tuple[str, str | None]:

@@ -59,9 +59,14 @@ class Spread:
     mean, std : float
         Sample mean and standard deviation (ddof = 1; NaN for n < 2).
     ci95_low, ci95_high : float
-        Student's 95 % confidence interval of the mean (NaN for n < 2).
+        Student's 95 % confidence interval of the mean (NaN for n < 2), within the quantity's
+        bounds where it has any (see ``note``).
     min, max : float
         Smallest and largest value.
+    note : str
+        Why an interval was cut at a bound of the quantity ('' when none was).
+    bounds : tuple of float
+        The range the quantity can take (``(-inf, inf)`` unless given to :func:`spread`).
     """
 
     n: int
@@ -71,53 +76,147 @@ class Spread:
     ci95_high: float
     min: float
     max: float
+    note: str = ""
+    bounds: tuple[float, float] = (-math.inf, math.inf)
 
     @property
     def half_width(self) -> float:
         """Half the width of the confidence interval of the mean."""
         return 0.5 * (self.ci95_high - self.ci95_low)
 
-    def against(self, reference: float) -> str:
-        """Say where ``reference`` lies for the mean: ``below``/``above`` it, or within its interval.
-
-        ``"below"`` when the whole 95 % interval of the mean lies below ``reference`` (the mean is
-        smaller than the reference at that confidence), ``"above"`` when it lies above, else
-        ``"within the scatter"``; ``"one realisation"`` where there is no interval (n < 2).
-        """
-        if not self.n > 1 or not math.isfinite(self.half_width):
-            return "one realisation"
-        if self.ci95_high < reference:
-            return "below"
-        if self.ci95_low > reference:
-            return "above"
-        return "within the scatter"
-
     def prediction(self) -> tuple[float, float]:
         r"""Return the 95 % prediction interval of one more realisation (NaN for n < 2).
 
-        :math:`\bar x \pm t_{0.975, N-1}\, s \sqrt{1 + 1/N}`: where a single new draw (or one
-        measurement of a spot, if the model holds) falls 95 % of the time. Compare one measured
-        value with this, not with the interval of the mean.
+        :math:`\bar x \pm t_{0.975, N-1}\, s \sqrt{1 + 1/N}`, cut at the quantity's bounds: where a
+        single new draw (one ball, one island, or one measurement of a spot, if the model holds)
+        falls 95 % of the time. Judge a claim about one specimen with this, not with the interval
+        of the mean.
         """
         if self.n < 2:
             return math.nan, math.nan
         from scipy import stats
 
         half = float(stats.t.ppf(0.5 + CONFIDENCE / 2, self.n - 1)) * self.std * math.sqrt(1 + 1 / self.n)
-        return self.mean - half, self.mean + half
+        return _within(self.mean - half, self.mean + half, self.bounds)
 
-    def row(self) -> dict[str, float | int]:
-        """Return the summary as a table row (its keys are the attribute names)."""
-        return asdict(self)
+    def verdict(self, reference: float, *, of: str = "mean") -> Verdict:
+        """Judge where ``reference`` lies against this spread, at the level of the claim.
+
+        Parameters
+        ----------
+        reference : float
+            The value the claim compares with (Mindlin's K_L, the statistical model's peak, 1 for
+            a ratio).
+        of : {"mean", "one"}
+            ``"mean"``: a claim about the mean over realisations, judged with the 95 % confidence
+            interval of the mean. ``"one"``: a claim about one specimen (one ball, one island),
+            judged with the 95 % prediction interval of one realisation.
+
+        Returns
+        -------
+        Verdict
+            ``below`` where the whole interval lies below ``reference``, ``above`` where it lies
+            above, ``not established`` where it holds ``reference``, ``one realisation`` without
+            an interval (n < 2).
+        """
+        if of not in ("mean", "one"):
+            raise ValueError(f"of must be 'mean' or 'one', not {of!r}")
+        interval = self.prediction() if of == "one" else (self.ci95_low, self.ci95_high)
+        low, high = interval
+        if self.n < 2 or not (math.isfinite(low) and math.isfinite(high)):
+            word = "one realisation"
+        elif high < reference:
+            word = "below"
+        elif low > reference:
+            word = "above"
+        else:
+            word = "not established"
+        return Verdict(word, float(reference), of, (low, high), (self.ci95_low, self.ci95_high), self.n)
+
+    def row(self) -> dict[str, float | int | str]:
+        """Return the summary as a table row (its keys are the attribute names, bounds left out)."""
+        row = asdict(self)
+        del row["bounds"]
+        return row
 
 
-def spread(values: Iterable[float]) -> Spread:
+INTERVAL_NAMES = {
+    "mean": "95 % confidence interval of the mean",
+    "one": "95 % prediction interval of one realisation",
+}
+"""What each interval of a :class:`Verdict` is called in tables and sentences."""
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """Where a reference value lies against a quantity's spread, judged at the level of the claim.
+
+    Attributes
+    ----------
+    word : str
+        ``below``, ``above``, ``not established`` or ``one realisation``.
+    reference : float
+        The value compared with.
+    of : str
+        ``"one"`` (a claim about one specimen: the prediction interval) or ``"mean"`` (a claim
+        about the mean: its confidence interval).
+    interval : tuple of float
+        The interval the verdict rests on.
+    mean_interval : tuple of float
+        The 95 % confidence interval of the mean, shown beside a prediction interval.
+    n : int
+        Number of realisations.
+    """
+
+    word: str
+    reference: float
+    of: str
+    interval: tuple[float, float]
+    mean_interval: tuple[float, float]
+    n: int
+
+    @property
+    def established(self) -> bool:
+        """True when the interval lies wholly on one side of the reference."""
+        return self.word in ("below", "above")
+
+    @property
+    def interval_name(self) -> str:
+        """The name of the interval the verdict rests on."""
+        return INTERVAL_NAMES[self.of]
+
+    def describe(self, number=None) -> str:
+        """Say the verdict with its interval, e.g. ``below 1 (95 % prediction interval ..., n = 5)``.
+
+        ``number`` formats the values (default ``'{:.3g}'``).
+        """
+        number = number or "{:.3g}".format
+        low, high = self.interval
+        if self.word == "one realisation":
+            return f"one realisation: no interval to judge against {number(self.reference)}"
+        place = "holds" if self.word == "not established" else f"lies {self.word}"
+        return (
+            f"{self.word}: the {self.interval_name} [{number(low)}, {number(high)}] (n = {self.n}) "
+            f"{place} {number(self.reference)}"
+        )
+
+
+def _within(low: float, high: float, bounds: tuple[float, float]) -> tuple[float, float]:
+    return max(low, bounds[0]), min(high, bounds[1])
+
+
+def spread(values: Iterable[float], *, bounds: tuple[float, float] | None = None) -> Spread:
     """Summarise ``values`` (one per realisation) by mean, std, 95 % interval of the mean, min and max.
 
     Parameters
     ----------
     values : iterable of float
         One value per realisation; NaN and infinite values are left out.
+    bounds : (float, float), optional
+        The range the quantity can take (``(0, inf)`` for a stiffness or a load, ``(0, 1)`` for
+        a fraction; :func:`natural_bounds`). Student's interval assumes a normal scatter and
+        reaches past such a bound when the scatter is wide against the mean (n = 2, a fraction
+        near 1): it is then cut at the bound and ``note`` says so.
 
     Returns
     -------
@@ -126,17 +225,58 @@ def spread(values: Iterable[float]) -> Spread:
     """
     from scipy import stats
 
+    limits = (-math.inf, math.inf) if bounds is None else (float(bounds[0]), float(bounds[1]))
     array = np.asarray([float(v) for v in values], dtype=float)
     array = array[np.isfinite(array)]
     n = int(array.size)
     if n == 0:
-        return Spread(0, *(math.nan,) * 6)
+        return Spread(0, *(math.nan,) * 6, bounds=limits)
     mean = float(array.mean())
     if n == 1:
-        return Spread(1, mean, math.nan, math.nan, math.nan, mean, mean)
+        return Spread(1, mean, math.nan, math.nan, math.nan, mean, mean, bounds=limits)
     std = float(array.std(ddof=1))
     half = float(stats.t.ppf(0.5 + CONFIDENCE / 2, n - 1)) * std / math.sqrt(n)
-    return Spread(n, mean, std, mean - half, mean + half, float(array.min()), float(array.max()))
+    low, high = _within(mean - half, mean + half, limits)
+    cut = [
+        f"{bound:g}"
+        for bound, raw, kept in ((limits[0], mean - half, low), (limits[1], mean + half, high))
+        if raw != kept
+    ]
+    note = (
+        f"95 % interval cut at {' and '.join(cut)}: the quantity lies in [{limits[0]:g}, {limits[1]:g}], "
+        f"and Student's interval of {n} values reaches past it"
+        if cut
+        else ""
+    )
+    return Spread(n, mean, std, low, high, float(array.min()), float(array.max()), note, limits)
+
+
+NON_NEGATIVE_UNITS = frozenset({"m^2", "N/m", "J", "s"})
+"""Units of quantities that cannot be negative whatever their name (areas, stiffnesses, energies, times)."""
+
+
+def natural_bounds(name: str, unit: str | None = None) -> tuple[float, float] | None:
+    """Return the range a result's scalar can take from its name and unit, or None if unbounded.
+
+    Fractions and shares lie in [0, 1]; counts (``number_of_*``, ``*_springs``), areas,
+    stiffnesses (``K_L_*``), energies, times, friction coefficients (``mu*``) and ratios of
+    positive quantities (``*_over_*``, ``*_to_*``, ``* / *``) are non-negative. Forces,
+    approaches and interferences may be negative (adhesion, a pulled flat) and are not bounded.
+    """
+    lowered = name.lower()
+    if lowered.endswith(("fraction", "_share")) or lowered.startswith("share"):
+        return (0.0, 1.0)
+    words = lowered.replace("/", " / ")
+    if (
+        unit in NON_NEGATIVE_UNITS
+        or lowered.startswith(("number_of", "k_l", "mu", "crossover"))
+        or lowered.endswith(("_springs", "_area", "patches"))
+        or "_over_" in lowered
+        or "_to_" in lowered
+        or " / " in words
+    ):
+        return (0.0, math.inf)
+    return None
 
 
 def convergence_order(sizes: list[float], values: list[float]) -> tuple[float, float] | None:
