@@ -367,7 +367,7 @@ def _against_statistical(records, context):
                     "statistical_peak_interference [m]": peak,
                     "bem_peak_over_omega_c": bem.mean / omega_c,
                     "statistical_peak_over_omega_c": peak / omega_c,
-                    "statistical model": verdicts.get(bem.against(peak), bem.against(peak)),
+                    "statistical model": verdicts.get(bem.verdict(peak).word, bem.verdict(peak).word),
                 }
             )
     return rows

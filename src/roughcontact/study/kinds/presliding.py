@@ -415,7 +415,7 @@ def _lateral_stiffness_spread_table(records, context):
                 row[f"K_L / mindlin_{reading} mean"] = ratio.mean
                 row[f"K_L / mindlin_{reading} 95% low"] = ratio.ci95_low
                 row[f"K_L / mindlin_{reading} 95% high"] = ratio.ci95_high
-                row[f"rough vs smooth ({reading})"] = ratio.against(1.0)
+                row[f"rough vs smooth ({reading})"] = ratio.verdict(1.0).word
             rows.append(row)
     return rows
 
