@@ -40,6 +40,7 @@ from .outputs import (
     warning_lines,
 )
 from .run import RunSummary, case_progress, execute, make_task, run_study
+from .store import notes_of
 
 
 @dataclass(frozen=True)
@@ -92,6 +93,7 @@ class StudyAnswer:
                     name = f"spread over {analysis.realisations} realisations (headline quantities)"
                 lines.append(f"  table {name}:")
                 lines += table_lines(rows, indent="    ", missing=analysis.kind.missing)
+                lines += [f"    note: {note}" for note in notes_of(rows)]
             lines += [f"  {line}" for line in realisation_lines(analysis)]
         return lines
 
@@ -234,6 +236,9 @@ def analysis_document(analysis, tables) -> dict[str, Any]:
             if record is not None
         ],
         "tables": {name: rows for a, name, rows in tables if a == analysis.name},
+        "table_notes": {
+            name: list(notes_of(rows)) for a, name, rows in tables if a == analysis.name and notes_of(rows)
+        },
     }
 
 

@@ -31,7 +31,7 @@ from .outputs import (
     write_results_table,
     write_tables,
 )
-from .store import read_table, write_atomically
+from .store import notes_of, read_table, write_atomically
 
 _STYLE = """
 body { font-family: system-ui, sans-serif; margin: 2em auto; max-width: 75em; color: #222; }
@@ -169,7 +169,9 @@ def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) 
     ]
     for path in sorted((folder / "tables").glob(f"{analysis.name}_*.csv")):
         parts.append(f"<h3>{html.escape(path.stem.removeprefix(analysis.name + '_').replace('_', ' '))}</h3>")
-        parts.append(_table(read_table(path), missing=dict(analysis.kind.missing)))
+        table = read_table(path)
+        parts.append(_table(table, missing=dict(analysis.kind.missing)))
+        parts += [f'<p class="note">{html.escape(note)}</p>' for note in notes_of(table)]
     for name in analysis.figures:
         path = folder / "figures" / f"{analysis.name}_{name}.png"
         if path.exists():

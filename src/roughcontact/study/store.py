@@ -96,13 +96,45 @@ def read_record(folder: Path, analysis: str, case_id: str) -> CaseRecord | None:
         return None
 
 
+class Table(list):
+    """The rows (dicts) of a derived table with the sentences that must be read with them.
+
+    A table function returns one where its numbers need words to be read right: what the
+    compared data are ("reconstructed from reported statistics: agreement by construction"),
+    which interval a verdict rests on. The notes go wherever the rows go: above the CSV's header
+    as ``#`` lines, under the report's table, after the command's table lines and into ``--json``.
+
+    Parameters
+    ----------
+    rows : iterable of dict
+        The rows.
+    notes : iterable of str
+        Whole sentences.
+    """
+
+    def __init__(self, rows: Iterable[dict[str, Any]] = (), notes: Iterable[str] = ()) -> None:
+        super().__init__(rows)
+        self.notes = tuple(notes)
+
+
+def notes_of(rows: Iterable[dict[str, Any]]) -> tuple[str, ...]:
+    """Return the notes of a :class:`Table` (none for plain rows)."""
+    return tuple(getattr(rows, "notes", ()))
+
+
 def write_table(path: Path, rows: Iterable[dict[str, Any]]) -> None:
-    """Write rows (dicts) as CSV with the union of their keys as columns, in first-seen order."""
+    """Write rows (dicts) as CSV with the union of their keys as columns, in first-seen order.
+
+    The notes of a :class:`Table` come first, one ``# `` line each.
+    """
+    notes = notes_of(rows)
     rows = list(rows)
     columns: dict[str, None] = {}
     for row in rows:
         columns.update(dict.fromkeys(row))
     buffer = io.StringIO()
+    for note in notes:
+        buffer.write(f"# {note}\n")
     writer = csv.DictWriter(buffer, fieldnames=list(columns), lineterminator="\n")
     writer.writeheader()
     for row in rows:
@@ -119,7 +151,9 @@ def _cell(value: Any) -> Any:
     return "" if value is None else value
 
 
-def read_table(path: Path) -> list[dict[str, str]]:
-    """Read a CSV written by :func:`write_table` (values as strings)."""
-    with path.open(newline="") as handle:
-        return list(csv.DictReader(handle))
+def read_table(path: Path) -> Table:
+    """Read a CSV written by :func:`write_table` (values as strings), with its notes."""
+    lines = path.read_text().splitlines(keepends=True)
+    count = next((i for i, line in enumerate(lines) if not line.startswith("# ")), len(lines))
+    notes = [line[2:].rstrip("\r\n") for line in lines[:count]]
+    return Table(csv.DictReader(lines[count:]), notes)
