@@ -181,6 +181,60 @@ def test_ranges_and_products():
     ]
 
 
+def test_several_zip_tables_are_crossed_with_each_other_and_the_sweep():
+    rows = expand({"r": [0, 1]}, [{"s": ["a", "b"], "t": [1, 2]}, {"u": [{"k": 1}, {}]}], "a")
+    assert len(rows) == 8
+    assert rows[:4] == [
+        {"r": 0, "s": "a", "t": 1, "u": {"k": 1}},
+        {"r": 0, "s": "a", "t": 1, "u": {}},
+        {"r": 0, "s": "b", "t": 2, "u": {"k": 1}},
+        {"r": 0, "s": "b", "t": 2, "u": {}},
+    ]
+    with pytest.raises(Exception, match=r"zip\[1\].*differ in length"):
+        expand({}, [{"s": ["a"]}, {"u": [1, 2], "v": [1]}], "a")
+    with pytest.raises(Exception, match="both swept and zipped"):
+        expand({}, [{"s": ["a"]}, {"s": ["b"]}], "a")
+
+
+def test_a_study_zips_samples_against_swept_tables_of_readings(tmp_path):
+    text = """
+[study]
+name = "readings per sample"
+[topographies.scan]
+generate = "paper000_scan"
+shape = 32
+sample = "Ra 1.45 nm"
+[topographies.tip]
+generate = "paper000_tip"
+shape = 32
+seed = 0
+[[analysis]]
+name = "claims"
+model = "friction"
+paper000 = true
+topography = "scan"
+counter_topography = "tip"
+[[analysis.zip]]
+sample = ["Ra 1.45 nm", "Ra 1.7 nm"]
+"topographies.scan.sample" = ["Ra 1.45 nm", "Ra 1.7 nm"]
+[[analysis.zip]]
+reading = ["default", "default", "paper"]
+readings = [{}, {adhesive_range = "all_springs", base = "half_sphere"}, {}]
+"""
+    path = tmp_path / "study.toml"
+    path.write_text(text)
+    study = load_study(path)
+    cases = study.analyses[0].cases
+    assert len(cases) == 6
+    assert [c.parameters.readings for c in cases[:3]] == [
+        {},
+        {"adhesive_range": "all_springs", "base": "half_sphere"},
+        {},
+    ]
+    assert [c.parameters.reading for c in cases[:3]] == ["default", "default", "paper"]
+    assert {c.parameters.sample for c in cases[:3]} == {"Ra 1.45 nm"}
+
+
 @pytest.mark.parametrize(
     ("sweep", "zipped", "words"),
     [

@@ -547,7 +547,8 @@ class _Builder:
             self.notes.append(f"{where.label}: model {model!r} is now called {kind.name!r}; write that.")
         base = self._renamed(kind, where, {k: v for k, v in raw.items() if k not in ANALYSIS_KEYS})
         sweep = self._renamed(kind, where.child("sweep"), raw.get("sweep", {}))
-        zipped = self._renamed(kind, where.child("zip"), raw.get("zip", {}))
+        zips = self._zips(kind, where, raw.get("zip", {}))
+        zipped = {axis: values for group in zips for axis, values in group.items()}
         figures = raw.get("figures", list(kind.figures))
         unknown = [f for f in figures if f not in kind.figures] if isinstance(figures, list) else [figures]
         if unknown:
@@ -565,16 +566,17 @@ class _Builder:
         realisations = self._realisations(raw, where, sweep, zipped)
         axes_of_cases = sweep | ({"replicate": list(range(realisations))} if realisations > 1 else {})
         try:
-            rows = expand(axes_of_cases, zipped, where.label)
+            rows = expand(axes_of_cases, zips, where.label)
         except InputError as error:
             axis = error.field.removeprefix(where.label + ".").split(".")
             self.problem(Where((*where.path, *axis), error.field), error.problem, error.fix)
             return None
-        sections = {axis: "sweep" for axis in sweep} | {axis: "zip" for axis in zipped}
-        swept = {
-            axis: (section, list(dict.fromkeys(row[axis] for row in rows)))
-            for axis, section in sections.items()
+        sections = {axis: "sweep" for axis in sweep} | {
+            axis: "zip" if len(zips) == 1 else f"zip[{number}]"
+            for number, group in enumerate(zips)
+            for axis in group
         }
+        swept = {axis: (section, _distinct(row[axis] for row in rows)) for axis, section in sections.items()}
         cases = []
         before = len(self.problems)
         for number, axes in enumerate(rows):
@@ -626,6 +628,19 @@ class _Builder:
             )
             return 1
         return value
+
+    def _zips(self, kind: Kind, where: Where, raw: Any) -> list[dict]:
+        """Return the zip tables as a list: one ``[analysis.zip]`` or several ``[[analysis.zip]]``."""
+        if isinstance(raw, dict):
+            return [self._renamed(kind, where.child("zip"), raw)] if raw else []
+        if isinstance(raw, list) and all(isinstance(group, dict) for group in raw):
+            return [self._renamed(kind, where.child("zip"), group) for group in raw if group]
+        self.problem(
+            where.child("zip"),
+            f"expected a table of lists, or a list of such tables, got {raw!r}.",
+            'e.g. [analysis.zip] with sample = ["a", "b"] and normal_force = ["1 uN", "2 uN"].',
+        )
+        return []
 
     def _renamed(self, kind: Kind, where: Where, table: Any) -> Any:
         """Return ``table`` with the kind's deprecated keys under their names now, noting each."""
@@ -833,6 +848,14 @@ def build_study(document: dict, *, folder: Path, text: str, source: str, path: P
         prepared=builder.prepared,
         device=section.device,
     )
+
+
+def _distinct(values) -> list:
+    """Return the values once each, in first-seen order (tables of a swept ``readings`` included)."""
+    seen: dict[str, Any] = {}
+    for value in values:
+        seen.setdefault(json.dumps(value, sort_keys=True, default=str), value)
+    return list(seen.values())
 
 
 def load_study(path: str | Path) -> Study:

@@ -91,16 +91,18 @@ def _axis_values(value: Any, where: str) -> list:
     )
 
 
-def expand(sweep: dict, zipped: dict, where: str) -> list[dict[str, Any]]:
-    """Return one ``{axis: value}`` dictionary per case: the product of the sweep axes and the zip axis.
+def expand(sweep: dict, zipped: dict | list[dict], where: str) -> list[dict[str, Any]]:
+    """Return one ``{axis: value}`` dictionary per case: the product of the sweep axes and the zip axes.
 
     Parameters
     ----------
     sweep : dict
         Axis -> list or range table; the cases are their Cartesian product, the first axis
         varying slowest.
-    zipped : dict
-        Axis -> list, all of one length; taken together as one more (last) axis.
+    zipped : dict or list of dict
+        Axis -> list, all of one length; taken together as one more (last) axis. A list of such
+        tables (``[[analysis.zip]]`` in a study file) is one axis per table, crossed with each
+        other in their order: the samples of one table against the model readings of another.
     where : str
         The analysis' field name for error messages.
 
@@ -110,18 +112,21 @@ def expand(sweep: dict, zipped: dict, where: str) -> list[dict[str, Any]]:
         One dictionary of raw (as written) values per case; ``[{}]`` without axes.
     """
     axes = {name: _axis_values(value, f"{where}.sweep.{name}") for name, value in sweep.items()}
-    overlap = set(axes) & set(zipped)
-    if overlap:
-        raise InputError(
-            f"{where}.zip", f"{sorted(overlap)} is both swept and zipped.", "keep it in one place."
-        )
+    groups = zipped if isinstance(zipped, list) else [zipped] if zipped else []
+    seen: set[str] = set(axes)
     rows: list[dict] = [{}]
-    if zipped:
-        lists = {name: _axis_values(value, f"{where}.zip.{name}") for name, value in zipped.items()}
+    for number, group in enumerate(groups):
+        field = f"{where}.zip" if len(groups) == 1 else f"{where}.zip[{number}]"
+        overlap = seen & set(group)
+        if overlap:
+            raise InputError(field, f"{sorted(overlap)} is both swept and zipped.", "keep it in one place.")
+        seen |= set(group)
+        lists = {name: _axis_values(value, f"{field}.{name}") for name, value in group.items()}
         lengths = {name: len(values) for name, values in lists.items()}
         if len(set(lengths.values())) > 1:
-            raise InputError(f"{where}.zip", f"zipped lists differ in length: {lengths}.", "make them equal.")
-        rows = [dict(zip(lists, values, strict=True)) for values in zip(*lists.values(), strict=True)]
+            raise InputError(field, f"zipped lists differ in length: {lengths}.", "make them equal.")
+        zipped_rows = [dict(zip(lists, values, strict=True)) for values in zip(*lists.values(), strict=True)]
+        rows = [row | other for row in rows for other in zipped_rows]
     names = list(axes)
     return [
         dict(zip(names, values, strict=True)) | row
