@@ -31,6 +31,20 @@ def test_table_and_figure(capsys, tmp_path):
     assert (tmp_path / "out" / "figures" / "indentation_indentation.png").stat().st_size > 0
 
 
+def test_the_command_prints_the_hardness(capsys, tmp_path, scalars):
+    status, out, _ = run(capsys, "nanoindent", EXAMPLE, "-o", tmp_path / "out")
+    assert status == 0
+    lines = {line.split()[0]: line.split()[1:] for line in out.splitlines() if line.startswith("  ")}
+    assert lines["hardness"] == ["60.33", "MPa"]  # built with an assumed 60 MPa (the file's header)
+    assert lines["uncorrected_hardness"][1] == "MPa"
+    report = (tmp_path / "out" / "report.html").read_text()
+    assert ">hardness<" in report and "60.33" in report
+    _, document, _ = run(capsys, "nanoindent", EXAMPLE, "--json")
+    found = scalars(document)
+    assert found["hardness"] == pytest.approx(found["max_load"] / (24.5 * found["contact_depth"] ** 2))
+    assert found["hardness"] == pytest.approx(60.3e6, rel=2e-3)
+
+
 def test_printed_rate_sign_raises_the_modulus(capsys, scalars):
     _, out, _ = run(capsys, "nanoindent", EXAMPLE, "--json")
     _, printed, _ = run(capsys, "nanoindent", EXAMPLE, "--json", "--rate-sign", "printed")

@@ -33,3 +33,14 @@ def test_figure_has_fit_tangent_and_labels(tmp_path):
     assert np.isfinite(lines["loading"].get_ydata()).all()
     fig.savefig(tmp_path / "fig.png")
     assert (tmp_path / "fig.png").stat().st_size > 0
+
+
+def test_title_gives_the_modulus_and_the_hardness():
+    from roughcontact.plotting.indentation import plot_indentation_record
+
+    result = oliver_pharr(synthetic_indentation_curve(0.98e9, hardness=60e6, sampling_rate=2.0))
+    _, ax = plot_indentation(result)
+    assert "E = 980 MPa, H = 60 MPa (E_r = " in ax.get_title()
+    older = {k: v for k, v in result.scalars().items() if k != "hardness"}  # a record stored before H
+    _, ax = plot_indentation_record(result.to_xarray(), older)
+    assert ax.get_title().startswith("E = 980 MPa (E_r = ")

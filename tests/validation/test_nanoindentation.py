@@ -111,6 +111,47 @@ def test_paper001_example_csv_reads_back_hdpe_modulus():
     assert result.unloading_rate == pytest.approx(-20e-3 / 60.0, rel=0.01)
 
 
+def test_hardness_is_the_peak_load_over_the_berkovich_area_at_the_contact_depth(creeping):
+    result = oliver_pharr(creeping)
+    # closed form of the ideal Berkovich tip: H = F_max / (24.5 d_c^2), d_c from eq. 7 with S_e
+    d_c = result.max_depth - 0.75 * result.max_load / result.corrected_stiffness
+    assert result.contact_depth == pytest.approx(d_c, rel=1e-12)
+    assert result.hardness == pytest.approx(result.max_load / (24.5 * d_c**2), rel=1e-12)
+    d_plain = result.max_depth - 0.75 * result.max_load / result.stiffness  # plain Oliver-Pharr: S
+    assert result.uncorrected_hardness == pytest.approx(result.max_load / (24.5 * d_plain**2), rel=1e-12)
+    # S_e < S puts d_c shallower, so the corrected area is smaller and the hardness higher
+    assert result.hardness > result.uncorrected_hardness
+    assert result.scalars()["hardness"] == result.hardness and result.UNITS["hardness"] == "Pa"
+
+
+def test_hardness_recovers_the_one_the_curve_was_built_with():
+    # without creep the generator's d_c solves A_c(d_c) = F_max / H exactly: H comes back to 1e-6
+    result = oliver_pharr(synthetic_indentation_curve(E_HDPE, hardness=75e6, creep_rate=0.0))
+    assert result.hardness == pytest.approx(75e6, rel=1e-6)
+    assert result.uncorrected_hardness == pytest.approx(75e6, rel=1e-6)
+
+
+def test_hardness_uses_the_area_function_of_the_modulus():
+    def blunt(depth):  # a tip with a rounded apex: Oliver and Pharr's series, two terms
+        return 24.5 * depth**2 + 2.0e-6 * depth
+
+    curve = synthetic_indentation_curve(E_HDPE, area_function=blunt, creep_rate=0.0)
+    result = oliver_pharr(curve, area_function=blunt)
+    assert result.contact_area == pytest.approx(blunt(result.contact_depth), rel=1e-12)
+    assert result.hardness == pytest.approx(result.max_load / blunt(result.contact_depth), rel=1e-12)
+    assert result.hardness == pytest.approx(60e6, rel=1e-6)  # the generator's default hardness
+    assert result.youngs_modulus == pytest.approx(E_HDPE, rel=1e-6)
+
+
+def test_paper001_example_csv_reads_back_its_assumed_hardness():
+    header = EXAMPLE.read_text().splitlines()[:5]
+    assert any("hardness 60 MPa" in line for line in header)  # the assumption the file was built with
+    result = oliver_pharr(read_indentation_csv(EXAMPLE))
+    # 60.3 MPa: the 1 nm noise and the power law's fit to the creep-bent top move d_c by 0.3 %
+    assert result.hardness == pytest.approx(60.3e6, rel=2e-3)
+    assert result.hardness == pytest.approx(result.max_load / (24.5 * result.contact_depth**2), rel=1e-12)
+
+
 def test_indenter_stiffer_than_measured_is_refused(creeping):
     # a diamond-stiff sample read with depths 1000x too small: E_r beyond the indenter's own
     with pytest.raises(InputError) as error:

@@ -1,4 +1,4 @@
-"""The ``nanoindent`` command: a sample's modulus from a load-displacement CSV (paper 001 eqs. 5-8).
+"""The ``nanoindent`` command: sample modulus and hardness from a load-displacement CSV (paper 001 eqs. 5-8).
 
 A view of the study model ``nanoindentation`` (:mod:`roughcontact.study.kinds.nanoindentation`).
 """
@@ -12,7 +12,8 @@ from .options import CommandStudy, add_output_options, new_command, options
 from .output import run_command
 
 COMMANDS = {
-    "nanoindent": "sample modulus from a load-displacement CSV: Oliver-Pharr with the hold-creep correction",
+    "nanoindent": "sample modulus and hardness from a load-displacement CSV: Oliver-Pharr with the "
+    "hold-creep correction",
 }
 """This module's commands and their lines in ``roughcontact --help``."""
 
@@ -38,7 +39,8 @@ def add_commands(commands) -> None:
         "Oliver-Pharr analysis with Tang-Ngan's viscous correction as in seed paper 001 "
         "eqs. 5-8 (study model 'nanoindentation'): power law fitted to the upper unloading curve, creep "
         "rate from the hold at maximum load, unloading rate from the onset of unloading, ideal Berkovich "
-        "area 24.5 d_c^2. Columns are found by name (depth/displacement, load/force, time) with units in "
+        "area 24.5 d_c^2; the hardness H = F_max / A_c(d_c) on the same contact area (Oliver and Pharr "
+        "2004). Columns are found by name (depth/displacement, load/force, time) with units in "
         "the header, e.g. 'depth (nm)', or given with the options.",
     )
     nanoindent.add_argument("file", type=Path, help="CSV with depth, load and (optional) time columns")

@@ -45,11 +45,12 @@ def plot_indentation_record(data, scalars: dict, *, ax: Axes | None = None, titl
     scalars : dict
         :meth:`IndentationResult.scalars`: the fit (``fit_alpha``, ``fit_final_depth``,
         ``fit_exponent``, ``fit_range_low``, ``fit_range_high``), ``max_depth``, ``max_load``,
-        ``stiffness``, ``corrected_stiffness``, ``contact_depth``, the moduli and ``rate_sign``.
+        ``stiffness``, ``corrected_stiffness``, ``contact_depth``, the moduli, ``hardness`` (shown in
+        the title where the record has it) and ``rate_sign``.
     ax : Axes, optional
         Where to draw.
     title : str, optional
-        Put before the moduli in the title (e.g. the file's name).
+        Put before the moduli and the hardness in the title (e.g. the file's name).
 
     Returns
     -------
@@ -89,9 +90,11 @@ def plot_indentation_record(data, scalars: dict, *, ax: Axes | None = None, titl
     ax.axvline(scalars["contact_depth"] / nm, color="0.5", lw=0.8, ls=":", label="contact depth d_c")
     ax.set_xlabel(f"depth d ({_DEPTH_UNIT})")
     ax.set_ylabel(f"load F ({_LOAD_UNIT})")
+    hardness = scalars.get("hardness")  # a record stored before the hardness was reported has none
     moduli = (
-        f"E = {format_si(scalars['youngs_modulus'], 'Pa', digits=3)} "
-        f"(E_r = {format_si(scalars['reduced_modulus'], 'Pa', digits=3)}, "
+        f"E = {format_si(scalars['youngs_modulus'], 'Pa', digits=3)}"
+        + ("" if hardness is None else f", H = {format_si(hardness, 'Pa', digits=3)}")
+        + f" (E_r = {format_si(scalars['reduced_modulus'], 'Pa', digits=3)}, "
         f"rate sign: {scalars['rate_sign']})"
     )
     ax.set_title(f"{title}\n{moduli}" if title else moduli, fontsize="medium")

@@ -1,4 +1,4 @@
-r"""Oliver-Pharr modulus from a load-displacement curve, with the viscous hold-creep correction.
+r"""Oliver-Pharr modulus and hardness from a load-displacement curve, with the viscous hold-creep correction.
 
 Seed paper 001 measures the moduli of its HDPE and POM balls by nanoindentation (Berkovich tip,
 10 mN, 20 mN/min loading and unloading, 60 s hold; HDPE 0.98 GPa, POM 1.38 GPa, Table 2) and
@@ -15,6 +15,13 @@ Ngan, its eqs. 5-8:
 
     \frac{1 - \nu_s^2}{E_s} = \frac{1}{E_r} - \frac{1 - \nu_i^2}{E_i}        \quad (8)
 
+and the hardness, the mean pressure under the indenter at the maximum load (Oliver and Pharr
+1992 and 2004), on the same contact area as eq. 6:
+
+.. math::
+
+    H = \frac{F_{max}}{A_c(d_c)}
+
 S is the apparent stiffness dF/dd at the onset of unloading, from a power law
 F = alpha (d - d_f)^m fitted to the upper part of the unloading curve (Oliver and Pharr 1992);
 d_dot is the creep rate at the end of the hold at maximum load and F_dot the unloading rate at
@@ -30,6 +37,8 @@ Choices where the paper is silent or wrong (see ``docs/nanoindentation.md``):
   literal form for reproducing it.
 * The area function is not given: the default is the ideal Berkovich A_c = 24.5 d_c^2
   (:func:`berkovich_area`); pass ``area_function`` for a calibrated tip. beta = 1 as printed.
+  The hardness uses the same A_c(d_c), with d_c from the corrected stiffness S_e (paper 001
+  reports no hardness); ``uncorrected_hardness`` takes d_c from S, as plain Oliver-Pharr does.
 * The unloading power law is fitted between 20 % and 95 % of F_max (``fit_range``).
 * The creep rate at the end of the hold comes from the hold law of Feng and Ngan (2002)
   fitted to the whole hold (``creep_fit="tang_ngan"``), or from a straight line through its
@@ -44,6 +53,9 @@ References
 W. C. Oliver and G. M. Pharr, "An improved technique for determining hardness and elastic modulus
 using load and displacement sensing indentation experiments", J. Mater. Res. 7 (1992) 1564-1583.
 doi:10.1557/JMR.1992.1564.
+W. C. Oliver and G. M. Pharr, "Measurement of hardness and elastic modulus by instrumented
+indentation: advances in understanding and refinements to methodology", J. Mater. Res. 19 (2004)
+3-20. doi:10.1557/jmr.2004.19.1.3.
 B. Tang and A. H. W. Ngan, "Accurate measurement of tip-sample contact size during nanoindentation
 of viscoelastic materials", J. Mater. Res. 18 (2003) 1141-1148. doi:10.1557/JMR.2003.0156.
 Seed paper 001, eqs. 5-8, Fig. 7 and Table 2. doi:10.1115/1.4045900
@@ -107,11 +119,13 @@ class IndentationResult(NotebookDisplay):
         d_c of eq. 7 [m].
     contact_area : float
         A_c(d_c) [m^2].
+    hardness : float
+        H = F_max / A_c(d_c) [Pa] (Oliver and Pharr 2004), on the corrected contact area.
     reduced_modulus : float
         E_r of eq. 6 [Pa].
     youngs_modulus : float
         Sample modulus E_s of eq. 8 [Pa].
-    uncorrected_reduced_modulus, uncorrected_youngs_modulus : float
+    uncorrected_reduced_modulus, uncorrected_youngs_modulus, uncorrected_hardness : float
         The same with S in place of S_e (plain Oliver-Pharr) [Pa].
     creep_rate : float
         d_dot at the end of the hold [m/s; m per sample when ``time_basis`` is ``"sample"``].
@@ -144,10 +158,12 @@ class IndentationResult(NotebookDisplay):
     max_load: float
     contact_depth: float
     contact_area: float
+    hardness: float
     reduced_modulus: float
     youngs_modulus: float
     uncorrected_reduced_modulus: float
     uncorrected_youngs_modulus: float
+    uncorrected_hardness: float
     creep_rate: float
     unloading_rate: float
     time_basis: str
@@ -167,10 +183,12 @@ class IndentationResult(NotebookDisplay):
         "max_load": "N",
         "contact_depth": "m",
         "contact_area": "m^2",
+        "hardness": "Pa",
         "reduced_modulus": "Pa",
         "youngs_modulus": "Pa",
         "uncorrected_reduced_modulus": "Pa",
         "uncorrected_youngs_modulus": "Pa",
+        "uncorrected_hardness": "Pa",
         "creep_rate": "m/s",
         "unloading_rate": "N/s",
         "fit_final_depth": "m",
@@ -198,10 +216,12 @@ class IndentationResult(NotebookDisplay):
             "max_load": self.max_load,
             "contact_depth": self.contact_depth,
             "contact_area": self.contact_area,
+            "hardness": self.hardness,
             "reduced_modulus": self.reduced_modulus,
             "youngs_modulus": self.youngs_modulus,
             "uncorrected_reduced_modulus": self.uncorrected_reduced_modulus,
             "uncorrected_youngs_modulus": self.uncorrected_youngs_modulus,
+            "uncorrected_hardness": self.uncorrected_hardness,
             "creep_rate": self.creep_rate,
             "unloading_rate": self.unloading_rate,
             "time_basis": self.time_basis,
@@ -324,9 +344,10 @@ def oliver_pharr(
     hold_tolerance: float = 0.01,
     segments: Segments | None = None,
 ) -> IndentationResult:
-    """Sample modulus from a load-hold-unload curve: Oliver-Pharr with Tang-Ngan's correction.
+    """Sample modulus and hardness from a load-hold-unload curve: Oliver-Pharr with Tang-Ngan's correction.
 
-    Implements seed paper 001 eqs. 5-8 (see the module docstring for the equations and choices).
+    Implements seed paper 001 eqs. 5-8 and the hardness H = F_max / A_c(d_c) on the same contact
+    area (Oliver and Pharr 2004; see the module docstring for the equations and choices).
 
     Parameters
     ----------
@@ -440,7 +461,9 @@ def oliver_pharr(
         corrected, d_max, f_max, epsilon, beta, area_function, "corrected_stiffness"
     )
     youngs = _youngs(reduced, indenter, poissons_ratio)
-    _, _, reduced_plain = _modulus(stiffness, d_max, f_max, epsilon, beta, area_function, "stiffness")
+    _, plain_area, reduced_plain = _modulus(
+        stiffness, d_max, f_max, epsilon, beta, area_function, "stiffness"
+    )
     youngs_plain = _youngs(reduced_plain, indenter, poissons_ratio)
     return IndentationResult(
         stiffness=stiffness,
@@ -449,10 +472,12 @@ def oliver_pharr(
         max_load=f_max,
         contact_depth=d_c,
         contact_area=area,
+        hardness=f_max / area,
         reduced_modulus=reduced,
         youngs_modulus=youngs,
         uncorrected_reduced_modulus=reduced_plain,
         uncorrected_youngs_modulus=youngs_plain,
+        uncorrected_hardness=f_max / plain_area,
         creep_rate=creep.rate,
         unloading_rate=f_dot,
         time_basis="time" if curve.time is not None else "sample",

@@ -1,18 +1,19 @@
-r"""Study kind ``nanoindentation``: a sample's modulus from a load-displacement curve (paper 001 eqs. 5-8).
+r"""Study kind ``nanoindentation``: a sample's modulus and hardness from a load-displacement curve.
 
 One case is one indentation record (a CSV of depth, load and, where recorded, time; columns found
 by name, units from the header or the ``*_unit`` keys;
 :func:`~roughcontact.experiment.nanoindentation.read_indentation_csv`) analysed by
 :func:`~roughcontact.experiment.nanoindentation.oliver_pharr`: Oliver and Pharr's method with
 Tang and Ngan's correction for the creep at the end of the hold, as paper 001 measures its balls'
-moduli (Table 2):
+moduli (Table 2, eqs. 5-8), and the hardness on the same contact area (Oliver and Pharr 2004):
 
 .. math::
 
     \frac{1}{S_e} = \frac{1}{S} + \frac{\dot d}{|\dot F|} \quad (5), \qquad
     E_r = \frac{\sqrt{\pi}}{2 \beta} \frac{S_e}{\sqrt{A_c(d_c)}} \quad (6), \qquad
     d_c = d_{max} - \epsilon \frac{F_{max}}{S_e} \quad (7), \qquad
-    \frac{1 - \nu_s^2}{E_s} = \frac{1}{E_r} - \frac{1 - \nu_i^2}{E_i} \quad (8).
+    \frac{1 - \nu_s^2}{E_s} = \frac{1}{E_r} - \frac{1 - \nu_i^2}{E_i} \quad (8), \qquad
+    H = \frac{F_{max}}{A_c(d_c)}.
 
 The readings where the paper is wrong or silent are named keys: ``rate_sign`` (``magnitude``,
 default: |F_dot| in eq. 5, so creep lowers the stiffness; ``printed``: the signed unloading rate
@@ -21,19 +22,21 @@ end of the hold, or none) and the ideal Berkovich area A_c = 24.5 d_c^2 (the pap
 The file is read when the study is validated.
 
 Scalars: :meth:`~roughcontact.experiment.nanoindentation.IndentationResult.scalars` (the sample's
-Young's modulus with and without the correction, the reduced modulus, stiffnesses, contact depth
-and area, the rates). Dataset: its ``to_xarray()`` (the curve, its segments and the fitted
-unloading law). Figure: ``indentation`` (the curve, the fit and the tangent at the onset of
-unloading, paper 001 Fig. 7).
+Young's modulus and the hardness with and without the correction, the reduced modulus,
+stiffnesses, contact depth and area, the rates). Dataset: its ``to_xarray()`` (the curve, its
+segments and the fitted unloading law). Figure: ``indentation`` (the curve, the fit and the
+tangent at the onset of unloading, paper 001 Fig. 7).
 
 References
 ----------
-Oliver and Pharr (1992), doi:10.1557/JMR.1992.1564; Tang and Ngan (2003), doi:10.1557/JMR.2003.0156;
+Oliver and Pharr (1992), doi:10.1557/JMR.1992.1564; Oliver and Pharr (2004),
+doi:10.1557/jmr.2004.19.1.3; Tang and Ngan (2003), doi:10.1557/JMR.2003.0156;
 seed paper 001, eqs. 5-8, Fig. 7, Table 2 (doi:10.1115/1.4045900).
 """
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import Annotated, Literal
 
@@ -97,6 +100,21 @@ class NanoindentationParameters(CaseParameters):
         return self
 
 
+POSITIVE = (
+    "youngs_modulus",
+    "reduced_modulus",
+    "uncorrected_youngs_modulus",
+    "uncorrected_reduced_modulus",
+    "hardness",
+    "uncorrected_hardness",
+    "max_depth",
+    "max_load",
+    "contact_depth",
+)
+"""Scalars that cannot be negative although their names do not say so (moduli, hardness, depths, load):
+a spread over several curves (measured spots zipped with ``replicate``) stays above 0."""
+
+
 def _read(parameters: NanoindentationParameters):
     from ...experiment.nanoindentation import read_indentation_csv
 
@@ -117,7 +135,7 @@ def check(parameters: NanoindentationParameters) -> None:
 
 
 def run(parameters: NanoindentationParameters, inputs) -> CaseOutput:
-    """Analyse the record: Oliver-Pharr with the hold-creep correction (eqs. 5-8)."""
+    """Analyse the record: Oliver-Pharr with the hold-creep correction (eqs. 5-8), and the hardness."""
     from ...experiment.nanoindentation import oliver_pharr
 
     result = oliver_pharr(
@@ -135,14 +153,15 @@ def run(parameters: NanoindentationParameters, inputs) -> CaseOutput:
 
 KIND = Kind(
     name="nanoindentation",
-    summary="sample modulus from a load-displacement curve: Oliver-Pharr with the hold-creep correction "
-    "(paper 001 eqs. 5-8)",
+    summary="sample modulus and hardness from a load-displacement curve: Oliver-Pharr with the hold-creep "
+    "correction (paper 001 eqs. 5-8)",
     parameters=NanoindentationParameters,
     run=run,
     units=IndentationResult.UNITS,
     figures={"indentation": figure("indentation.indentation_figure")},
     check=check,
-    headline=("youngs_modulus", "uncorrected_youngs_modulus", "reduced_modulus", "contact_depth"),
+    headline=("youngs_modulus", "uncorrected_youngs_modulus", "reduced_modulus", "hardness", "contact_depth"),
+    bounds=dict.fromkeys(POSITIVE, (0.0, math.inf)),
     references=(
         "paper001",
         "oliver1992",
