@@ -288,7 +288,7 @@ def test_paper001_on_realisations_of_the_ball(capsys, tmp_path):
         tmp_path / "out",
     )
     assert status == 0, err
-    assert "spread over 3 realisations" in stdout and "Each case ran on 3 realisations" in stdout
+    assert "spread over 3 realisations" in stdout and "Each setting ran on 3 realisations" in stdout
     spread = (tmp_path / "out" / "tables" / "presliding_lateral_stiffness_spread.csv").read_text()
     assert spread.count("\n") == 4 and "rough vs smooth (johnson)" in spread
     assert (tmp_path / "out" / "figures" / "presliding_lateral_stiffness.png").exists()

@@ -5,6 +5,7 @@ import math
 import pytest
 
 from roughcontact.study import load_study, run_study
+from roughcontact.study.methods import methods_paragraph
 from roughcontact.study.outputs import read_study
 from roughcontact.study.report import write_report
 from study_documents import ADHESION_CYCLE, adhesive_ball
@@ -94,3 +95,95 @@ def test_the_rule_stated_is_the_one_that_gives_the_case_its_value():
     )
     assert "√(γ₁ γ₂) (paper 000 as printed) = 60 mJ/m²" in _work_of_adhesion(record(root), materials)
     assert _work_of_adhesion(record(0.1), materials) == "Work of adhesion Δγ = 100 mJ/m²."  # no rule gives it
+
+
+REALISATIONS = """
+[study]
+name = "realisations in words"
+seed = 3
+
+[topographies.scan]
+generate = "self_affine"
+shape = 32
+size = "2 um"
+hurst = 0.8
+rms_height = "5 nm"
+
+[[analysis]]
+name = "contact"
+model = "normal"
+topography = "scan"
+material = "polysilicon"
+realisations = 2
+
+[analysis.sweep]
+mean_pressure = ["10 MPa", "40 MPa", "80 MPa"]
+"""
+
+
+@pytest.fixture(scope="module")
+def realised(tmp_path_factory):
+    from roughcontact.study import answer
+
+    folder = tmp_path_factory.mktemp("realised")
+    path = folder / "study.toml"
+    path.write_text(REALISATIONS)
+    return answer(load_study(path), folder / "out")
+
+
+def test_a_case_is_one_realisation_of_one_setting(realised):
+    import html
+    import json
+
+    provenance = json.loads((realised.folder / "provenance.json").read_text())
+    (text,) = methods_paragraph(realised.analyses, provenance, [])[2:]
+    words = "3 settings, each on 2 realisations (one case per realisation)."
+    assert f"6 cases over mean pressure, replicate: {words}" in text
+    assert "each on 2 realisations of" not in text  # the old words: 6 cases, each on 2 realisations
+    page = html.unescape(realised.report.read_text())
+    assert "3 settings, each on 2 realisations (one case per realisation)" in page
+    assert (
+        "Each setting ran on 2 realisations of the generated surface(s) scan, one case per realisation"
+        in page
+    )
+    lines = "\n".join(realised.text_lines())
+    assert "Each setting ran on 2 realisations" in lines and "Each case ran on" not in lines
+
+
+def test_a_setting_short_of_its_realisations_is_said(realised):
+    from dataclasses import replace
+
+    from roughcontact.study.methods import _realisations
+
+    (analysis,) = realised.analyses
+    assert _realisations(analysis) == "3 settings, each on 2 realisations (one case per realisation)"
+    partial = replace(analysis, records=(None, *analysis.records[1:]))  # one case not stored yet
+    assert (
+        _realisations(partial)
+        == "3 settings, each on 1 to 2 of the 2 planned realisations (one case per realisation)"
+    )
+    one = replace(analysis, records=analysis.records[:2])
+    assert _realisations(one) == "one setting on 2 realisations (one case per realisation)"
+
+
+def test_the_report_marks_an_interval_cut_at_its_bound_and_says_why_under_the_table(realised):
+    import csv
+
+    with (realised.folder / "tables" / "contact_spread.csv").open() as handle:
+        stored = list(csv.DictReader(handle))
+    cut = [row for row in stored if row["note"]]
+    assert cut, "two realisations of a positive quantity: Student's interval (t = 12.7) reaches below 0"
+    assert all(
+        float(row["ci95_low"]) >= 0
+        for row in stored
+        if row["quantity"] in ("contact_area", "contact_fraction")
+    )
+    assert all(row["note"].startswith("95 % interval cut at ") for row in cut)
+    page = realised.report.read_text()
+    section = page[page.index("<h3>spread</h3>") :]
+    section = section[: section.index("<h3>", 4) if "<h3>" in section[4:] else len(section)]
+    assert '<td class="text ">[1]</td>' in section and '<th class="text">note</th>' in section
+    assert '<p class="note">[1] 95 % interval cut at ' in section
+    assert section.count("95 % interval cut at") == len({row["note"] for row in cut})  # each reason once
+    lines = realised.text_lines()
+    assert any(line.startswith("    note: [1] 95 % interval cut at ") for line in lines)

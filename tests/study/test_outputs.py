@@ -210,3 +210,89 @@ def test_figures_drawn_from_the_same_inputs_are_kept_not_redrawn(tmp_path):
     data["seconds"] = (data.get("seconds") or 0) + 1.0
     record.write_text(json.dumps(data))
     assert any(p.stat().st_mtime_ns != stamps[p] for p in draw_figures(out, dpi=80)[0])
+
+
+# --- the spread over realisations keeps to the range its quantity can take ---------------------------
+
+
+def _realisations(kind_name, scalars_per_realisation, tmp_path):
+    """A stored analysis of one setting whose cases are realisations with the given scalars (no solving)."""
+    from roughcontact.study.kind import CaseRecord
+    from roughcontact.study.kinds import get_kind
+    from roughcontact.study.outputs import StoredAnalysis
+
+    records = tuple(
+        CaseRecord(
+            {
+                "case": f"case{r}",
+                "status": "done",
+                "parameters": {"sample": "", "replicate": r},
+                "axes": {"replicate": r},
+                "scalars": scalars,
+            },
+            tmp_path,
+        )
+        for r, scalars in enumerate(scalars_per_realisation)
+    )
+    kind = get_kind(kind_name)
+    cases = tuple(r["case"] for r in records)
+    return StoredAnalysis("a", kind, kind.summary, (), None, (), cases, records, len(records), ("s",))
+
+
+def _row(rows, quantity):
+    (row,) = [r for r in rows if r["quantity"] == quantity]
+    return row
+
+
+def test_a_fraction_near_1_over_three_realisations_keeps_its_interval_below_1(tmp_path):
+    from roughcontact.spread import spread
+    from roughcontact.study.outputs import spread_rows
+
+    values = [0.99, 1.0, 1.0]  # Student's interval of the mean: 0.9967 +- 0.0143, up to 1.011
+    assert spread(values).ci95_high > 1.01
+    analysis = _realisations("normal", [{"contact_fraction": v} for v in values], tmp_path)
+    row = _row(spread_rows(analysis), "contact_fraction")
+    assert row["n"] == 3 and row["mean"] == pytest.approx(0.99667, rel=1e-4)
+    assert row["ci95_high"] == 1.0 and row["ci95_low"] == pytest.approx(0.99667 - 0.01434, rel=1e-3)
+    assert "cut at 1" in row["note"] and "[0, 1]" in row["note"]
+
+
+def test_a_positive_quantity_over_two_realisations_keeps_its_interval_above_0(tmp_path):
+    from roughcontact.study.outputs import spread_rows
+
+    # n = 2: t_{0.975, 1} = 12.71, so the interval of the mean reaches 12.7 std below it
+    records = [{"contact_area": 1e-12, "approach": -1e-9}, {"contact_area": 3e-12, "approach": 1e-9}]
+    rows = spread_rows(_realisations("normal", records, tmp_path))
+    area = _row(rows, "contact_area")
+    assert area["ci95_low"] == 0.0 and area["ci95_high"] == pytest.approx(2e-12 + 12.706 * 1e-12, rel=1e-4)
+    assert "cut at 0" in area["note"] and "2 values" in area["note"]
+    approach = _row(rows, "approach")  # an approach may be negative (a pulled flat): not cut
+    assert approach["ci95_low"] == pytest.approx(-12.706e-9, rel=1e-4) and approach["note"] == ""
+
+
+def test_a_kind_names_the_bounds_its_names_do_not_tell(tmp_path):
+    from roughcontact.study.kinds import get_kind
+    from roughcontact.study.outputs import spread_rows
+
+    kind = get_kind("nanoindentation")
+    assert kind.bounds_of("youngs_modulus") == (0.0, float("inf"))  # by the kind: a modulus is positive
+    assert kind.bounds_of("contact_area") == (0.0, float("inf"))  # natural: an area
+    assert kind.bounds_of("unloading_rate") is None  # negative on unloading
+    assert get_kind("normal").bounds_of("max_pressure") is None
+    rows = spread_rows(_realisations("nanoindentation", [{"hardness": 50e6}, {"hardness": 70e6}], tmp_path))
+    assert _row(rows, "hardness")["ci95_low"] == 0.0 and "cut at 0" in _row(rows, "hardness")["note"]
+
+
+def test_the_report_and_the_terminal_mark_a_cut_interval_and_say_why_once(tmp_path):
+    from roughcontact.study.outputs import footnoted, spread_rows
+
+    records = [
+        {"contact_fraction": f, "contact_area": a, "number_of_patches": n, "one_pixel_patches": n}
+        for f, a, n in ((0.99, 2.0e-12, 1), (1.0, 2.1e-12, 3), (1.0, 2.2e-12, 2))
+    ]
+    rows = spread_rows(_realisations("normal", records, tmp_path))
+    shown = footnoted(rows)
+    assert [r["note"] for r in shown] == ["[1]", "", "[2]", "[2]"]  # the same reason, the same mark
+    assert shown.notes == (f"[1] {rows[0]['note']}", f"[2] {rows[2]['note']}")
+    assert "cut at 1" in rows[0]["note"] and "cut at 0" in rows[2]["note"]  # the stored rows keep theirs
+    assert footnoted(rows[1:2]) == rows[1:2] and not footnoted(rows[1:2]).notes

@@ -107,8 +107,8 @@ def test_spread_table_per_load_over_the_realisations(tmp_path):
         stored = list(csv.DictReader(handle))
     assert len(stored) == len(rows)
     lines = "\n".join(result.text_lines())
-    assert "spread over 4 realisations" in lines and "Each case ran on 4 realisations" in lines
-    assert "Each case ran on 4 realisations" in (tmp_path / "out" / "report.html").read_text()
+    assert "spread over 4 realisations" in lines and "Each setting ran on 4 realisations" in lines
+    assert "Each setting ran on 4 realisations" in (tmp_path / "out" / "report.html").read_text()
 
 
 def test_a_partly_run_ensemble_resumes(tmp_path):

@@ -32,6 +32,7 @@ from .display import columns, missing_text, shown, text_table
 from .kind import CaseRecord
 from .outputs import (
     StoredAnalysis,
+    footnoted,
     headline_rows,
     in_memory,
     produce,
@@ -89,7 +90,7 @@ class StudyAnswer:
             for name, rows in ((n, r) for a, n, r in tables if a == analysis.name):
                 if name == "spread":
                     headline = set(analysis.kind.headline)
-                    rows = [row for row in rows if row["quantity"] in headline] or rows
+                    rows = footnoted([row for row in rows if row["quantity"] in headline] or rows)
                     name = f"spread over {analysis.realisations} realisations (headline quantities)"
                 lines.append(f"  table {name}:")
                 lines += table_lines(rows, indent="    ", missing=analysis.kind.missing)

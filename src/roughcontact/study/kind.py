@@ -258,6 +258,11 @@ class Kind:
     references : tuple of str
         Keys of :data:`roughcontact.references.REFERENCES`: the papers and books the model
         implements, listed in a study's ``provenance.json`` and printed by ``roughcontact cite``.
+    bounds : mapping
+        Scalar name -> the range it can take, ``(low, high)``, or None for unbounded, where
+        :func:`roughcontact.spread.natural_bounds` cannot tell it from the name and unit (a
+        modulus or a hardness is positive, a stress is not): the spread table cuts a 95 %
+        interval over realisations at it, with a note. Names not listed take the natural bounds.
     """
 
     name: str
@@ -274,3 +279,12 @@ class Kind:
     renamed: Mapping[str, str] = field(default_factory=dict)
     missing: Mapping[str, str] = field(default_factory=dict)
     references: tuple[str, ...] = ()
+    bounds: Mapping[str, tuple[float, float] | None] = field(default_factory=dict)
+
+    def bounds_of(self, name: str) -> tuple[float, float] | None:
+        """Return the range the scalar ``name`` can take: :attr:`bounds`, else its natural bounds."""
+        from ..spread import natural_bounds
+
+        if name in self.bounds:
+            return self.bounds[name]
+        return natural_bounds(name, self.units.get(name))

@@ -78,7 +78,7 @@ def _analysis(analysis, materials: dict[str, dict]) -> str:
     if varied:
         text += " over " + ", ".join(varied)
     if analysis.realisations > 1:
-        text += f", each on {analysis.realisations} realisations of its random surfaces"
+        text += ": " + _realisations(analysis)
     text += "."
     first = records[0]
     settings = [
@@ -96,6 +96,27 @@ def _analysis(analysis, materials: dict[str, dict]) -> str:
         text += " Model readings: " + ", ".join(readings) + "."
     combined = combined_quantities(analysis, materials)
     return " ".join([text, *combined])
+
+
+def _realisations(analysis) -> str:
+    """Say how an analysis' finished cases make up its settings and realisations (one case each).
+
+    A case is one realisation of one setting (a load, a sample, ...): 30 cases of 6 settings on 5
+    realisations read ``6 settings, each on 5 realisations (one case per realisation)``, never "30
+    cases each on 5 realisations". Settings of an unfinished study may have fewer; the words say so.
+    """
+    from ..plotting.cases import realisations_of
+
+    sizes = [len(group) for group in realisations_of(analysis.finished).values()]
+    if not sizes:
+        return f"none of its {analysis.realisations} realisations finished"
+    low, high = min(sizes), max(sizes)
+    on = f"{high}" if low == high else f"{low} to {high}"
+    planned = analysis.realisations
+    planned = "" if low == high == planned else f" of the {planned} planned"
+    if len(sizes) == 1:
+        return f"one setting on {on}{planned} realisations (one case per realisation)"
+    return f"{len(sizes)} settings, each on {on}{planned} realisations (one case per realisation)"
 
 
 def combined_quantities(analysis, materials: dict[str, dict]) -> list[str]:

@@ -18,7 +18,7 @@ from ..errors import InputError
 from .display import columns, header
 from .kind import CaseRecord, FigureContext, Kind
 from .schema import STORED
-from .store import read_record, replacing, write_table
+from .store import Table, notes_of, read_record, replacing, write_table
 
 log = logging.getLogger(__name__)
 
@@ -200,10 +200,13 @@ def spread_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
     zipped with ``replicate``) are its realisations too; a row names the group by its sample and
     the swept values its cases share. Each numeric scalar of the group's finished cases is
     summarised by :func:`roughcontact.spread.spread` (n, mean, std, 95 % interval of the mean,
-    min, max), with its SI ``unit``. A scalar equal in every realisation to 1e-6 relative (an input
-    such as the force of a force-controlled case, reached to its solver's tolerance, or a material
-    constant) does not depend on the draw and is left out. Empty for an analysis of one
-    realisation.
+    min, max, note), with its SI ``unit``. The interval stays within the range the quantity can
+    take (:meth:`~roughcontact.study.kind.Kind.bounds_of`: a fraction in [0, 1], an area or a
+    stiffness not below 0), and the row's ``note`` says where Student's interval was cut there
+    (two realisations of a positive quantity, a stick fraction near 1). A scalar equal in every
+    realisation to 1e-6 relative (an input such as the force of a force-controlled case, reached
+    to its solver's tolerance, or a material constant) does not depend on the draw and is left
+    out. Empty for an analysis of one realisation.
     """
     from ..plotting.cases import realisations_of
     from ..spread import spread
@@ -220,11 +223,34 @@ def spread_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
     for where, records in groups:
         names = dict.fromkeys(n for r in records for n, v in r.scalars.items() if _numeric(v))
         for name in names:
-            summary = spread(r.scalars[name] for r in records if _numeric(r.scalars.get(name)))
+            summary = spread(
+                (r.scalars[name] for r in records if _numeric(r.scalars.get(name))),
+                bounds=analysis.kind.bounds_of(name),
+            )
             if summary.n > 1 and summary.max - summary.min <= 1e-6 * max(abs(summary.max), abs(summary.min)):
                 continue
             rows.append(where | {"quantity": name, "unit": units.get(name) or ""} | summary.row())
     return rows
+
+
+def footnoted(rows: list[dict[str, Any]]) -> Table:
+    """Return a spread table as a reader sees it: each row's ``note`` as a mark, the notes under the table.
+
+    The stored table (``tables/*_spread.csv``) keeps the whole sentence in every row, for a
+    program; a report or a terminal shows ``[1]`` in the row and ``[1] 95 % interval cut at 0:
+    ...`` once among the table's notes, so a cut interval is flagged without a column of
+    repeated sentences. Rows without a note stay blank there (the column is left out where no
+    row has one).
+    """
+    marks: dict[str, str] = {}
+    shown = []
+    for row in rows:
+        note = row.get("note") or ""
+        if note:
+            mark = marks.setdefault(note, f"[{len(marks) + 1}]")
+            row = row | {"note": mark}
+        shown.append(row)
+    return Table(shown, [*notes_of(rows), *(f"{mark} {note}" for note, mark in marks.items())])
 
 
 def _numeric(value: Any) -> bool:
@@ -395,10 +421,12 @@ def realisation_lines(analysis: StoredAnalysis) -> list[str]:
     """Return what an analysis' numbers rest on, where they rest on random draws of generated surfaces."""
     lines = []
     if analysis.redrawn and analysis.realisations > 1:
+        settings = max(1, len(analysis.cases) // analysis.realisations)
         lines.append(
-            f"Each case ran on {analysis.realisations} realisations of the generated surface(s) "
-            f"{', '.join(analysis.redrawn)}; the spread table gives their mean, std and the 95 % "
-            "interval of the mean."
+            f"Each setting ran on {analysis.realisations} realisations of the generated surface(s) "
+            f"{', '.join(analysis.redrawn)}, one case per realisation ({settings} setting"
+            f"{'s' if settings != 1 else ''}, {len(analysis.cases)} cases); the spread table gives their "
+            "mean, std and the 95 % interval of the mean over the realisations of each setting."
         )
     once = analysis.drawn_once if analysis.realisations > 1 else analysis.drawn_once + analysis.redrawn
     if once:

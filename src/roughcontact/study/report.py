@@ -23,6 +23,7 @@ from .methods import methods_paragraph, varied_axes
 from .outputs import (
     StoredAnalysis,
     draw_figures,
+    footnoted,
     headline_rows,
     read_study,
     realisation_lines,
@@ -170,6 +171,8 @@ def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) 
     for path in sorted((folder / "tables").glob(f"{analysis.name}_*.csv")):
         parts.append(f"<h3>{html.escape(path.stem.removeprefix(analysis.name + '_').replace('_', ' '))}</h3>")
         table = read_table(path)
+        if path.stem == f"{analysis.name}_spread":
+            table = footnoted(table)  # a cut interval's note once, under the table
         parts.append(_table(table, missing=dict(analysis.kind.missing)))
         parts += [f'<p class="note">{html.escape(note)}</p>' for note in notes_of(table)]
     for name in analysis.figures:
