@@ -46,6 +46,9 @@ def main() -> None:
     measured = {name: constructed(values, PAPER_P_VALUES[name]) for name, values in simulated.items()}
     result = compare(simulated, measured)
     lines = [
+        "# origin: synthetic",
+        "# by construction: built from roughcontact's default simulation of paper 000 (seed 0) to give the "
+        "paper's p values",
         "# SYNTHETIC DATA, NOT MEASURED. Paper 000 does not tabulate its measured mu (Figs. 8-9 only).",
         "# Built by examples/paper000_measured_mu.py from roughcontact's default simulation of the paper's",
         "# case (seed 0, polysilicon surface energy 50 mJ/m^2 assumed, default readings: adhesive friction",

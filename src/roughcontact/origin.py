@@ -79,6 +79,15 @@ class DataOrigin:
         return _WORDS[self.kind]
 
     @property
+    def values(self) -> str:
+        """The values named in a sentence: ``measured values``, ``values reconstructed from ...``."""
+        return (
+            "values reconstructed from reported statistics"
+            if self.kind is Origin.RECONSTRUCTED
+            else (f"{self.words} values")
+        )
+
+    @property
     def is_measured(self) -> bool:
         """True for measured data (and only then may a comparison call them measured)."""
         return self.kind is Origin.MEASURED
@@ -87,8 +96,8 @@ class DataOrigin:
         """Say in one sentence what a comparison with these values can show ('' for measured data)."""
         if self.by_construction:
             return (
-                f"The {self.words} values were built from this model's own output "
-                f"({self.by_construction}): any agreement is by construction, not a validation."
+                f"The {self.values} were built from this model's own output, so any agreement is by "
+                f"construction, not a validation (their file: {self.by_construction})."
             )
         if self.kind is Origin.SYNTHETIC:
             return "The values are synthetic: agreeing with them exercises the comparison, validates nothing."

@@ -133,6 +133,23 @@ class Spread:
             word = "not established"
         return Verdict(word, float(reference), of, (low, high), (self.ci95_low, self.ci95_high), self.n)
 
+    def within(self, low: float, high: float, *, of: str = "one") -> str:
+        """Say whether the interval of the claim lies inside the band [``low``, ``high``].
+
+        For a printed value read with a tolerance ("roughly 40": a band around 40). ``of`` as in
+        :meth:`verdict`. Returns ``inside`` where the whole interval lies in the band,
+        ``outside`` where it lies wholly outside it, ``not established`` where it straddles an
+        edge, ``one realisation`` without an interval.
+        """
+        interval = self.prediction() if of == "one" else (self.ci95_low, self.ci95_high)
+        if self.n < 2 or not all(math.isfinite(x) for x in interval):
+            return "one realisation"
+        if low <= interval[0] and interval[1] <= high:
+            return "inside"
+        if interval[1] < low or interval[0] > high:
+            return "outside"
+        return "not established"
+
     def row(self) -> dict[str, float | int | str]:
         """Return the summary as a table row (its keys are the attribute names, bounds left out)."""
         row = asdict(self)

@@ -11,6 +11,7 @@
 
 from __future__ import annotations
 
+import ast
 import math
 from dataclasses import replace
 
@@ -49,10 +50,13 @@ def test_paper000_example_end_to_end(tmp_path, shrunk, cli):
     output = tmp_path / "out"
     status, out, err = cli("run", study, "-o", output, "--no-progress")
     assert status == 0, err
-    assert "30 cases run, 0 reused, 0 failed" in out
+    # validation 9, claims 45 (five readings), two load sweeps of 27 (three scans each), 1 + 2
+    assert "111 cases run, 0 reused, 0 failed" in out
     _check_results_table(output)
     _check_comparison(output, study)
+    _check_claims(output)
     _check_figures_and_report(output)
+    _check_no_agreement_verdict(output, out)
 
 
 def _check_results_table(output):
@@ -80,14 +84,13 @@ def _check_results_table(output):
     # every scan has its own derived seed: no two cases of the validation give the same mu
     assert len({row["mu"] for row in rows}) == len(rows)
     sweep = _rows(output, "load_sweep")
-    assert len(sweep) == 3 * 3 and {row["status"] for row in sweep} == {"done"}
+    assert len(sweep) == 3 * 3 * 3 and {row["status"] for row in sweep} == {"done"}
     assert sorted({float(row["normal_force [N]"]) for row in sweep}) == pytest.approx(
         [1e-6, math.sqrt(1e-9), 1e-3]
     )
-    paper = _rows(output, "load_sweep_paper")  # reading = "paper": the preset's readings, a crossover each
-    assert len(paper) == 3 * 3 and {row["status"] for row in paper} == {"done"}
+    paper = _rows(output, "load_sweep_paper")  # reading = "paper": the preset's readings, three scans a load
+    assert len(paper) == 3 * 3 * 3 and {row["status"] for row in paper} == {"done"}
     assert all("base=half_sphere" in row["readings"] for row in paper)
-    assert all(float(row["crossover_load [N]"]) > 0 for row in paper)
 
 
 def _check_comparison(output, study):
@@ -101,8 +104,11 @@ def _check_comparison(output, study):
         test = stats.ttest_ind(simulated[sample], measured[sample], equal_var=False)
         assert float(row["p_value"]) == pytest.approx(test.pvalue, rel=1e-12)
         assert float(row["t_statistic"]) == pytest.approx(test.statistic, rel=1e-12)
-        assert (int(row["n_simulated"]), int(row["n_measured"])) == (3, 7)
-        assert row["agrees"] == str(test.pvalue > 0.1) and row["test"] == "welch"
+        assert (int(row["n_simulated"]), int(row["n_reconstructed"])) == (3, 7)
+        assert row["verdict"].startswith("by construction: no verdict") and row["test"] == "welch"
+        assert "measured_mean" not in row and float(row["reconstructed_mean"]) == pytest.approx(
+            np.mean(measured[sample]), rel=1e-12
+        )
         assert float(row["alpha"]) == 0.1
     means = [(np.mean(simulated[s]), np.mean(measured[s])) for s in SAMPLES]
     pearson = stats.pearsonr(*zip(*means, strict=True))
@@ -114,6 +120,64 @@ def _check_comparison(output, study):
         assert int(row["n"]) == 3
         assert float(row["mu_mean"]) == pytest.approx(np.mean(values), rel=1e-12)
         assert float(row["mu_std"]) == pytest.approx(np.std(values, ddof=1), rel=1e-12)
+
+
+def _check_claims(output):
+    """The claims table: five readings, each claim's verdict named by its interval, and what none keeps."""
+    table = read_table(output / "tables" / "claims_claims.csv")
+    readings = [row["reading"] for row in table]
+    assert readings == [
+        "default",
+        "default but adhesive_range=all_springs, base=half_sphere",
+        "default but mechanical_height=printed_separation, base=half_sphere",
+        "paper",
+        "paper but base=lowest_point",
+    ]
+    rows = _rows(output, "claims")
+    for row in table:
+        cases = [r for r in rows if _label(r) == row["reading"]]
+        ratios = [float(r["adhesive_to_mechanical"]) for r in cases]
+        assert int(row["adhesive_to_mechanical n"]) == len(ratios) == 9
+        assert float(row["adhesive_to_mechanical mean"]) == pytest.approx(np.mean(ratios), rel=1e-12)
+        low, high = float(row["adhesive_to_mechanical 95% prediction low"]), float(
+            row["adhesive_to_mechanical 95% prediction high"]
+        )
+        half = stats.t.ppf(0.975, 8) * np.std(ratios, ddof=1) * math.sqrt(1 + 1 / 9)
+        assert (low, high) == pytest.approx((np.mean(ratios) - half, np.mean(ratios) + half), rel=1e-9)
+        inside = 40 / 1.5 <= low and high <= 40 * 1.5
+        outside = high < 40 / 1.5 or low > 40 * 1.5
+        verdict = "kept" if inside else "not kept" if outside else "not established"
+        assert row["paper sec. 5: adhesive / mechanical about 40"] == verdict
+        assert float(row["adhesive_to_mechanical factor from paper"]) == pytest.approx(
+            max(40 / low, high / 40), rel=1e-9
+        )
+        assert row["paper sec. 5: p > 0.1"] == "no verdict: the values were built from this model"
+    default = table[0]
+    assert float(default["adhesive_to_mechanical mean"]) < 1  # mechanical dominates under the defaults
+    assert default["paper sec. 5: adhesive / mechanical about 40"] == "not kept"
+    notes = read_table(output / "tables" / "claims_claims.csv").notes
+    assert any("cannot be tested" in note for note in notes)
+    assert any(note.startswith("No reading keeps every claim") for note in notes)
+
+
+def _label(row):
+    """The reading of a results row in the claims table's words."""
+    from roughcontact.study.kinds.friction import reading_label
+
+    readings = ast.literal_eval(row["readings"]) if row["readings"].startswith("{") else {}
+    return reading_label({"reading": row["reading"] or None, "readings": readings})
+
+
+def _check_no_agreement_verdict(output, printed):
+    """Nothing the paper 000 example writes or prints calls the reconstructed mu measured or agreeing."""
+    report = (output / "report.html").read_text()
+    tables = [path.read_text() for path in (output / "tables").glob("*.csv")]
+    for text in [printed, report, *tables]:
+        assert "agrees" not in text and "measured_mean" not in text
+    for text in tables:  # the study file's comments in the report may say what the paper did not measure
+        assert "measured values" not in text and "n_measured" not in text
+    assert "by construction" in report
+    assert "Compared with values reconstructed from reported statistics." in report
 
 
 def _check_figures_and_report(output):
@@ -415,8 +479,9 @@ def test_mu_does_not_depend_on_the_units_the_study_is_written_in(tmp_path):
 
 def test_the_reported_csv_is_labelled_and_has_seven_values_per_sample(examples):
     text = (examples / "paper000_reported_mu.csv").read_text()
-    assert text.startswith("# RECONSTRUCTED FROM REPORTED STATISTICS")
+    assert text.startswith("# origin: reconstructed\n# by construction: ")
     measured = read_measured(examples / "paper000_reported_mu.csv")
+    assert measured.origin.word == "reconstructed" and measured.origin.by_construction
     assert list(measured) == SAMPLES
     assert all(values.size == 7 for values in measured.values())
 

@@ -49,7 +49,8 @@ def test_read_measured_skips_comments_and_refuses_bad_rows(tmp_path):
     values = read_measured(EXAMPLE)
     assert list(values) == ["Ra 1.45 nm", "Ra 1.49 nm", "Ra 1.7 nm"]
     assert all(len(v) == 7 for v in values.values())
-    assert "SYNTHETIC" in EXAMPLE.read_text().splitlines()[0]
+    assert EXAMPLE.read_text().splitlines()[0] == "# origin: synthetic"
+    assert values.origin.word == "synthetic" and values.origin.by_construction
     bad = tmp_path / "bad.csv"
     bad.write_text("sample,mu\na,0.3\na,high\n")
     with pytest.raises(InputError, match="row 2"):
@@ -59,6 +60,69 @@ def test_read_measured_skips_comments_and_refuses_bad_rows(tmp_path):
         read_measured(bad)
     with pytest.raises(InputError, match="does not exist"):
         read_measured(tmp_path / "missing.csv")
+    bad.write_text("sample,mu\na,0.3\na,-0.2\n")
+    with pytest.raises(InputError, match="row 2: mu -0.2 is negative") as refused:
+        read_measured(bad)
+    assert refused.value.field == "measured" and "half difference" in refused.value.fix
+    bad.write_text("# origin: simulated by hand\nsample,mu\na,0.3\na,0.2\n")
+    with pytest.raises(InputError, match="origin: simulated by hand") as refused:
+        read_measured(bad)
+    assert "'# origin: synthetic'" in refused.value.fix
+
+
+def _values(tmp_path, header: str):
+    path = tmp_path / "mu.csv"
+    path.write_text(header + "sample,mu\na,0.30\na,0.32\na,0.31\nb,0.40\nb,0.42\nb,0.43\n")
+    return read_measured(path)
+
+
+@pytest.mark.parametrize(
+    ("header", "word", "built"),
+    [
+        ("", "measured", None),
+        ("# friction loops, AFM, 2026-10-01\n", "measured", None),
+        ("# origin: measured\n# a synthetic tip was not used\n", "measured", None),
+        ("# origin: Synthetic\n", "synthetic", None),
+        ("# made with a synthetic surface generator\n", "synthetic", None),
+        (
+            "# Origin: reconstructed\n# By construction: our simulation, seed 3\n",
+            "reconstructed",
+            "our simulation, seed 3",
+        ),
+    ],
+)
+def test_the_origin_comes_from_the_header(tmp_path, header, word, built):
+    origin = _values(tmp_path, header).origin
+    assert origin.word == word and origin.by_construction == built
+    assert origin.declared == ("origin:" in header.lower())
+
+
+def test_a_comparison_names_its_data_and_gives_no_verdict_by_construction(tmp_path):
+    simulated = {"a": [0.30, 0.31, 0.33], "b": [0.41, 0.40, 0.44]}
+    measured = compare(simulated, _values(tmp_path, ""))
+    assert [row["verdict"] for row in measured.table()] == [
+        "agrees: p > 0.1" if s.p_value > 0.1 else "differs: p <= 0.1" for s in measured.samples
+    ]
+    assert "measured_mean" in measured.table()[0] and measured.notes() == ["Compared with measured values."]
+    synthetic = compare(simulated, _values(tmp_path, "# origin: synthetic\n"))
+    row = synthetic.table()[0]
+    assert "synthetic_mean" in row and "n_synthetic" in row and "measured_mean" not in row
+    assert synthetic.samples[0].agrees in (True, False)
+    assert "validates nothing" in " ".join(synthetic.notes())
+    built = compare(simulated, _values(tmp_path, "# origin: reconstructed\n# by construction: ours\n"))
+    assert built.by_construction and all(s.agrees is None for s in built.samples)
+    assert all(row["verdict"].startswith("by construction: no verdict") for row in built.table())
+    assert "reconstructed_mean" in built.table()[0]
+    notes = " ".join(built.notes())
+    assert "values reconstructed from reported statistics" in notes and "not a validation" in notes
+    fig, ax = plot_mu_boxes(built)
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == [
+        "simulated",
+        "reconstructed from reported statistics (built from this model)",
+    ]
+    assert "by construction" in ax.get_title() and "measured" not in ax.get_title()
+    fig, ax = plot_mu_means(synthetic)
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == ["simulated", "synthetic"]
 
 
 def test_paper000_case_inputs():

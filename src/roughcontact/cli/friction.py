@@ -107,7 +107,7 @@ def _friction_compare(args: argparse.Namespace) -> int:
     from ..papers import paper000
 
     command = CommandStudy(
-        "roughcontact friction-compare", f"simulated mu against the measured values of {args.measured.name}"
+        "roughcontact friction-compare", f"simulated mu against the values of {args.measured.name}"
     )
     if args.sample:
         names, samples, replicates = [], [], []

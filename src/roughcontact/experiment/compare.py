@@ -1,11 +1,17 @@
-"""Simulated vs measured friction per sample: two-sample t-tests and the Pearson r of the means.
+"""Simulated vs compared friction per sample: two-sample t-tests and the Pearson r of the means.
 
 Paper 000 validates its model by scanning each sample at several spots (seven), simulating mu for
 each scan against the AFM tip, measuring mu at as many spots, and comparing per sample with a
 two-sample t-test (p > 0.1 taken as agreement) and across samples with the Pearson correlation of
-the means (r = 0.96 in the paper). :func:`read_measured` reads the measured distributions from a
+the means (r = 0.96 in the paper). :func:`read_measured` reads the compared distributions from a
 CSV and :func:`compare` does the statistics; the simulated ones are paper 000's scenario
 (:func:`roughcontact.papers.paper000.simulate_mu`).
+
+The compared values keep their origin (:mod:`roughcontact.origin`): measured, reconstructed from
+reported statistics, or synthetic, as the CSV's header says, and every column, verdict and
+sentence of the comparison says which. Values built from this model's own output (the header's
+``# by construction:`` line) give no agreement verdict: their p values are what they were built
+to be.
 
 References
 ----------
@@ -17,8 +23,8 @@ Seed paper 000, section 5 (t-test p values 0.13, 0.12, 0.79; Pearson r 0.96).
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -27,22 +33,25 @@ from scipy import stats
 from .._deprecation import moved
 from .._text_table import read_text_table
 from ..errors import InputError
+from ..origin import MEASURED, DataOrigin
 
 
 @dataclass(frozen=True)
 class SampleComparison:
-    """Simulated and measured mu of one sample and their two-sample t-test.
+    """Simulated and compared mu of one sample and their two-sample t-test.
 
     Attributes
     ----------
     sample : str
         Sample name.
     simulated, measured : tuple of float
-        The mu values.
+        The mu values: simulated, and those compared with (measured, reconstructed or synthetic:
+        the :class:`Comparison`'s ``origin`` says which).
     t_statistic, p_value : float
         Two-sample t-test of the means (Welch unless ``equal_var`` was asked).
-    agrees : bool
-        ``p_value > alpha``: the test does not distinguish simulation from measurement.
+    agrees : bool or None
+        ``p_value > alpha``: the test does not distinguish simulation from the compared values;
+        None where those were built from this model's output (no verdict: by construction).
     """
 
     sample: str
@@ -50,7 +59,7 @@ class SampleComparison:
     measured: tuple[float, ...]
     t_statistic: float
     p_value: float
-    agrees: bool
+    agrees: bool | None
 
     @property
     def simulated_mean(self) -> float:
@@ -59,7 +68,7 @@ class SampleComparison:
 
     @property
     def measured_mean(self) -> float:
-        """Mean measured mu."""
+        """Mean compared mu (measured, reconstructed or synthetic)."""
         return float(np.mean(self.measured))
 
     @property
@@ -69,8 +78,14 @@ class SampleComparison:
 
     @property
     def measured_std(self) -> float:
-        """Sample standard deviation of the measured mu (ddof = 1)."""
+        """Sample standard deviation of the compared mu (ddof = 1)."""
         return float(np.std(self.measured, ddof=1))
+
+    def verdict(self, alpha: float) -> str:
+        """Say what the t-test shows: agrees, differs, or by construction (no verdict)."""
+        if self.agrees is None:
+            return "by construction: no verdict"
+        return f"agrees: p > {alpha:g}" if self.agrees else f"differs: p <= {alpha:g}"
 
 
 @dataclass(frozen=True)
@@ -87,6 +102,8 @@ class Comparison:
         Significance threshold of the t-tests.
     equal_var : bool
         Student's pooled-variance test (True) or Welch's (False).
+    origin : DataOrigin
+        Where the compared values come from (measured unless their file says otherwise).
     """
 
     samples: tuple[SampleComparison, ...]
@@ -94,24 +111,48 @@ class Comparison:
     pearson_p: float
     alpha: float
     equal_var: bool
+    origin: DataOrigin = MEASURED
+
+    @property
+    def by_construction(self) -> bool:
+        """True where the compared values were built from this model's output (no verdict)."""
+        return self.origin.by_construction is not None
 
     def table(self) -> list[dict]:
-        """Return one JSON-ready row per sample (means, standard deviations, t, p, agreement)."""
+        """Return one JSON-ready row per sample: means and spreads named by origin, t, p and verdict.
+
+        The compared columns are named for what the values are (``measured_mean``,
+        ``reconstructed_mean`` or ``synthetic_mean``), and ``verdict`` says "by construction"
+        instead of agreeing where they were built from this model's output.
+        """
+        word = self.origin.word
         return [
             {
                 "sample": s.sample,
                 "simulated_mean": s.simulated_mean,
                 "simulated_std": s.simulated_std,
-                "measured_mean": s.measured_mean,
-                "measured_std": s.measured_std,
+                f"{word}_mean": s.measured_mean,
+                f"{word}_std": s.measured_std,
                 "n_simulated": len(s.simulated),
-                "n_measured": len(s.measured),
+                f"n_{word}": len(s.measured),
                 "t_statistic": s.t_statistic,
                 "p_value": s.p_value,
-                "agrees": s.agrees,
+                "verdict": s.verdict(self.alpha),
             }
             for s in self.samples
         ]
+
+    def notes(self) -> list[str]:
+        """Return the sentences a reader needs with the table: what the compared values are."""
+        notes = [f"Compared with {self.origin.values}."]
+        if caveat := self.origin.caveat():
+            notes.append(caveat)
+        if self.by_construction:
+            notes.append(
+                f"Pearson r of the means = {self.pearson_r:.3g}: by construction too, not evidence of a "
+                "correlation."
+            )
+        return notes
 
 
 def _values(values: Sequence[float], field: str) -> np.ndarray:
@@ -131,6 +172,7 @@ def compare(
     *,
     alpha: float = 0.1,
     equal_var: bool = False,
+    origin: DataOrigin | None = None,
 ) -> Comparison:
     """Compare simulated and measured mu per sample (t-test) and across samples (Pearson r).
 
@@ -138,11 +180,16 @@ def compare(
     ----------
     simulated, measured : mapping of str to sequence of float
         mu values per sample; both must name the same samples (order taken from ``simulated``).
+        ``measured`` may be a :class:`MuTable` (from :func:`read_measured`), which brings its
+        origin.
     alpha : float
         Threshold of the t-tests (paper 000: 0.1).
     equal_var : bool
         Student's pooled-variance t-test if True; Welch's (default) does not assume the scatter
         of simulation and measurement to be equal.
+    origin : DataOrigin, optional
+        Where the compared values come from; default: ``measured.origin`` of a :class:`MuTable`,
+        else measured. Values built from this model's own output give no verdict.
 
     Returns
     -------
@@ -163,6 +210,8 @@ def compare(
             f"(simulated: {list(simulated)}, measured: {list(measured)}).",
             "name the samples the same way in the scans and in the measured CSV.",
         )
+    if origin is None:
+        origin = getattr(measured, "origin", MEASURED)
     rows = []
     for name in simulated:
         sim = _values(simulated[name], f"simulated[{name!r}]")
@@ -172,21 +221,46 @@ def compare(
         else:
             test = stats.ttest_ind(sim, meas, equal_var=equal_var)
             t, p = float(test.statistic), float(test.pvalue)
-        rows.append(SampleComparison(name, tuple(sim), tuple(meas), t, p, p > alpha))
+        agrees = None if origin.by_construction else p > alpha
+        rows.append(SampleComparison(name, tuple(sim), tuple(meas), t, p, agrees))
     means = np.array([[s.simulated_mean, s.measured_mean] for s in rows])
     if len(rows) >= 3 and np.ptp(means[:, 0]) > 0 and np.ptp(means[:, 1]) > 0:
         pearson = stats.pearsonr(means[:, 0], means[:, 1])
         r, r_p = float(pearson.statistic), float(pearson.pvalue)
     else:
         r, r_p = 0.0, 1.0
-    return Comparison(tuple(rows), r, r_p, float(alpha), bool(equal_var))
+    return Comparison(tuple(rows), r, r_p, float(alpha), bool(equal_var), origin)
 
 
-def read_measured(path: str | Path) -> dict[str, np.ndarray]:
-    """Read measured mu per sample from a CSV with columns ``sample`` and ``mu``.
+@dataclass(frozen=True)
+class MuTable(Mapping[str, np.ndarray]):
+    """mu values per sample read from a CSV, with where they come from.
+
+    A mapping of sample name to its mu values (file order; also ``mu``, a dict), and ``origin``,
+    the :class:`~roughcontact.origin.DataOrigin` the file's header declares.
+    """
+
+    mu: dict[str, np.ndarray]
+    origin: DataOrigin = MEASURED
+    path: Path | None = field(default=None, compare=False)
+
+    def __getitem__(self, sample: str) -> np.ndarray:
+        return self.mu[sample]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.mu)
+
+    def __len__(self) -> int:
+        return len(self.mu)
+
+
+def read_measured(path: str | Path) -> MuTable:
+    """Read mu per sample from a CSV with columns ``sample`` and ``mu``, and the values' origin.
 
     Read through :func:`roughcontact._text_table.read_text_table`: lines starting with ``#`` are
     comments, the header names the columns (in any case, in any order); other columns are ignored.
+    The comments say where the values come from (``# origin: measured | reconstructed |
+    synthetic`` and ``# by construction: ...``, :func:`roughcontact.origin.origin_of`).
 
     Parameters
     ----------
@@ -195,8 +269,8 @@ def read_measured(path: str | Path) -> dict[str, np.ndarray]:
 
     Returns
     -------
-    dict of str to ndarray
-        mu values per sample, in file order.
+    MuTable
+        mu values per sample, in file order, and their origin.
 
     Raises
     ------
@@ -224,9 +298,17 @@ def read_measured(path: str | Path) -> dict[str, np.ndarray]:
             mu = math.nan
         if not math.isfinite(mu):
             raise InputError("measured", f"{path}, data row {number}: mu {cell!r}.", "give a number.")
+        if mu < 0:
+            raise InputError(
+                "measured",
+                f"{path}, data row {number}: mu {cell} is negative; a friction coefficient is F/N >= 0.",
+                "give the magnitude of the friction force over the normal force (a loop's two branches "
+                "give -mu and +mu: use their half difference).",
+            )
         sample = row[sample_column] if sample_column < len(row) else ""
         values.setdefault(sample, []).append(mu)
-    return {name: np.array(v) for name, v in values.items()}
+    origin = table.origin("measured")
+    return MuTable({name: np.array(v) for name, v in values.items()}, origin, path)
 
 
 def __getattr__(name: str):

@@ -80,6 +80,71 @@ SCANS_PER_SAMPLE = 7
 """Spots scanned (and measured) per sample (sec. 5)."""
 
 
+@dataclass(frozen=True)
+class Claim:
+    """A number paper 000 states about its simulations, to be judged against ours.
+
+    Attributes
+    ----------
+    quantity : str
+        The scalar of a friction case it is about (``adhesive_to_mechanical``, ``crossover_load``).
+    value : float
+        The printed value (SI).
+    words : str
+        The paper's words.
+    where : str
+        The section that states it.
+    short : str
+        The claim in a few words, for a table's column.
+    sample : str or None
+        The sample it is about (None: every sample, "for all the SiO2-polysilicon contacts").
+    """
+
+    quantity: str
+    value: float
+    words: str
+    where: str
+    short: str
+    sample: str | None = None
+
+
+CLAIMS = (
+    Claim(
+        "adhesive_to_mechanical",
+        40.0,
+        "the adhesive component is roughly 40 times greater for all the SiO2-polysilicon contacts",
+        "sec. 5",
+        "adhesive / mechanical about 40",
+    ),
+    Claim(
+        "crossover_load",
+        600e-6,
+        "the mechanical part exceeds the adhesive part at about 600 uN of load (Ra 1.7 nm)",
+        "sec. 6",
+        "crossover about 600 uN",
+        "Ra 1.7 nm",
+    ),
+)
+"""The paper's statements about its simulated friction at 10 uN, judged by the ``claims`` table."""
+
+ROUGHLY = 1.5
+"""How far "roughly" and "about" reach: a printed value v is kept by [v / 1.5, 1.5 v] (our reading).
+
+The paper gives no tolerance; a factor 1.5 takes 27-60 for "roughly 40" and 400-900 uN for
+"about 600 uN", so that 20 is not "roughly 40" but 30 is. Every verdict of the claims table names
+this factor.
+"""
+
+P_VALUES: Mapping[str, float] = {"Ra 1.45 nm": 0.13, "Ra 1.49 nm": 0.12, "Ra 1.7 nm": 0.79}
+"""The two-sample t-test p values of simulated vs measured mu per sample (sec. 5)."""
+
+P_THRESHOLD = 0.1
+"""The paper's threshold: p above it is read as agreement (sec. 5)."""
+
+PEARSON_R = 0.96
+"""The Pearson r of the simulated and measured means over the three samples (sec. 5)."""
+
+
 def friction_keys(given: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """Return the keys of paper 000's ``friction`` analysis as a study file writes them (with units).
 

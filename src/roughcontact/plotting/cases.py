@@ -292,17 +292,6 @@ def at_load(cases: Sequence[FigureCase], load: float, key: str = "normal_force")
     return [case for case in cases if math.isclose(load_of(case, key), load, rel_tol=LOAD_RTOL)]
 
 
-def mean_by_load(cases: Sequence[FigureCase], name: str) -> tuple[np.ndarray, np.ndarray]:
-    """Return the distinct loads and the mean of scalar ``name`` at each (NaN where no case has it)."""
-    loads = loads_of(cases)
-    means = []
-    for load in loads:
-        values = [case.scalars.get(name) for case in at_load(cases, load)]
-        values = [float(v) for v in values if v is not None]
-        means.append(np.mean(values) if values else np.nan)
-    return np.array(loads), np.array(means)
-
-
 def by_sample(cases: Sequence[FigureCase], name: str) -> dict[str, list[float]]:
     """Return scalar ``name`` of every case, per sample (in order of first appearance)."""
     return {sample: [float(c.scalars[name]) for c in group] for sample, group in grouped(cases).items()}

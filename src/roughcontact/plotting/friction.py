@@ -10,7 +10,7 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from ..units import format_si, prefixed_scale
-from .cases import axis_words, caption, grouped, loads_of, mean_by_load, setting_of
+from .cases import at_load, axis_words, caption, grouped, loads_of, setting_of
 from .layout import axes_for, legend
 
 BOX_FROM = 5
@@ -65,7 +65,10 @@ def box_words(data) -> str:
 
 
 def plot_mu_boxes(comparison, ax: Axes | None = None):
-    """Draw box plots of simulated and measured mu per sample (paper 000, Fig. 9); returns ``(fig, ax)``.
+    """Draw box plots of simulated and compared mu per sample (paper 000, Fig. 9); returns ``(fig, ax)``.
+
+    The compared values are labelled by their origin (measured, reconstructed from reported
+    statistics, synthetic) and "by construction" where they were built from this model.
 
     Boxes span the first to third quartile and the whiskers the minimum to maximum, as in the
     paper; every value is drawn as a point on its box.
@@ -91,26 +94,38 @@ def plot_mu_boxes(comparison, ax: Axes | None = None):
     ax.set_xticks([3 * k + 1 for k in range(len(comparison.samples))])
     ax.set_xticklabels([f"{s.sample}\np = {s.p_value:.2g}" for s in comparison.samples])
     ax.set_ylabel("coefficient of friction μ")
-    ax.legend(boxes[:2], ["simulation", "measurement"])
+    ax.legend(boxes[:2], ["simulated", _compared_label(comparison)])
+    built = "p values and r by construction; " if comparison.by_construction else ""
     ax.set_title(
-        f"simulated vs measured, Pearson r = {comparison.pearson_r:.2f}\n({box_words(data)})",
+        f"simulated vs {comparison.origin.word}, Pearson r = {comparison.pearson_r:.2f}\n"
+        f"({built}{box_words(data)})",
         fontsize="medium",
     )
     return fig, ax
 
 
+def _compared_label(comparison) -> str:
+    """Return the legend entry of the compared values: their origin, and whether built from this model."""
+    origin = comparison.origin
+    return f"{origin.words} (built from this model)" if comparison.by_construction else origin.words
+
+
 def plot_mu_means(comparison, ax: Axes | None = None):
-    """Draw the mean mu per sample with one standard deviation, simulated beside measured (Fig. 8).
+    """Draw the mean mu per sample with one standard deviation, simulated beside compared (Fig. 8).
 
     Takes and returns what :func:`plot_mu_boxes` does: a ``Comparison`` and optional axes;
     ``(fig, ax)``.
     """
     fig, ax = axes_for(ax, figsize=(6.0, 4.0))
     x = np.arange(len(comparison.samples))
-    for offset, kind, colour in ((-0.18, "simulated", "tab:blue"), (0.18, "measured", "tab:orange")):
+    sides = (
+        (-0.18, "simulated", "simulated", "tab:blue"),
+        (0.18, "measured", _compared_label(comparison), "tab:orange"),
+    )
+    for offset, kind, label, colour in sides:
         means = [getattr(s, f"{kind}_mean") for s in comparison.samples]
         spread = [getattr(s, f"{kind}_std") for s in comparison.samples]
-        ax.bar(x + offset, means, width=0.36, yerr=spread, capsize=4, color=colour, alpha=0.7, label=kind)
+        ax.bar(x + offset, means, width=0.36, yerr=spread, capsize=4, color=colour, alpha=0.7, label=label)
     ax.set_xticks(x)
     ax.set_xticklabels([s.sample for s in comparison.samples])
     ax.set_ylabel("mean coefficient of friction μ (± 1 s.d.)")
@@ -153,12 +168,15 @@ def plot_friction_vs_load(sweep, ax: Axes | None = None, *, crossover: float | N
 
 @caption(
     "Left: coefficient of friction μ = F/N against the normal load. Right: its adhesive (solid) and "
-    "mechanical (dashed) parts, with the crossover load dotted; one colour per sample (paper 000)."
+    "mechanical (dashed) parts, with the mean crossover load dotted; one colour per sample (paper 000). "
+    "Where a sample has several scans per load the lines are their means and the shaded bands their "
+    "range (smallest to largest scan)."
 )
 def friction_vs_load_figure(cases):
     """Draw mu and the adhesive and mechanical friction against the load, a colour per sample.
 
-    Means over the replicates at each load; None for fewer than two loads.
+    Means over the replicates (scans) at each load, with their range shaded where there are
+    several; None for fewer than two loads.
     """
     from .layout import new_figure
 
@@ -168,28 +186,47 @@ def friction_vs_load_figure(cases):
     scale, unit = (1e-3, "mN") if loads[-1] >= 1e-3 else (1e-6, "µN") if loads[-1] >= 1e-6 else (1e-9, "nN")
     figure, axes = new_figure(1, 2, width=5.5)
     mu_axis, force_axis = axes[0]
-    colours = [f"C{k % 10}" for k in range(len(grouped(cases)))]
-    for colour, (sample, group) in zip(colours, grouped(cases).items(), strict=True):
+    groups = grouped(cases)
+    scans = max(len(at_load(group, load)) for group in groups.values() for load in loads_of(group))
+    colours = [f"C{k % 10}" for k in range(len(groups))]
+    for colour, (sample, group) in zip(colours, groups.items(), strict=True):
         label = sample or None
-        load, mu = mean_by_load(group, "mu")
+        load, mu, low, high = _mean_and_range(group, "mu")
         mu_axis.semilogx(load / scale, mu, "o-", color=colour, label=label)
+        if scans > 1:
+            mu_axis.fill_between(load / scale, low, high, color=colour, alpha=0.2, lw=0)
         for name, style in (("adhesive_friction", "-"), ("mechanical_friction", "--")):
-            load, force = mean_by_load(group, name)
+            load, force, low, high = _mean_and_range(group, name)
             shown = force > 0
             force_axis.loglog(load[shown] / scale, force[shown] / scale, style, color=colour)
+            if scans > 1:
+                kept = low > 0
+                force_axis.fill_between(
+                    load[kept] / scale, low[kept] / scale, high[kept] / scale, color=colour, alpha=0.15, lw=0
+                )
         crossovers = [r.scalars.get("crossover_load") for r in group]
         crossovers = [float(c) for c in crossovers if c is not None]
         if crossovers:
             force_axis.axvline(np.mean(crossovers) / scale, color=colour, lw=0.8, ls=":")
     mu_axis.set_xlabel(f"normal load ({unit})")
     mu_axis.set_ylabel("coefficient of friction μ")
-    mu_axis.set_title("μ against load" + (" (mean over replicates)" if len(cases) > len(loads) else ""))
+    mu_axis.set_title("μ against load" + (f" (mean and range of {scans} scans)" if scans > 1 else ""))
     force_axis.set_xlabel(f"normal load ({unit})")
     force_axis.set_ylabel(f"friction force ({unit})")
     force_axis.set_title("adhesive (solid) and mechanical (dashed) friction")
-    if any(grouped(cases)):
+    if any(groups):
         legend(mu_axis, fontsize="small")
     return figure
+
+
+def _mean_and_range(cases, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Return the distinct loads and the mean, smallest and largest of scalar ``name`` at each."""
+    loads = loads_of(cases)
+    values = [
+        [float(v) for c in at_load(cases, load) if (v := c.scalars.get(name)) is not None] for load in loads
+    ]
+    stats = np.array([(np.mean(v), np.min(v), np.max(v)) if v else (np.nan,) * 3 for v in values])
+    return np.asarray(loads), stats[:, 0], stats[:, 1], stats[:, 2]
 
 
 def _simulated_only(cases) -> dict[str, list[float]] | None:
@@ -217,8 +254,9 @@ def _simulated_only(cases) -> dict[str, list[float]] | None:
 
 
 @caption(
-    "Coefficient of friction per sample: simulated (and measured, with [analysis.compare]) as boxes "
-    "of the quartiles with whiskers from min to max, every scan as a point (paper 000 Fig. 9)."
+    "Coefficient of friction per sample: simulated (and, with [analysis.compare], the compared values, "
+    "labelled measured, reconstructed or synthetic as their file says) as boxes of the quartiles with "
+    "whiskers from min to max, every scan as a point (paper 000 Fig. 9)."
 )
 def mu_boxes_figure(cases, comparison=None):
     """Draw mu per sample as boxes: simulated beside measured with a ``comparison``, else simulated only.
@@ -246,8 +284,8 @@ def mu_boxes_figure(cases, comparison=None):
 
 
 @caption(
-    "Mean coefficient of friction per sample with one standard deviation, simulated beside measured "
-    "where given (paper 000 Fig. 8)."
+    "Mean coefficient of friction per sample with one standard deviation, simulated beside the compared "
+    "values where given, labelled by their origin (paper 000 Fig. 8)."
 )
 def mu_means_figure(cases, comparison=None):
     """Draw the mean mu per sample with one standard deviation (see :func:`mu_boxes_figure`)."""
@@ -257,7 +295,8 @@ def mu_means_figure(cases, comparison=None):
     ax = axes[0][0]
     if comparison is not None:
         plot_mu_means(comparison, ax=ax)
-        ax.set_title(f"mean μ per sample, Pearson r of the means = {comparison.pearson_r:.2f}")
+        built = " (by construction)" if comparison.by_construction else ""
+        ax.set_title(f"mean μ per sample, Pearson r of the means = {comparison.pearson_r:.2f}{built}")
         return figure
     simulated = _simulated_only(cases)
     if simulated is None:

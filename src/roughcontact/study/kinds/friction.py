@@ -100,6 +100,7 @@ from ...topography import statistics
 from ...winkler_lj import WinklerLJResult
 from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind, figure, fill_from_paper
 from ..schema import Force, Length, MaterialName, Pressure, Strict, SurfaceEnergy, Time, TopographyName
+from ..store import Table
 from .common import box_around
 
 log = logging.getLogger(__name__)
@@ -497,25 +498,47 @@ def comparison(records: Sequence[CaseRecord], context: FigureContext):
         {s: measured[s] for s in common},
         alpha=spec.alpha,
         equal_var=spec.equal_var,
+        origin=measured.origin,
     )
 
 
+def by_reading(records: Sequence[CaseRecord]) -> dict[str, list[CaseRecord]]:
+    """Return the records grouped by their readings (:func:`reading_label`), in order of first appearance."""
+    groups: dict[str, list[CaseRecord]] = {}
+    for record in records:
+        groups.setdefault(reading_label(record.parameters), []).append(record)
+    return groups
+
+
 def _comparison_or_none(records, context):
-    """Return the comparison with ``[analysis.compare]`` (None without one); its errors reach the report."""
-    return None if context.compare is None else comparison(records, context)
+    """Return the comparison with ``[analysis.compare]`` for the figures (its errors reach the report).
+
+    None without one, and for an analysis of several readings (the figures would pool them; the
+    ``comparison`` table has a row per reading and sample).
+    """
+    if context.compare is None or len(by_reading(records)) > 1:
+        return None
+    return comparison(records, context)
 
 
 def _comparison_table(records, context):
+    """Tabulate the t-tests and Pearson r against ``[analysis.compare]``, per reading where several."""
     if context.compare is None:
         return None
-    result = comparison(records, context)  # its errors are listed in the report
-    common = {
-        "alpha": result.alpha,
-        "test": "student" if result.equal_var else "welch",
-        "pearson_r": result.pearson_r,
-        "pearson_p": result.pearson_p,
-    }
-    return [row | common for row in result.table()]
+    groups = by_reading(records)
+    rows, notes = [], []
+    for label, group in groups.items():
+        result = comparison(group, context)  # its errors are listed in the report
+        common = {
+            "alpha": result.alpha,
+            "test": "student" if result.equal_var else "welch",
+            "pearson_r": result.pearson_r,
+            "pearson_p": result.pearson_p,
+        }
+        reading = {"reading": label} if len(groups) > 1 else {}
+        rows += [reading | row | common for row in result.table()]
+        notes = result.notes()
+    return Table(rows, notes)
 
 
 def _by_sample(records, context):
@@ -588,6 +611,160 @@ def _ra_trend(records, context):
     return rows or None
 
 
+def reading_label(parameters: dict[str, Any]) -> str:
+    """Name a case's readings in words: its preset, and the fields its ``readings`` table changes in it.
+
+    ``default``, ``paper``, ``default but adhesive_range=all_springs, base=half_sphere``; a gap
+    model other than the springs' is added (``, gap model bem``).
+    """
+    from ...winkler_lj.readings import Readings
+
+    label = parameters.get("reading") or "default"
+    preset = Readings.preset(label)
+    given = parameters.get("readings") or {}
+    changed = {key: value for key, value in given.items() if str(getattr(preset, key, None)) != str(value)}
+    if changed:
+        label += " but " + ", ".join(f"{key}={value}" for key, value in changed.items())
+    if parameters.get("gap_model") not in (None, "winkler"):
+        label += f", gap model {parameters['gap_model']}"
+    return label
+
+
+def _claim_cells(values: list[float], claim) -> tuple[dict[str, Any], str]:
+    """Return the columns of one of paper 000's claims (our mean and intervals) and its verdict.
+
+    ``factor from paper``: the smallest factor f for which the prediction interval lies within
+    [v / f, v f] of the printed value v, so that a reader can apply another tolerance than
+    :data:`~roughcontact.papers.paper000.ROUGHLY`.
+    """
+    from ...spread import natural_bounds, spread
+
+    name = claim.quantity + (f" ({claim.sample})" if claim.sample else "")
+    unit = " [N]" if claim.quantity.endswith("load") else ""
+    verdict_column = f"paper {claim.where}: {claim.short}"
+    if not values:
+        why = " (crossover = true computes it)" if claim.quantity == "crossover_load" else ""
+        return {verdict_column: f"not computed{why}"}, "not computed"
+    summary = spread(values, bounds=natural_bounds(claim.quantity))
+    low, high = summary.prediction()
+    verdict = summary.within(claim.value / paper000.ROUGHLY, claim.value * paper000.ROUGHLY, of="one")
+    verdict = {"inside": "kept", "outside": "not kept"}.get(verdict, verdict)
+    factor = max(claim.value / low, high / claim.value) if low > 0 else math.inf
+    cells = {
+        f"{name} n": summary.n,
+        f"{name} mean{unit}": summary.mean,
+        f"{name} 95% prediction low{unit}": low,
+        f"{name} 95% prediction high{unit}": high,
+        f"{name} 95% mean low{unit}": summary.ci95_low,
+        f"{name} 95% mean high{unit}": summary.ci95_high,
+        f"{name} factor from paper": factor,
+        verdict_column: verdict,
+    }
+    return cells, verdict
+
+
+def _p_value_cell(records, context) -> tuple[str, str]:
+    """Return the p values of one reading's mu against ``[analysis.compare]`` and the claim's verdict."""
+    if context.compare is None:
+        return "no compared values", "not tested"
+    result = comparison(records, context)
+    shown = ", ".join(f"{s.sample} {s.p_value:.2g}" for s in result.samples)
+    if result.by_construction:
+        return shown, "no verdict: the values were built from this model"
+    kept = all(s.p_value > paper000.P_THRESHOLD for s in result.samples)
+    against = "" if result.origin.is_measured else f" (against {result.origin.words} values)"
+    return shown, ("kept" if kept else "not kept") + against
+
+
+def _claims_table(records, context):
+    """Judge paper 000's claims about its simulations under each reading of the analysis.
+
+    One row per reading (:func:`reading_label`) of the cases of paper 000's scenario (polysilicon
+    against SiO2 at the paper's 10 uN, as ``paper000 = true`` sets it): the ratio of adhesive to
+    mechanical friction over every scan (the paper: "roughly 40 times ... for all the
+    SiO2-polysilicon contacts", sec. 5), the crossover load of
+    the Ra 1.7 nm scans ("about 600 uN", sec. 6; with ``crossover = true``) and the t-test p
+    values against ``[analysis.compare]`` (p > 0.1 for every sample, sec. 5). A claim is *kept*
+    where the 95 % prediction interval of one scan lies within a factor
+    :data:`~roughcontact.papers.paper000.ROUGHLY` of the printed value, *not kept* where it lies
+    wholly outside, *not established* where it straddles an edge of that band. Compared values
+    built from this model's output judge no reading (``by construction``). The notes say which
+    claims each reading keeps and whether any keeps them all. None for other analyses, or with one
+    scan per reading.
+    """
+    from ...plotting.cases import at_load
+
+    bodies = (paper000.MATERIAL, paper000.TIP_MATERIAL)
+    chosen = [
+        r for r in records if (r.parameters.get("material"), r.parameters.get("counter_body")) == bodies
+    ]
+    chosen = at_load(chosen, paper000.NORMAL_FORCE) if chosen else []
+    if not chosen:
+        return None
+    readings = by_reading(chosen)
+    if all(len(group) < 2 for group in readings.values()):
+        return None  # one scan per reading: no interval to judge with
+    rows, kept = [], {}
+    for label, group in readings.items():
+        row: dict[str, Any] = {"reading": label}
+        verdicts = []
+        for claim in paper000.CLAIMS:
+            cases = [r for r in group if claim.sample in (None, r.parameters.get("sample"))]
+            values = [float(v) for r in cases if (v := r.scalars.get(claim.quantity)) is not None]
+            cells, verdict = _claim_cells(values, claim)
+            row |= cells
+            verdicts.append(verdict)
+        shown, verdict = _p_value_cell(group, context)
+        row |= {"p values": shown, f"paper sec. 5: p > {paper000.P_THRESHOLD:g}": verdict}
+        verdicts.append(verdict)
+        judged = [v for v in verdicts if v in ("kept", "not kept", "not established")]
+        row["claims kept"] = f"{judged.count('kept')} of {len(judged)} judged"
+        kept[label] = verdicts
+        rows.append(row)
+    return Table(rows, _claims_notes(kept, context))
+
+
+def _claims_notes(kept: dict[str, list[str]], context) -> list[str]:
+    """Return the sentences that go with the claims table: how it judges, and what it finds."""
+    names = [f"{c.short} ({c.where})" for c in paper000.CLAIMS] + [f"p > {paper000.P_THRESHOLD:g} (sec. 5)"]
+    notes = [
+        "Paper 000's claims: "
+        + "; ".join(f"'{c.words}' ({c.where})" for c in paper000.CLAIMS)
+        + f"; t-test p > {paper000.P_THRESHOLD:g} for every sample (sec. 5).",
+        "Each claim is judged with the 95 % prediction interval of one scan: kept where it lies within a "
+        f"factor {paper000.ROUGHLY:g} of the printed value (our reading of 'roughly' and 'about'; the "
+        "paper gives none), not kept where it lies wholly outside that band, not established otherwise. "
+        "'factor from paper' is the smallest factor that would keep it; the mean's interval is beside it.",
+    ]
+    if context.compare is not None:
+        origin = comparison_origin(context)
+        if origin.by_construction:
+            notes.append(
+                f"The compared mu are {origin.values}, built from this model's own output, so their p "
+                "values judge no reading; paper 000 publishes no measured mu, so its p-value claim cannot "
+                f"be tested here (their file: {origin.by_construction})."
+            )
+        elif not origin.is_measured:
+            notes.append(origin.caveat())
+    full = [label for label, verdicts in kept.items() if all(v == "kept" for v in verdicts)]
+    if full:
+        notes.append(f"Keeps every claim: {', '.join(full)}.")
+    else:
+        parts = []
+        for label, verdicts in kept.items():
+            which = [name for name, v in zip(names, verdicts, strict=True) if v == "kept"]
+            parts.append(f"{label}: {', '.join(which) if which else 'none'}")
+        notes.append("No reading keeps every claim. Kept, per reading: " + "; ".join(parts) + ".")
+    return notes
+
+
+def comparison_origin(context):
+    """Return the origin of the values of ``[analysis.compare]`` (measured unless their file says so)."""
+    from ...experiment.compare import read_measured
+
+    return read_measured(context.compare.measured).origin
+
+
 class FrictionCompare(Strict):
     """The ``[analysis.compare]`` table of a friction analysis: measured mu per sample.
 
@@ -635,7 +812,12 @@ KIND = Kind(
         "mu_boxes": figure("friction.mu_boxes_figure", {"comparison": _comparison_or_none}),
         "mu_means": figure("friction.mu_means_figure", {"comparison": _comparison_or_none}),
     },
-    tables={"comparison": _comparison_table, "by_sample": _by_sample, "ra_trend": _ra_trend},
+    tables={
+        "comparison": _comparison_table,
+        "claims": _claims_table,
+        "by_sample": _by_sample,
+        "ra_trend": _ra_trend,
+    },
     compare=FrictionCompare,
     headline=("mu", "adhesive_friction", "mechanical_friction", "adhesive_to_mechanical", "crossover_load"),
     renamed={
