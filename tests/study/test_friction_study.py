@@ -139,8 +139,9 @@ def _check_claims(output):
         ratios = [float(r["adhesive_to_mechanical"]) for r in cases]
         assert int(row["adhesive_to_mechanical n"]) == len(ratios) == 9
         assert float(row["adhesive_to_mechanical mean"]) == pytest.approx(np.mean(ratios), rel=1e-12)
-        low, high = float(row["adhesive_to_mechanical 95% prediction low"]), float(
-            row["adhesive_to_mechanical 95% prediction high"]
+        low, high = (
+            float(row["adhesive_to_mechanical 95% prediction low"]),
+            float(row["adhesive_to_mechanical 95% prediction high"]),
         )
         half = stats.t.ppf(0.975, 8) * np.std(ratios, ddof=1) * math.sqrt(1 + 1 / 9)
         assert (low, high) == pytest.approx((np.mean(ratios) - half, np.mean(ratios) + half), rel=1e-9)
@@ -545,6 +546,28 @@ def test_a_load_sweep_is_compared_at_the_load_of_the_measurements(tmp_path, capl
     written, problems = draw_figures(output)
     assert {p.name for p in written} == {"friction_friction_vs_load.png"}
     assert len(problems) == 2 and all("compare.normal_force" in p for p in problems)
+    stale = output / "tables" / "friction_comparison.csv"  # left by an earlier run of other settings
+    stale.write_text("sample,p_value\na,0.5\n")
+    with caplog.at_level("WARNING"):
+        write_tables(output)
+    assert not stale.exists()  # a table this run could not make is not shown as if it were current
+
+
+def test_tables_of_an_analysis_of_several_readings_keep_them_apart(tmp_path):
+    from roughcontact.study.outputs import write_tables
+
+    text = SCAN_AND_TIP + FRICTION_OVER_TWO_LOADS.replace("[analysis.sweep]", "[analysis.zip]")
+    text += 'replicate = [0, 1, 0, 1]\nreading = ["default", "default", "paper", "paper"]\n'
+    text = text.replace('normal_force = ["5 uN", "10 uN"]\n', "")
+    path = tmp_path / "readings.toml"
+    path.write_text(text)
+    output = tmp_path / "out"
+    assert run_study(load_study(path), output).done == 4
+    write_tables(output)
+    by_sample = read_table(output / "tables" / "friction_by_sample.csv")
+    assert [(row["reading"], int(row["n"])) for row in by_sample] == [("default", 2), ("paper", 2)]
+    mu = {row["reading"]: float(row["mu_mean"]) for row in by_sample}
+    assert mu["paper"] > 1.2 * mu["default"]
 
 
 def test_fields_beyond_the_size_limit_are_not_stored(tmp_path, monkeypatch):

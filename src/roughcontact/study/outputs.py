@@ -317,7 +317,9 @@ def in_memory(study, records: dict[str, list[CaseRecord]]) -> list[StoredAnalysi
 def write_tables(folder: str | Path) -> tuple[list[Path], list[str]]:
     """Write every analysis' derived tables to ``OUT/tables/ANALYSIS_TABLE.csv``.
 
-    Returns the files written and the problems met (see :func:`produce`).
+    Returns the files written and the problems met (see :func:`produce`). Tables of an earlier
+    write that this one did not make (their analysis changed, or their function failed this time)
+    are removed, so that the report shows none as if it were current.
     """
     folder = Path(folder).expanduser().resolve()
     tables, problems = produce(read_study(folder)[1], "table")
@@ -326,6 +328,8 @@ def write_tables(folder: str | Path) -> tuple[list[Path], list[str]]:
         path = folder / "tables" / f"{analysis}_{name}.csv"
         write_table(path, rows)
         written.append(path)
+    for stale in set((folder / "tables").glob("*.csv")) - set(written):
+        stale.unlink()  # a table this run did not make (no longer applies, or failed): not shown as if current
     return written, problems
 
 

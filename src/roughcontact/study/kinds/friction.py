@@ -541,6 +541,26 @@ def _comparison_table(records, context):
     return Table(rows, notes)
 
 
+def per_reading(table):
+    """Return ``table`` computed for each reading (and gap model) of the analysis apart.
+
+    An analysis that sweeps the readings holds several models of the same scans; pooling their mu
+    into one mean or one trend would mix them. With several readings each row starts with its
+    ``reading`` (:func:`reading_label`).
+    """
+
+    def separately(records, context):
+        groups = by_reading(records)
+        rows = []
+        for label, group in groups.items():
+            named = {"reading": label} if len(groups) > 1 else {}
+            rows += [named | row for row in table(group, context) or ()]
+        return rows or None
+
+    separately.__doc__ = table.__doc__
+    return separately
+
+
 def _by_sample(records, context):
     """Mean, spread and range of mu per sample and load over its replicates (None without replicates).
 
@@ -815,8 +835,8 @@ KIND = Kind(
     tables={
         "comparison": _comparison_table,
         "claims": _claims_table,
-        "by_sample": _by_sample,
-        "ra_trend": _ra_trend,
+        "by_sample": per_reading(_by_sample),
+        "ra_trend": per_reading(_ra_trend),
     },
     compare=FrictionCompare,
     headline=("mu", "adhesive_friction", "mechanical_friction", "adhesive_to_mechanical", "crossover_load"),
