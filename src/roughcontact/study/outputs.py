@@ -329,7 +329,7 @@ def write_tables(folder: str | Path) -> tuple[list[Path], list[str]]:
         write_table(path, rows)
         written.append(path)
     for stale in set((folder / "tables").glob("*.csv")) - set(written):
-        stale.unlink()  # a table this run did not make (no longer applies, or failed): not shown as if current
+        stale.unlink()  # a table this run did not make (no longer applies, or failed): not shown as current
     return written, problems
 
 
