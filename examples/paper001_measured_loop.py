@@ -1,4 +1,4 @@
-"""Write examples/paper001_measured_loop.csv: a SYNTHETIC "measured" friction loop for paper 001.
+"""Write examples/paper001_measured_loop.csv: a SYNTHETIC friction loop for paper 001 (not measured).
 
 Paper 001 does not publish its measured loops (Figs. 3, 13, 14 only). This script builds one for
 the HDPE ball on the silicon wafer at F0 = 25 mN with the paper's Table 1 inputs (mu = 0.153,
@@ -11,7 +11,12 @@ x_cs = x_stage - F / K_s, whose range in the converged loop is the stroke 2.805 
 uniform in time (10 Hz); small Gaussian noise is added (1 nm on x_cs, 0.01 mN on F; seed 1).
 
 It exists to exercise :mod:`roughcontact.experiment.friction_loop`; it is not a measurement and
-has no roughness or visco-elasticity (the paper's curved corners are absent).
+has no roughness or visco-elasticity (the paper's curved corners are absent). Its header's first
+line, ``# origin: synthetic`` (:mod:`roughcontact.origin`), travels with the loop
+(:func:`~roughcontact.experiment.friction_loop.read_loop_csv`), so the tables, legends and report
+of a study that compares with it call it synthetic, never measured. The file name keeps
+"measured" only because it fills the place of the paper's measured loop (``[analysis.compare]``'s
+``measured_loop``).
 
 Run: ``.venv/bin/python examples/paper001_measured_loop.py``.
 """
@@ -108,6 +113,7 @@ def main() -> None:
     )
     data = synthetic_loop()
     header = [
+        "origin: synthetic",
         "SYNTHETIC DATA, NOT MEASURED. Paper 001 does not publish its measured loops.",
         "Built by examples/paper001_measured_loop.py: Mindlin-Deresiewicz Masing rule (Johnson 1985,",
         "sec. 7.4) for a 10 mm ball, HDPE 0.98 GPa / 0.5 on silicon 130 GPa / 0.28 (paper 001 Table 2),",

@@ -171,7 +171,27 @@ def test_example_csv_reproduces_table1():
     result = analyse_loop(loop, None, 25e-3)
     assert result.stroke == pytest.approx(2.805e-6, rel=5e-3)
     assert result.mu == pytest.approx(0.153, rel=5e-3)
-    assert "SYNTHETIC" in EXAMPLE.read_text().splitlines()[0]
+    header = EXAMPLE.read_text().splitlines()[:2]
+    assert header[0] == "# origin: synthetic" and "SYNTHETIC" in header[1]
+    # the header's origin travels with the loop: it is never taken for a measurement
+    assert loop.origin.word == "synthetic" and loop.origin.declared and not loop.origin.is_measured
+
+
+def test_a_loop_file_says_its_origin(tmp_path, clean):
+    """A loop is measured unless its header says otherwise; an unknown origin word is refused."""
+    path, force, _ = clean
+    rows = "".join(f"{d * 1e6:.17g},{f * 1e3:.17g}\n" for d, f in zip(path, force, strict=True))
+    plain, synthetic, odd = tmp_path / "plain.csv", tmp_path / "synthetic.csv", tmp_path / "odd.csv"
+    plain.write_text("displacement [um],force [mN]\n" + rows)
+    synthetic.write_text(
+        "# origin: synthetic\n# by construction: Mindlin's loop\ndisplacement [um],force [mN]\n" + rows
+    )
+    odd.write_text("# origin: simulated\ndisplacement [um],force [mN]\n" + rows)
+    assert read_loop_csv(plain).origin.is_measured and not read_loop_csv(plain).origin.declared
+    made = read_loop_csv(synthetic).origin
+    assert (made.word, made.by_construction) == ("synthetic", "Mindlin's loop")
+    with pytest.raises(InputError, match="origin: simulated"):
+        read_loop_csv(odd)
 
 
 def test_loop_energy_of_rectangle():

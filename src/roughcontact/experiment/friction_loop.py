@@ -71,6 +71,7 @@ from scipy.optimize import OptimizeWarning, curve_fit
 from .._text_table import read_text_table
 from ..display_html import NotebookDisplay
 from ..errors import InputError
+from ..origin import MEASURED, DataOrigin
 from ..units import quantity
 
 __all__ = [
@@ -106,12 +107,17 @@ class Loop:
         Time [s], if the file had it.
     source : str
         Where it came from (file path).
+    origin : DataOrigin
+        What kind of data it is (measured, reconstructed or synthetic), from the file's ``#``
+        header (``# origin: synthetic``, :mod:`roughcontact.origin`); measured where the file does
+        not say otherwise.
     """
 
     displacement: np.ndarray
     force: np.ndarray
     time: np.ndarray | None = None
     source: str = ""
+    origin: DataOrigin = MEASURED
 
 
 _DISPLACEMENT_NAMES = ("displacement", "delta", "disp", "x_cs", "x")
@@ -164,7 +170,8 @@ def read_loop_csv(
     Returns
     -------
     Loop
-        Displacement [m], force [N], time [s] or None.
+        Displacement [m], force [N], time [s] or None, and the origin its ``#`` header declares
+        (``# origin: synthetic``; measured where it says nothing else, :mod:`roughcontact.origin`).
 
     Raises
     ------
@@ -219,7 +226,7 @@ def read_loop_csv(
         raise InputError("path", f"{path} has a header but no data.", "add displacement,force rows.")
     displacement, force = values[:, 0] * length, values[:, 1] * newton
     _check_signal(displacement, force)
-    return Loop(displacement, force, times, str(path))
+    return Loop(displacement, force, times, str(path), table.origin("path"))
 
 
 # --- branches -------------------------------------------------------------------------------------
