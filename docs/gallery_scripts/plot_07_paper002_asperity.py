@@ -57,10 +57,10 @@ print(
 )
 for name, curve in curves.items():
     scalars = curve.scalars()
-    peak, residual = scalars["peak_interference"], scalars["residual_interference"]
+    peak, back = scalars["peak_interference"], scalars["interference_at_return_force"]
     print(
-        f"{name}: peak interference {format_si(peak, 'm')} ({peak / omega_c:.2f} omega_c), residual "
-        f"{format_si(residual, 'm')} ({residual / omega_c:.2f} omega_c),\n    real contact area at the "
+        f"{name}: peak interference {format_si(peak, 'm')} ({peak / omega_c:.2f} omega_c), back at 25 uN "
+        f"{format_si(back, 'm')} ({back / omega_c:.2f} omega_c),\n    real contact area at the "
         f"peak {format_si(scalars['peak_contact_area'], 'm^2')}, "
         f"{100 * scalars['plastic_fraction_at_peak']:.0f} % of the touching summits beyond omega_c"
     )

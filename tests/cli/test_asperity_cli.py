@@ -26,7 +26,12 @@ def test_paper002_json_reproduces_section_iv(capsys, scalars, table):
     assert rows["contact_modulus"]["printed_inputs_eq7_printed"] == pytest.approx(9.717e9, rel=1e-3, abs=0)
     # the statistical curve ran at the paper's 1000 uN peak, zero at 25 uN
     assert parameters["peak_force"] == pytest.approx(1e-3, rel=1e-9)
-    assert parameters["peak_interference"] > parameters["residual_interference"] > 0
+    # unloading ends back at 25 uN: KKE's interference there (not a residual at zero load)
+    assert parameters["peak_interference"] > parameters["interference_at_return_force"] > 0
+    assert (
+        parameters["return_force"] == pytest.approx(25e-6, rel=1e-12)
+        and "residual_interference" not in parameters
+    )
 
 
 def test_text_table_names_paper_and_both_readings(capsys):

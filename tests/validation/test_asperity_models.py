@@ -175,11 +175,11 @@ def test_statistical_loading_equals_the_gw_integral_for_hertz():
     np.testing.assert_allclose(result.force[:5], gw.force, rtol=1e-4, atol=0)
 
 
-def test_higher_peak_leaves_larger_residual_interference():
+def test_higher_peak_leaves_larger_interference_at_the_return_force():
     residuals = [
         statistical_load_unload(
             SUMMITS, **dict(PAPER_RUN, max_force=f), reference_force=25e-6, steps=5
-        ).residual_interference
+        ).interference_at_return_force
         for f in (300e-6, 600e-6, 1000e-6)
     ]
     assert residuals[0] < residuals[1] < residuals[2]

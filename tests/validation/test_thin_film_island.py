@@ -102,3 +102,44 @@ def test_bad_targets_are_refused():
         compress_island(ISLAND, SU8, loading_forces=[0, 5e-4, 1e-3])
     with pytest.raises(InputError, match="hardness"):
         compress_island(ISLAND, get_material("silicon wafer"))
+
+
+def test_two_interferences_after_the_peak_under_two_names():
+    """residual_interference is at zero load; interference_at_return_force back at 25 uN (KKE's end point)."""
+    curve = RUN.curve()
+    unloading = np.flatnonzero(curve["branch"] == "unloading")
+    at_25 = unloading[np.isclose(curve["force"][unloading], 25e-6, rtol=1e-6, atol=0)][0]
+    assert RUN.return_force == 25e-6
+    assert RUN.interference_at_return_force == curve["approach"][at_25]
+    assert RUN.residual_interference == curve["approach"][-1] and curve["force"][-1] == 0.0
+    # the film springs back between 25 uN and zero load: the two are different numbers
+    assert RUN.residual_interference < RUN.interference_at_return_force
+    scalars = RUN.scalars()
+    assert scalars["interference_at_return_force"] == RUN.interference_at_return_force
+    assert scalars["residual_interference"] == RUN.residual_interference
+    assert scalars["return_force"] == 25e-6
+    for name in ("interference_at_return_force", "residual_interference", "return_force"):
+        assert name in RUN.UNITS
+
+
+def test_return_point_between_targets_is_interpolated_in_the_force():
+    run = compress_island(
+        ISLAND, SU8, substrate=SILICON, loading_forces=[0, 25e-6, 5e-4, 1e-3], unloading_forces=[5e-4, 0.0]
+    )
+    curve = run.curve()
+    (w_half, w_zero), (f_half, f_zero) = curve["approach"][-2:], curve["force"][-2:]
+    expected = w_half + (f_half - 25e-6) / (f_half - f_zero) * (w_zero - w_half)
+    assert run.interference_at_return_force == pytest.approx(expected, rel=1e-12)
+    assert w_zero < run.interference_at_return_force < w_half
+
+
+def test_statistical_model_names_its_end_point_for_what_it_is():
+    kke = paper002.statistical_curve()
+    scalars = kke.scalars()
+    assert "residual_interference" not in scalars
+    assert scalars["return_force"] == 25e-6
+    # the unloading branch ends at the return force, at this interference
+    assert kke.force[-1] == pytest.approx(25e-6, rel=1e-9)
+    assert scalars["interference_at_return_force"] == kke.approach[-1]
+    with pytest.warns(DeprecationWarning, match="interference_at_return_force"):
+        assert kke.residual_interference == kke.interference_at_return_force

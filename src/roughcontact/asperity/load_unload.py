@@ -26,8 +26,15 @@ The Gaussian has no highest summit, so both branches run between the peak and a 
 ``reference_force`` where given (paper 002 marks omega = 0 at W = 25 uN, the smallest load its
 nanoindenter resolves, so the curves span what the experiment sees), else ``threshold`` times the
 peak. Approaches are measured from the separation at which the loading branch carries
-``reference_force``, or from the summits' mean plane (approach = -d) without one. The residual
-interference is the approach at which the unloading branch falls back to the floor load.
+``reference_force``, or from the summits' mean plane (approach = -d) without one. The unloading
+branch ends where it falls back to the floor load, the *return force*; the interference there is
+``interference_at_return_force`` (paper 002: at 25 uN). It is not a residual interference at zero
+load: the Gaussian population's load vanishes only asymptotically, so the model has none at finite
+separation (without ``reference_force`` the return force is 1e-6 of the peak, and the two nearly
+coincide). The deterministic load-unload
+(:class:`~roughcontact.contact.load_unload.LoadUnloadResult`) reports both: its
+``residual_interference`` at zero load and its own ``interference_at_return_force``, the one to
+compare with this model's.
 
 References
 ----------
@@ -41,6 +48,7 @@ References
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -86,8 +94,13 @@ class StatisticalLoadUnload(NotebookDisplay):
         Summits in contact [-].
     plastic_fraction : ndarray
         Fraction of the touching summits that were loaded beyond omega_c [-].
-    residual_interference : float
-        Approach at which the unloading branch falls back to the floor load [m] (module notes).
+    interference_at_return_force : float
+        Interference [m] at which the unloading branch falls back to ``return_force`` (module
+        notes; formerly ``residual_interference``, a name that now means the interference at zero
+        load only, which this model does not reach).
+    return_force : float
+        The floor load where both branches end [N]: ``reference_force`` (paper 002: 25 uN), or
+        ``threshold`` x the peak without one.
     critical_interference : float
         omega_c [m] (Chang-Etsion-Bogy, from the hardness).
     critical_load : float
@@ -103,7 +116,8 @@ class StatisticalLoadUnload(NotebookDisplay):
     contact_area: np.ndarray
     number_of_contacts: np.ndarray
     plastic_fraction: np.ndarray
-    residual_interference: float
+    interference_at_return_force: float
+    return_force: float
     critical_interference: float
     critical_load: float
     law: str
@@ -113,10 +127,27 @@ class StatisticalLoadUnload(NotebookDisplay):
         """Index of the peak load: the last point of the loading branch."""
         return int(np.flatnonzero(self.branch == "loading")[-1])
 
+    @property
+    def residual_interference(self) -> float:
+        """The former name of :attr:`interference_at_return_force` (kept one release, with a warning).
+
+        It was the interference at the return force (25 uN in paper 002), not at zero load; the name
+        ``residual_interference`` now means the latter only (the deterministic model's).
+        """
+        warnings.warn(
+            "StatisticalLoadUnload.residual_interference is now .interference_at_return_force (the "
+            "interference where unloading returns to the floor load, not at zero load); the old name "
+            "goes in the next release.",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return self.interference_at_return_force
+
     UNITS: ClassVar[dict[str, str]] = {
         "peak_force": "N",
         "peak_interference": "m",
-        "residual_interference": "m",
+        "interference_at_return_force": "m",
+        "return_force": "N",
         "peak_contact_area": "m^2",
         "critical_interference": "m",
         "critical_load": "N",
@@ -135,13 +166,14 @@ class StatisticalLoadUnload(NotebookDisplay):
     """Unit and meaning of each variable of :meth:`curve` and :meth:`to_xarray`."""
 
     def scalars(self) -> dict[str, float | str]:
-        """Return the peak, the residual interference and the scales (SI; units in :attr:`UNITS`)."""
+        """Return the peak, the interference at the return force and the scales (SI; :attr:`UNITS`)."""
         peak = self.peak
         return {
             "law": self.law,
             "peak_force": float(self.force[peak]),
             "peak_interference": float(self.approach[peak]),
-            "residual_interference": self.residual_interference,
+            "interference_at_return_force": self.interference_at_return_force,
+            "return_force": self.return_force,
             "peak_contact_area": float(self.contact_area[peak]),
             "peak_number_of_contacts": float(self.number_of_contacts[peak]),
             "plastic_fraction_at_peak": float(self.plastic_fraction[peak]),
@@ -366,7 +398,8 @@ def statistical_load_unload(
         contact_area=area,
         number_of_contacts=count,
         plastic_fraction=plastic,
-        residual_interference=zero - end,
+        interference_at_return_force=zero - end,
+        return_force=float(floor),
         critical_interference=population.omega_c,
         critical_load=population.load_c,
         law=law,

@@ -24,6 +24,12 @@ infinite, so an island's free side walls are not modelled). The interference cou
 first touch, or from the load ``reference_force`` on loading (paper 002: 25 uN, the smallest load
 its nanoindenter resolves).
 
+Two interferences after the peak, under two names: ``residual_interference`` is the interference at
+zero load, where the unloaded surface first touches the flat; ``interference_at_return_force`` is
+the interference where the unloading branch comes back to the *return force*, ``reference_force``
+(paper 002: 25 uN, the load at which an experiment, or the statistical KKE model of
+:mod:`roughcontact.asperity.load_unload`, ends its unloading curve), or zero load without one.
+
 How the surface model differs from elastic-plastic finite elements (paper 002's LS-DYNA): no
 plastic zone below the surface, no hardening, no residual stress, small strains, no pile-up, so it
 agrees with them where the plastic zone is shallow compared with the contact and the pressure has
@@ -62,6 +68,8 @@ LOAD_UNLOAD_UNITS = {
     "peak_force": "N",
     "peak_interference": "m",
     "residual_interference": "m",
+    "interference_at_return_force": "m",
+    "return_force": "N",
     "peak_contact_area": "m^2",
     "max_pressure": "Pa",
     "max_plastic_deformation": "m",
@@ -134,9 +142,10 @@ class LoadUnloadResult(NotebookDisplay):
         Interference [m] per step: the approach of the flat from the first touch of the original
         surface, less its value at ``reference_force`` on loading where one was given.
     residual_interference : float
-        Interference [m] at which the unloaded surface first touches the flat.
+        Interference [m] at zero load: where the unloaded surface first touches the flat.
     reference_force : float or None
-        Load of zero interference [N] (None: the first touch).
+        Load of zero interference [N] (None: the first touch); also the return force
+        (:attr:`interference_at_return_force`).
     steps : tuple of NormalContactResult
         Surface plasticity: one solution per step (unloading on the flattened surface; every
         ``approach`` counts from the original surface's first touch). Empty for volume plasticity.
@@ -181,6 +190,38 @@ class LoadUnloadResult(NotebookDisplay):
     def unloading(self) -> tuple[NormalContactResult, ...]:
         """Surface plasticity: the steps of the unloading branch (on the flattened surface)."""
         return self.steps[self.peak + 1 :]
+
+    @property
+    def return_force(self) -> float:
+        """The load [N] at which :attr:`interference_at_return_force` is read: ``reference_force`` or 0."""
+        return 0.0 if self.reference_force is None else float(self.reference_force)
+
+    @property
+    def interference_at_return_force(self) -> float:
+        """Interference [m] where the unloading branch comes back to :attr:`return_force` (NaN if it never does).
+
+        The interference of the unloading step that carries the return force (to 1e-4 of it, as a
+        force-controlled step reaches its target), else interpolated linearly in the force between
+        the two steps around it (the peak counts as the first point of the branch). At zero
+        return force it is the interference of the first unloading point without load, the
+        :attr:`residual_interference` where the programme ends at zero load. This is the number to
+        compare with the statistical model's (:class:`~roughcontact.asperity.StatisticalLoadUnload`),
+        whose unloading curve ends at the same load.
+        """
+        peak = self.peak
+        force = np.asarray(self.force, dtype=float)[peak:]
+        interference = np.asarray(self.interference, dtype=float)[peak:]
+        target = self.return_force
+        tolerance = 1e-4 * max(target, 1e-9 * float(force[0]))
+        exact = np.flatnonzero(np.abs(force - target) <= tolerance)
+        if exact.size:
+            return float(interference[exact[0]])
+        below = np.flatnonzero(force < target)
+        if below.size == 0 or below[0] == 0:
+            return float("nan")
+        i = int(below[0])
+        share = (force[i - 1] - target) / (force[i - 1] - force[i])
+        return float(interference[i - 1] + share * (interference[i] - interference[i - 1]))
 
     @property
     def path(self) -> VolumePlasticResult | None:
@@ -238,10 +279,16 @@ class LoadUnloadResult(NotebookDisplay):
         }
 
     def scalars(self) -> dict[str, float]:
-        """Return the peak, the residual interference and the plastic flow or stresses (SI; :attr:`UNITS`)."""
+        """Return the peak and residual interferences and the plastic flow or stresses (SI; :attr:`UNITS`).
+
+        ``residual_interference`` is at zero load, ``interference_at_return_force`` at the
+        ``return_force`` on unloading (module notes).
+        """
         interferences = {
             "peak_interference": float(self.interference[self.peak]),
             "residual_interference": float(self.residual_interference),
+            "interference_at_return_force": self.interference_at_return_force,
+            "return_force": self.return_force,
         }
         if self.volume is not None:
             return self.volume.scalars() | interferences

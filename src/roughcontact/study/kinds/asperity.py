@@ -28,7 +28,9 @@ marks omega = 0 at 25 uN), or is measured from the summits' mean plane without o
 
 Scalars: the asperity parameters (plain names: ``summit_radius``, ``summit_height_std``,
 ``contact_modulus``, ``critical_interference``, ``plasticity_index``, ...) and, with a curve, the
-peak and residual interference, also over omega_c. Dataset: the curve (``branch``, ``approach``
+peak interference and the ``interference_at_return_force`` (where unloading comes back to the
+``return_force``: ``reference_force``, paper 002's 25 uN; not a residual interference at zero load,
+which a Gaussian population does not reach), both also over omega_c. Dataset: the curve (``branch``, ``approach``
 (the interference), ``interference_ratio``, ``separation``, ``force``, ``contact_area``,
 ``number_of_contacts``, ``plastic_fraction``) on the dimension ``point``.
 
@@ -242,9 +244,10 @@ def run(parameters: AsperityKeys, inputs) -> CaseOutput:
     scalars |= {
         "peak_force": curve["peak_force"],
         "peak_interference": curve["peak_interference"],
-        "residual_interference": curve["residual_interference"],
+        "interference_at_return_force": curve["interference_at_return_force"],
+        "return_force": curve["return_force"],
         "peak_interference_over_omega_c": curve["peak_interference"] / omega_c,
-        "residual_interference_over_omega_c": curve["residual_interference"] / omega_c,
+        "interference_at_return_force_over_omega_c": curve["interference_at_return_force"] / omega_c,
         "peak_contact_area": curve["peak_contact_area"],
         "peak_number_of_contacts": curve["peak_number_of_contacts"],
         "plastic_fraction_at_peak": curve["plastic_fraction_at_peak"],
