@@ -16,6 +16,7 @@ import csv
 import numpy as np
 import pytest
 
+from roughcontact.asperity.comparison import against_realisations
 from roughcontact.asperity.parameters import asperity_parameters
 from roughcontact.materials import get_material
 from roughcontact.papers.paper002 import compress_island, paper002_island
@@ -25,7 +26,7 @@ from roughcontact.study.inputs import CaseInputs
 from roughcontact.study.kinds import get_kind
 from roughcontact.study.outputs import context, read_study
 from roughcontact.study.schema import GaussianRandom, Paper002Island
-from roughcontact.study.store import read_table
+from roughcontact.study.store import notes_of, read_table
 from roughcontact.topography.statistics import spectral_moments
 
 SU8, DIAMOND, SILICON = (get_material(n) for n in ("SU-8", "diamond flat tip", "silicon wafer"))
@@ -69,28 +70,49 @@ def test_example_end_to_end_reproduces_section_iv_and_draws_kke_against_bem(cli,
     assert [(r["analysis"], r["status"]) for r in rows] == analyses
     kke, bem, volume = rows[0], rows[1:3], rows[3]
     omega_c = float(kke["critical_interference [m]"])
-    for name in ("peak_interference", "residual_interference"):
+    for name in ("peak_interference", "interference_at_return_force"):
         assert float(kke[f"{name}_over_omega_c"]) == pytest.approx(
             float(kke[f"{name} [m]"]) / omega_c, rel=1e-12
         )
     assert float(kke["peak_force [N]"]) == pytest.approx(1000e-6, rel=1e-9)
-    # loading then elastic recovery: the residual interference lies below the peak one
-    assert 0 < float(kke["residual_interference [m]"]) < float(kke["peak_interference [m]"])
+    # loading then elastic recovery: back at 25 uN the interference lies below the peak one
+    assert 0 < float(kke["interference_at_return_force [m]"]) < float(kke["peak_interference [m]"])
+    assert float(kke["return_force [N]"]) == pytest.approx(25e-6, rel=1e-12)
+    assert kke["residual_interference [m]"] == ""  # one name, one meaning: KKE has no zero-load residual
     for row in bem:
         assert float(row["peak_force [N]"]) == pytest.approx(1000e-6, rel=1e-6)
         assert float(row["residual_interference [m]"]) < float(row["peak_interference [m]"])
+        # the BEM's residual is at zero load, below (or at) its interference back at 25 uN
+        assert float(row["residual_interference [m]"]) <= float(row["interference_at_return_force [m]"])
         assert float(row["max_pressure [Pa]"]) <= SU8.hardness
     # the two replicates are two realisations of the island (derived seeds)
     assert bem[0]["peak_interference [m]"] != bem[1]["peak_interference [m]"]
-    # KKE's peak against the BEM's over its realisations, with its interval and a verdict
-    (against,) = read_table(out / "tables" / "bem_against_statistical.csv")
+    # KKE against the BEM's realisations: for one island (the paper's claim), the mean beside it
+    against = read_table(out / "tables" / "bem_against_statistical.csv")
+    assert [(r["quantity"], r["judged for"]) for r in against] == [
+        ("peak_interference", "one island"),
+        ("peak_interference", "the mean"),
+        ("interference_at_return_force", "one island"),
+        ("interference_at_return_force", "the mean"),
+    ]
+    one, mean = against[0], against[1]
     peaks = [float(row["peak_interference [m]"]) for row in bem]
-    assert float(against["bem_peak_interference mean [m]"]) == pytest.approx(np.mean(peaks), rel=1e-12)
-    assert float(against["statistical_peak_interference [m]"]) == float(kke["peak_interference [m]"])
-    low, high = (float(against[f"bem_peak_interference 95% {end} [m]"]) for end in ("low", "high"))
     peak = float(kke["peak_interference [m]"])
-    expected = "over-predicts" if high < peak else "under-predicts" if low > peak else "within the scatter"
-    assert against["statistical model"] == expected and against["n"] == "2"
+    found = against_realisations(peak, peaks, quantity="peak_interference")
+    assert float(one["bem mean [m]"]) == pytest.approx(np.mean(peaks), rel=1e-12)
+    assert float(one["statistical [m]"]) == peak
+    for row, of in ((one, "one"), (mean, "mean")):
+        low, high = (float(row[f"bem 95% {end} [m]"]) for end in ("low", "high"))
+        assert (low, high) == pytest.approx(found.verdict(of).interval, rel=1e-12)
+        assert low >= 0  # an interference past the reference load is not negative
+        expected = "over-predicts" if high < peak else "under-predicts" if low > peak else "not established"
+        assert row["statistical model"] == expected and row["n"] == "2"
+        assert float(row["statistical / bem"]) == pytest.approx(peak / np.mean(peaks), rel=1e-12)
+        assert row["paper's words"] == "slightly over-predicts"
+    # the prediction interval of one island is wider than the mean's
+    assert float(one["bem 95% high [m]"]) > float(mean["bem 95% high [m]"])
+    notes = notes_of(against)
+    assert len(notes) == 2 and all('Paper 002\'s words: "KKE slightly over-predicts"' in n for n in notes)
     # plasticity in the volume: the yield strength of Table I, and stress left at zero load
     assert float(volume["yield_strength [Pa]"]) == SU8.yield_strength
     assert float(volume["max_residual_von_mises [Pa]"]) > 0
@@ -114,6 +136,7 @@ def test_example_end_to_end_reproduces_section_iv_and_draws_kke_against_bem(cli,
     assert (out / "figures" / "kke_load_interference.png").stat().st_size > 0
     report = (out / "report.html").read_text()
     assert "kke" in report and "bem" in report and "paper002" in report
+    assert "prediction interval of one island" in report  # the table's sentence, under it
     assert report.count("data:image/png;base64") >= 4
 
     # The combined figure (paper 002 Fig. 7): the KKE curve of the other analysis, the mean of both
@@ -128,6 +151,10 @@ def test_example_end_to_end_reproduces_section_iv_and_draws_kke_against_bem(cli,
     assert len(bem) == 2 and all("mean of 2 realisations" in label for label in bem)
     assert len(ax.collections) == 2  # the range of the replicates shaded, loading and unloading
     assert "measured" in labels
+    # the legend ends with KKE's peak over the BEM's, judged for one island and for the mean
+    legend = [text.get_text() for text in ax.get_legend().get_texts()]
+    verdict = next(label for label in legend if label.startswith("KKE ω_max / BEM mean"))
+    assert "95 % for one island" in verdict and "for the mean" in verdict
     assert ax.get_xlabel() == "interference ω/ω_c"
     kke_loading = ax.get_lines()[labels.index("KKE (Kogut-Etsion), loading")]
     assert np.max(kke_loading.get_xdata()) == pytest.approx(float(kke["peak_interference_over_omega_c"]))

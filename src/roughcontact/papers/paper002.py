@@ -92,6 +92,11 @@ def load_unload_keys() -> dict[str, Any]:
     }
 
 
+STATISTICAL_WORDS = "slightly over-predicts"
+"""Paper 002's words on the KKE model (sections VII and VIII: it "slightly overpredicted the surface
+deformation when compared to experiment"), shown beside the ratio of KKE to the BEM that a study
+measures. The paper compares ONE island (the measured one) with the model, without an interval."""
+
 PRINTED = {
     "summit_radius": 5.08e-6,
     "summit_height_std": 0.0431e-6,

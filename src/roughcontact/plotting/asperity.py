@@ -7,6 +7,7 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 
 from ..units import format_si, unit_factor
 from .cases import branch_points, caption, evenly_chosen, grouped, realisations_of, with_fields
@@ -24,6 +25,7 @@ def plot_load_interference(
     ax: Axes | None = None,
     *,
     measured: dict | None = None,
+    notes: Sequence[str] = (),
 ):
     """Draw load (uN) against omega / omega_c for each curve, loading solid, unloading dashed (Fig. 7).
 
@@ -40,6 +42,8 @@ def plot_load_interference(
         Where to draw.
     measured : dict, optional
         A measured curve with "approach" [m] and "force" [N], drawn as markers.
+    notes : sequence of str
+        Lines of text added at the end of the legend, without a symbol (a verdict, say).
 
     Returns
     -------
@@ -66,7 +70,9 @@ def plot_load_interference(
         ax.plot(x, np.asarray(measured["force"]) / _LOAD_SCALE, "k.", ms=3, label="measured")
     ax.set_xlabel("interference ω/ω_c")
     ax.set_ylabel(f"load ({_LOAD_UNIT})")
-    legend(ax, fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2))  # below: no curve hidden
+    extra = tuple((Line2D([], [], linestyle="none"), note) for note in notes)
+    # below the axes: no curve hidden
+    legend(ax, fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), extra=extra)
     ax.grid(True, alpha=0.3)
     return fig, ax
 
@@ -138,13 +144,15 @@ def common_omega_c(cases) -> float | None:
     return values[0] if np.allclose(values, values[0], rtol=1e-9, atol=0) else None
 
 
-def draw_load_interference(curves: dict[str, dict], omega_c: float | None, measured: dict | None):
+def draw_load_interference(
+    curves: dict[str, dict], omega_c: float | None, measured: dict | None, notes: Sequence[str] = ()
+):
     """Paper 002 Fig. 7: load against omega / omega_c (or against omega in nm where omega_c is not shared).
 
     Uses :func:`roughcontact.plotting.asperity.plot_load_interference`, which draws at most five
-    curves; callers pass at most five.
+    curves; callers pass at most five. ``notes`` end the legend.
     """
-    figure, ax = plot_load_interference(curves, omega_c or 1e-9, measured=measured)
+    figure, ax = plot_load_interference(curves, omega_c or 1e-9, measured=measured, notes=notes)
     if omega_c is None:
         ax.set_xlabel("interference ω (nm)")
     else:
@@ -216,19 +224,51 @@ def _asperity_curves(statistical: Mapping[str, Sequence]) -> tuple[dict[str, dic
     return curves, used
 
 
+def verdict_note(statistical_case, group, label: str = "") -> str | None:
+    """Return the legend line judging a statistical case's peak interference against BEM realisations.
+
+    KKE's peak over the BEM mean, with the ratio's interval for one island (the paper's claim:
+    the prediction interval of one realisation) and for the mean, and the verdict at each level
+    (:func:`roughcontact.asperity.comparison.against_realisations`); None where either has no peak.
+    """
+    from ..asperity.comparison import against_realisations
+
+    peak = statistical_case.scalars.get("peak_interference")
+    values = [c.scalars.get("peak_interference") for c in group]
+    values = [float(v) for v in values if v is not None]
+    if peak is None or not values:
+        return None
+    found = against_realisations(float(peak), values, quantity="peak_interference")
+    head = f"{label}: " if label else ""
+    if found.deterministic.n < 2:
+        return f"{head}KKE / BEM ω_max = {found.ratio:.3g} (one realisation: no interval)"
+    words = []
+    for of, level in (("one", "one island"), ("mean", "the mean")):
+        low, high = found.ratio_interval(of)
+        verdict = found.model_words(of)
+        verdict = "holds 1, not established" if verdict == "not established" else f"KKE {verdict}"
+        words.append(f"{level} [{low:.3g}, {high:.3g}], {verdict}")
+    return f"{head}KKE ω_max / BEM mean = {found.ratio:.3g}; 95 % for {words[0]};\nfor {words[1]}"
+
+
 @caption(
     "Load against interference ω/ω_c on loading (solid) and unloading (dashed): the deterministic BEM "
     "compression beside the statistical KKE curves of the study's asperity analyses and the measured "
-    "curve, where given (paper 002 Fig. 7)."
+    "curve, where given (paper 002 Fig. 7). The legend's last line gives KKE's peak interference over "
+    "the BEM mean with its 95 % interval for one island (prediction interval, the paper's claim) and "
+    "for the mean (confidence interval), and whether KKE over-predicts at each level."
 )
 def island_load_interference_figure(cases, statistical=None, measured=None):
     """Draw paper 002's Fig. 7 for cases of the ``load_unload`` model, beside the statistical curves.
 
     ``statistical`` maps an analysis name to cases of the ``asperity`` model (their curves are
-    drawn, up to two); ``measured`` as for :func:`asperity_load_interference_figure`.
+    drawn, up to two); ``measured`` as for :func:`asperity_load_interference_figure`. The legend
+    ends with :func:`verdict_note` of the first statistical curve against each BEM group.
     """
     curves, used = _asperity_curves(statistical or {})
     own = evenly_chosen(list(realisations_of(with_fields(cases)).items()), 5 - len(curves))
+    named = len(own) > 1
+    notes = [verdict_note(used[0], group, label if named else "") for label, group in own] if used else []
     for label, group in own:
         curve = _mean_curve([c for c in map(curve_of, group) if c is not None])
         if curve is not None:
@@ -240,108 +280,85 @@ def island_load_interference_figure(cases, statistical=None, measured=None):
             curves[model] = curve
     if not curves:
         return None
-    return draw_load_interference(curves, common_omega_c(used), measured)
+    return draw_load_interference(curves, common_omega_c(used), measured, [n for n in notes if n])
 
 
-def mesh_convergence(cases) -> list[dict] | None:
-    """Return the peak interference against the grid (paper 002 Fig. 6) and its order of convergence.
-
-    Per grid (``grid_points``, pixel ``pixel_size``; the mean over the realisations at each), the
-    peak interference, its standard deviation and its relative change from the next coarser grid;
-    with three grids or more, the finest row adds the observed order and the Richardson
-    extrapolation of the three finest (:func:`roughcontact.spread.convergence_order`) and the
-    finest grid's relative distance from it, where the three converge monotonically. Another grid
-    is the same surface only with a generator of ``modes = "wavevector"`` (one realisation at any
-    resolution). None with fewer than two grids.
-    """
-    from ..spread import convergence_order, spread
-
-    grids: dict[int, list] = {}
-    for case in cases:
-        if case.scalars.get("grid_points") is not None:
-            grids.setdefault(int(case.scalars["grid_points"]), []).append(case)
-    if len(grids) < 2:
-        return None
-    rows = []
-    for points, group in sorted(grids.items()):
-        peak = spread(float(c.scalars["peak_interference"]) for c in group)
-        rows.append(
-            {
-                "grid_points": points,
-                "pixel_size [m]": float(group[0].scalars["pixel_size"]),
-                "n": peak.n,
-                "peak_interference [m]": peak.mean,
-                "peak_interference std [m]": peak.std,
-                "change_from_coarser": abs(peak.mean / rows[-1]["peak_interference [m]"] - 1)
-                if rows
-                else None,
-            }
-        )
-    finest = rows[-3:]
-    order = convergence_order(
-        [r["pixel_size [m]"] for r in finest], [r["peak_interference [m]"] for r in finest]
-    )
-    if order is not None:
-        p, extrapolated = order
-        rows[-1]["observed_order"] = p
-        rows[-1]["extrapolated_peak_interference [m]"] = extrapolated
-        rows[-1]["finest_relative_error"] = abs(rows[-1]["peak_interference [m]"] - extrapolated) / abs(
-            extrapolated
-        )
-    return rows
+_QUANTITY_AXES = {
+    "peak_interference": ("peak interference ω_max", "nm", 1e-9),
+    "interference_at_return_force": ("interference back at the reference load", "nm", 1e-9),
+    "peak_contact_area": ("real contact area at the peak", _AREA_UNIT, _AREA_SCALE),
+}
 
 
 @caption(
-    "Peak interference at the peak load against the number of grid points of the island (paper 002 "
-    "Fig. 6): mean and standard deviation over the realisations at each grid, each realisation (the "
-    "same surface on every grid) as a thin line, with the observed order of convergence and the "
-    "Richardson extrapolation of the three finest grids where they converge monotonically."
+    "Paper 002 Fig. 6 said in full: each quantity of the island (peak interference, interference back at "
+    "the reference load on unloading, real contact area at the peak) against the number of grid points, "
+    "mean over the realisations with its 95 % confidence interval, each realisation (the same surface on "
+    "every grid) as a thin line; each panel's title gives the change of the mean at the last refinement "
+    "and the observed order over the three finest grids, or why there is none (not monotone), with the "
+    "Richardson extrapolation where there is one."
 )
 def mesh_convergence_figure(cases):
-    """Draw paper 002's Fig. 6: the peak interference against the grid points (None for one grid)."""
-    from .layout import legend
+    """Draw paper 002's Fig. 6: one panel per quantity of the mesh study, None for one grid.
 
-    rows = mesh_convergence(cases)
-    if rows is None:
+    The quantities and their numbers are :func:`roughcontact.asperity.convergence.mesh_convergence`'s.
+    """
+    from ..asperity.convergence import mesh_convergence
+
+    found = mesh_convergence(cases)
+    if found is None:
         return None
-    points = [row["grid_points"] for row in rows]
-    means = np.array([row["peak_interference [m]"] for row in rows])
-    errors = np.nan_to_num(np.array([row["peak_interference std [m]"] for row in rows]))
-    fig, ax = axes_for(None, figsize=(5.5, 4.0))
-    count = max(row["n"] for row in rows)
-    label = "BEM island" + (f", mean ± std of {count} realisations" if count > 1 else "")
-    ax.errorbar(points, means * 1e9, yerr=errors * 1e9, fmt="o-", capsize=3, label=label)
-    if count > 1:  # each realisation is one surface on every grid: its own line
-        for number, (_, group) in enumerate(grouped(cases, "replicate").items()):
-            own = sorted(
-                (int(c.scalars["grid_points"]), float(c.scalars["peak_interference"])) for c in group
+    figure = Figure(figsize=(4.6 * len(found), 4.4), layout="constrained")
+    axes = np.atleast_1d(figure.subplots(1, len(found))).ravel()
+    for ax, quantity in zip(axes, found, strict=True):
+        name, unit, scale = _QUANTITY_AXES.get(quantity.quantity, (quantity.quantity, quantity.unit, 1.0))
+        points = [g.grid_points for g in quantity.grids]
+        means = np.array([g.spread.mean for g in quantity.grids]) / scale
+        low = np.array([g.spread.ci95_low for g in quantity.grids]) / scale
+        high = np.array([g.spread.ci95_high for g in quantity.grids]) / scale
+        count = max(g.spread.n for g in quantity.grids)
+        errors = np.nan_to_num(np.vstack([means - low, high - means]))
+        label = "mean" + (f" of {count} realisations, 95 % interval" if count > 1 else "")
+        ax.errorbar(points, means, yerr=errors, fmt="o-", capsize=3, label=label, zorder=3)
+        if count > 1:  # each realisation is one surface on every grid: its own line
+            for number, (_, group) in enumerate(grouped(cases, "replicate").items()):
+                own = sorted(
+                    (int(c.scalars["grid_points"]), float(c.scalars[quantity.quantity]) / scale)
+                    for c in group
+                    if c.scalars.get(quantity.quantity) is not None
+                    and c.scalars.get("grid_points") is not None
+                )
+                if own:
+                    ax.plot(
+                        *zip(*own, strict=True),
+                        "-",
+                        color="0.6",
+                        linewidth=0.8,
+                        label="each realisation" if number == 0 else None,
+                    )
+        if quantity.order is not None:
+            p, extrapolated = quantity.order
+            ax.axhline(
+                extrapolated / scale,
+                color="0.4",
+                linestyle="--",
+                linewidth=1.0,
+                label=f"Richardson extrapolation {extrapolated / scale:.4g} {unit} (observed order {p:.2f})",
             )
-            ax.plot(
-                *zip(*[(n, w * 1e9) for n, w in own], strict=True),
-                "-",
-                color="0.6",
-                linewidth=0.8,
-                label="each realisation" if number == 0 else None,
-            )
-    change = rows[-1]["change_from_coarser"]
-    ax.set_title(
-        f"finest grid {points[-1]} points: {100 * change:.2g} % from the next coarser", fontsize="medium"
-    )
-    if "observed_order" in rows[-1]:
-        extrapolated, p = rows[-1]["extrapolated_peak_interference [m]"], rows[-1]["observed_order"]
-        ax.axhline(
-            extrapolated * 1e9,
-            color="0.4",
-            linestyle="--",
-            linewidth=1.0,
-            label=f"Richardson extrapolation {extrapolated * 1e9:.4g} nm (observed order {p:.2f})",
-        )
-    ax.set_xscale("log")
-    ax.set_xlabel("grid points (elements)")
-    ax.set_ylabel("peak interference ω_max (nm)")
-    ax.grid(True, alpha=0.3)
-    legend(ax, fontsize="small", loc="upper center", bbox_to_anchor=(0.5, -0.15))  # below the bars
-    return fig
+        change = quantity.finest.change
+        ax.set_title(f"last refinement {100 * change:+.2g} %\nmean: {quantity.trend}", fontsize="medium")
+        ax.set_xscale("log")
+        ax.set_xlabel("grid points (elements)")
+        ax.set_ylabel(f"{name} ({unit})")
+        ax.grid(True, alpha=0.3)
+        legend(ax, fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.15))  # below the bars
+    return figure
+
+
+def __getattr__(name: str):
+    from .._deprecation import moved
+
+    return moved(__name__, name, {"mesh_convergence": "roughcontact.asperity.convergence"})
 
 
 def _mean_curve(curves: list[dict]) -> dict | None:

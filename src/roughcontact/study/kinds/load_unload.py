@@ -33,8 +33,11 @@ paper's FEM shows residual stress); the film is laterally infinite (the island's
 are not modelled); strains are small and the load quasi-static; the punch is rigid (diamond is ~150
 times stiffer than SU-8).
 
-Scalars: peak force, peak and residual interference, peak contact area, fraction of it at the
-hardness, largest pressure, largest plastic flattening, largest von Mises stress at the peak.
+Scalars: peak force, peak interference, ``residual_interference`` (at zero load, where the
+unloaded surface first touches the flat), ``interference_at_return_force`` (where unloading comes
+back to ``reference_force``, the ``return_force``: the point the statistical KKE model's unloading
+curve ends at, so the one compared with it), peak contact area, fraction of it at the hardness,
+largest pressure, largest plastic flattening, largest von Mises stress at the peak.
 Dataset: the curve (``branch``, ``approach`` (the interference), ``force``, ``contact_area``,
 ``plastic_fraction``, ``max_pressure``) on the dimension ``point``, and von Mises maps
 ``von_mises(map, x, y)`` at a few loads (``von_mises_loads``), each coarsened to at most
@@ -42,8 +45,17 @@ Dataset: the curve (``branch``, ``approach`` (the interference), ``force``, ``co
 
 Figures: ``load_interference`` (paper 002 Fig. 7: this analysis' curves with those of every
 ``asperity`` analysis of the study and the measured curve of ``[analysis.compare]``, against
-omega / omega_c where the asperity analyses give one omega_c), ``von_mises`` (Figs. 8-9) and, for
-``plasticity = "volume"``, ``von_mises_section`` (the same loads on a vertical section).
+omega / omega_c where the asperity analyses give one omega_c, the legend ending with KKE's peak over
+the BEM's), ``von_mises`` (Figs. 8-9), ``mesh_convergence`` (Fig. 6, for a study that sweeps the
+grid) and, for ``plasticity = "volume"``, ``von_mises_section`` (the same loads on a vertical section).
+
+Tables: ``against_statistical`` (with an ``asperity`` analysis in the study: the BEM's peak
+interference and interference back at the reference load over its realisations against KKE's,
+judged for one island, the paper's claim, with the prediction interval of one realisation and for
+the mean with its confidence interval; the ratio KKE / BEM with both intervals beside paper 002's
+words; a sentence per comparison in the table's notes) and ``mesh_convergence`` (Fig. 6 in full:
+peak interference, interference back at the reference load and peak contact area per grid, their
+changes per refinement, the observed order or why there is none).
 """
 
 from __future__ import annotations
@@ -325,53 +337,131 @@ def _statistical(records, context) -> dict[str, list]:
 
 
 def _mesh_convergence(records, context):
-    """Return paper 002's Fig. 6 as a table (:func:`roughcontact.plotting.asperity.mesh_convergence`)."""
-    from ...plotting.asperity import mesh_convergence
+    """Return paper 002's Fig. 6 as a table: every quantity it and the comparison use, trends in notes.
 
-    return mesh_convergence(records)
+    One row per quantity and grid (:meth:`roughcontact.asperity.convergence.QuantityConvergence.rows`:
+    the mean over the realisations with its 95 % interval, the change per refinement of the mean
+    and of each draw, the observed order or why there is none); one note per quantity says it in a
+    sentence. None with fewer than two grids.
+    """
+    from ...asperity.convergence import mesh_convergence
+    from ..store import Table
+
+    found = mesh_convergence(records)
+    if found is None:
+        return None
+    return Table([row for quantity in found for row in quantity.rows()], [q.summary() for q in found])
+
+
+COMPARED = ("peak_interference", "interference_at_return_force")
+"""The interferences judged against the statistical model: at the peak, and back at the reference load."""
+
+RENAMED_SCALARS = {"interference_at_return_force": "residual_interference"}
+"""Scalars of the statistical model stored under another name by earlier versions (see the notes)."""
+
+
+def _length(value: float) -> str:
+    """Write an interference for a sentence: three digits with its prefix, a bound at zero as 0."""
+    from ...units import format_si
+
+    return "0" if value == 0 else format_si(value, "m", digits=3)
+
+
+def _words(quantity: str, case) -> str:
+    """Name a compared interference in a sentence, with the loads of the statistical case."""
+    from ...units import format_si
+
+    if quantity == "peak_interference":
+        peak = case.scalars.get("peak_force")
+        return "peak interference" + (f" (at {format_si(peak, 'N', digits=3)})" if peak else "")
+    back = case.scalars.get("return_force")
+    return (
+        "interference back at "
+        + (format_si(back, "N", digits=3) if back else "the return force")
+        + (" on unloading")
+    )
 
 
 def _against_statistical(records, context):
-    """Return the BEM's peak interference over its realisations against each statistical (KKE) prediction.
+    """Return the BEM's interferences over its realisations against each statistical (KKE) prediction.
 
-    Per group of realisations (cases that differ only in ``replicate``) and per case of the
-    study's ``asperity`` analyses: the BEM's mean peak interference with its 95 % interval, the
-    statistical peak, both over the statistical omega_c, and ``statistical model`` saying whether it
-    over- or under-predicts the BEM's mean at 95 % confidence, or lies within the realisations'
-    scatter (paper 002 sec. V: "KKE slightly over-predicts"). None without an asperity analysis.
+    Per group of realisations (cases that differ only in ``replicate``), per case of the study's
+    ``asperity`` analyses and per compared interference (:data:`COMPARED`: at the peak load, and
+    back at the reference load on unloading), two rows: paper 002's claim is about ONE island, so
+    the first judges with the 95 % prediction interval of one realisation, the second (``judged
+    for = the mean``) with the 95 % confidence interval of the mean
+    (:func:`roughcontact.asperity.comparison.against_realisations`). ``statistical model`` says
+    whether KKE over-predicts, under-predicts, or whether that is not established (the interval
+    holds KKE's value); ``statistical / bem`` is KKE's value over the BEM mean with the row's interval
+    carried through ``x -> KKE / x``; ``paper's words`` is what paper 002 says (for cases with
+    ``paper002 = true``). The table's notes say each comparison in a sentence. None without an
+    asperity analysis.
     """
+    from ...asperity.comparison import LEVELS, against_realisations
+    from ...papers.paper002 import STATISTICAL_WORDS
     from ...plotting.cases import realisations_of
-    from ...spread import spread
+    from ..store import Table
 
     statistical = [(name, case) for name, cases in _statistical(records, context).items() for case in cases]
     statistical = [(n, c) for n, c in statistical if c.scalars.get("peak_interference") is not None]
     if not statistical:
         return None
-    verdicts = {"below": "over-predicts", "above": "under-predicts"}
-    rows = []
+    rows, notes = [], []
     for label, group in realisations_of(records).items():
-        bem = spread(r.scalars.get("peak_interference", float("nan")) for r in group)
+        bem = label or context.analysis
+        plasticity = group[0].parameters.get("plasticity", "surface")
         for name, case in statistical:
-            peak, omega_c = (
-                float(case.scalars["peak_interference"]),
-                float(case.scalars["critical_interference"]),
-            )
-            rows.append(
-                {
-                    "bem": label or context.analysis,
-                    "statistical": f"{name} ({case.parameters.get('law', '')})",
-                    "n": bem.n,
-                    "bem_peak_interference mean [m]": bem.mean,
-                    "bem_peak_interference 95% low [m]": bem.ci95_low,
-                    "bem_peak_interference 95% high [m]": bem.ci95_high,
-                    "statistical_peak_interference [m]": peak,
-                    "bem_peak_over_omega_c": bem.mean / omega_c,
-                    "statistical_peak_over_omega_c": peak / omega_c,
-                    "statistical model": verdicts.get(bem.verdict(peak).word, bem.verdict(peak).word),
-                }
-            )
-    return rows
+            omega_c = float(case.scalars["critical_interference"])
+            model = f"{name} ({case.parameters.get('law', '')})"
+            words = STATISTICAL_WORDS if case.parameters.get("paper002") else ""
+            for quantity in COMPARED:
+                value = case.scalars.get(quantity)
+                if value is None or all(r.scalars.get(quantity) is None for r in group):
+                    old = RENAMED_SCALARS.get(quantity)
+                    if old is not None and old in case.scalars:
+                        notes.append(
+                            f"{quantity} not compared: the case of {name} was stored by an earlier "
+                            f"roughcontact, whose {old} of the statistical model was this quantity "
+                            "(the interference back at the reference load, not at zero load); run the "
+                            "study again to compare it."
+                        )
+                    continue
+                found = against_realisations(
+                    float(value),
+                    [float("nan") if r.scalars.get(quantity) is None else r.scalars[quantity] for r in group],
+                    quantity=quantity,
+                    bounds=BOUNDS[quantity],
+                )
+                for of in ("one", "mean"):
+                    low, high = found.verdict(of).interval
+                    ratio_low, ratio_high = found.ratio_interval(of)
+                    rows.append(
+                        {
+                            "bem": f"{bem} ({plasticity} plasticity)",
+                            "statistical": model,
+                            "quantity": quantity,
+                            "judged for": LEVELS[of],
+                            "n": found.deterministic.n,
+                            "bem mean [m]": found.deterministic.mean,
+                            "bem 95% low [m]": low,
+                            "bem 95% high [m]": high,
+                            "statistical [m]": found.statistical,
+                            "bem mean / omega_c": found.deterministic.mean / omega_c,
+                            "statistical / omega_c": found.statistical / omega_c,
+                            "statistical / bem": found.ratio,
+                            "statistical / bem 95% low": ratio_low,
+                            "statistical / bem 95% high": ratio_high,
+                            "statistical model": found.model_words(of),
+                            "paper's words": words,
+                        }
+                    )
+                sentence = found.sentence(_length, words=words, name=_words(quantity, case))
+                notes.append(f"{bem} ({plasticity} plasticity) against {model}: {sentence}")
+    return Table(rows, notes)
 
+
+BOUNDS = {"peak_interference": (0.0, math.inf), "interference_at_return_force": (0.0, math.inf)}
+"""Interferences past the reference load are not negative (the residual at zero load may be)."""
 
 KIND = Kind(
     name="load_unload",
@@ -392,7 +482,18 @@ KIND = Kind(
     },
     tables={"against_statistical": _against_statistical, "mesh_convergence": _mesh_convergence},
     compare=MeasuredCurve,
-    headline=("peak_interference", "residual_interference", "peak_contact_area", "max_von_mises_at_peak"),
+    bounds=BOUNDS,
+    missing={
+        "statistical / bem 95% high": "unbounded: the BEM interval reaches 0",
+        "interference_at_return_force": "unloading never came back to the return force",
+    },
+    headline=(
+        "peak_interference",
+        "interference_at_return_force",
+        "residual_interference",
+        "peak_contact_area",
+        "max_von_mises_at_peak",
+    ),
     renamed={"surface": "topography", "peak_force": "max_force"},
     references=(
         "paper002",
