@@ -320,13 +320,14 @@ def dpi_argument(text: str) -> int:
 
 
 def add_realisations(parser: argparse.ArgumentParser, what: str, default: int | None = None) -> None:
-    """Add ``--realisations N``: each case on N independent draws of ``what`` (study key ``realisations``)."""
+    """Add ``--realisations N``: each setting on N draws of ``what``, a case each (study key realisations)."""
     parser.add_argument(
         "--realisations",
         type=int,
         default=default,
         metavar="N",
-        help=f"run each case on N independent realisations of {what}, their seeds derived from --seed, "
+        help=f"run each setting (load, sample) on N independent realisations of {what}, one case each, "
+        "their seeds derived from --seed, "
         "and give every number's mean, std and 95 %% interval of the mean"
         + (f" (default {default})" if default else " (default: one draw)"),
     )
