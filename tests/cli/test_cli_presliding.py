@@ -8,6 +8,8 @@ import pytest
 from roughcontact.cli import EXIT_INPUT_ERROR, main
 from roughcontact.materials import get_material
 from roughcontact.papers import paper001
+from roughcontact.spread import realisation_seed
+from roughcontact.study.store import read_table
 from roughcontact.topography import generate
 from roughcontact.topography.native import save_topography
 
@@ -289,9 +291,101 @@ def test_paper001_on_realisations_of_the_ball(capsys, tmp_path):
     )
     assert status == 0, err
     assert "spread over 3 realisations" in stdout and "Each setting ran on 3 realisations" in stdout
-    spread = (tmp_path / "out" / "tables" / "presliding_lateral_stiffness_spread.csv").read_text()
-    assert spread.count("\n") == 4 and "rough vs smooth (johnson)" in spread
+    spread = read_table(tmp_path / "out" / "tables" / "presliding_lateral_stiffness_spread.csv")
+    assert len(spread) == 3 and all(row["n"] == "3" for row in spread)  # points A, B, C at 25 mN
+    assert {row["rough vs smooth, one ball (johnson)"] for row in spread} <= VERDICTS
+    assert any("prediction interval" in note for note in spread.notes)
     assert (tmp_path / "out" / "figures" / "presliding_lateral_stiffness.png").exists()
+
+
+VERDICTS = {"below", "above", "not established"}
+"""One ball's verdict against Mindlin where the balls give an interval."""
+
+
+def test_the_readme_paper001_command_runs_to_a_report(capsys, tmp_path):
+    """README: ``roughcontact presliding --paper001 --realisations 5 -o out/``, at a reduced size.
+
+    Both balls at Table 1's three loads on three stand-in balls each (128 px, two cycles of six
+    steps): every case runs (the window each solves is chosen to hold its contact and stated), and
+    the report judges one ball against Mindlin in both readings of eq. 12.
+    """
+    out = tmp_path / "out"
+    status, stdout, err = run(
+        capsys,
+        "presliding",
+        "--paper001",
+        "--realisations",
+        "3",
+        "--pixels",
+        "128",
+        "--cycles",
+        "2",
+        "--steps-per-stroke",
+        "6",
+        "-o",
+        out,
+    )
+    assert status == 0, err
+    assert 'window = "auto"' in (out / "study.toml").read_text()
+    rows = read_table(out / "results.csv")
+    assert len(rows) == 18 and {row["status"] for row in rows} == {"done"}
+    for row in rows:  # the window of each case is stated: its pixels and how it was chosen
+        assert row["window_choice"].startswith(f"auto: {row['window_pixels']} px (")
+        assert 3 <= int(row["window_pixels"]) <= 128
+    assert "Solved windows, chosen per case (window = 'auto'): HDPE " in stdout
+    spread = read_table(out / "tables" / "presliding_lateral_stiffness_spread.csv")
+    assert len(spread) == 18
+    for row in spread:
+        johnson = row["rough vs smooth, one ball (johnson)"]
+        printed = row["rough vs smooth, one ball (printed)"]
+        assert johnson in VERDICTS and printed.split(" (")[0] in VERDICTS
+        # the printed reading's K_L is 4x Johnson's: where the verdicts differ, the cell says why
+        if not printed.startswith(johnson):
+            assert printed.endswith(
+                f"(decided by eq. 12's printed factor 4: with Johnson's Mindlin {johnson})"
+            )
+        low, high = (float(row[f"K_L / mindlin_johnson one ball 95% {end}"]) for end in ("low", "high"))
+        assert (johnson == "not established") == (low <= 1 <= high)
+    report = (out / "report.html").read_text()
+    assert "rough vs smooth, one ball" in report and "stand-in balls" in report
+
+
+def test_the_help_calls_paper001s_realisations_stand_in_balls(capsys):
+    with pytest.raises(SystemExit):
+        main(["presliding", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "stand-in balls generated with Table 2's roughness" in text
+    assert "not the five spots on the wafer" in text and "measured five spots" not in text
+    assert "'# origin:' header line" in text  # --measured: the loop is called what its file says
+
+
+def test_a_case_that_fails_names_its_sample_replicate_and_seed(capsys, tmp_path):
+    """A stand-in ball whose contact reaches the border of a given window: the error names which."""
+    status, _, err = run(
+        capsys,
+        "presliding",
+        "--paper001",
+        "--ball",
+        "HDPE",
+        "--normal-forces",
+        "25 mN",
+        "--pixels",
+        "128",
+        "--window",
+        "8",
+        "--realisations",
+        "2",
+        "--cycles",
+        "1",
+        "--steps-per-stroke",
+        "4",
+        "-o",
+        tmp_path / "out",
+    )
+    assert status == EXIT_INPUT_ERROR
+    seed = realisation_seed(1, "hdpe", "HDPE", 0)
+    assert f"--window: HDPE at 25 mN (sample HDPE, replicate 0, seed {seed} of topography 'hdpe'): " in err
+    assert "reaches the border of the solved window (8 x 8 px)" in err and "'auto'" in err
 
 
 def test_realisations_of_a_measured_ball_are_refused(capsys, ball_file):

@@ -85,7 +85,11 @@ def test_example_runs_end_to_end(cli, shrunk, tmp_path):
             assert float(entry[f"K_L_{p} / mindlin_johnson"]) == pytest.approx(ratio, rel=1e-12)
 
     measured = read_table(out / "tables" / "presliding_measured_loop.csv")
-    assert measured[0]["source"] == f"measured: {MEASURED}"
+    # the example's loop says '# origin: synthetic' in its header: it is never called measured
+    assert measured[0]["source"] == f"synthetic: {MEASURED}"
+    assert "K_L_A simulated / synthetic" in measured[1] and not any("measured" in k for k in measured[1])
+    assert measured.notes[0] == f"The compared loop {MEASURED} is synthetic."
+    assert "validates nothing" in measured.notes[1]
     # the synthetic loop was built with Table 1's HDPE 25 mN inputs (its header)
     assert float(measured[0]["stroke [m]"]) == pytest.approx(2.805e-6, rel=2e-3)
     assert float(measured[0]["mu"]) == pytest.approx(0.153, rel=2e-3)
@@ -96,6 +100,8 @@ def test_example_runs_end_to_end(cli, shrunk, tmp_path):
     report = (out / "report.html").read_text()
     assert report.count("data:image/png;base64") == 5  # the five figures, embedded
     assert "<h3>lateral stiffness</h3>" in report and "<h3>measured loop</h3>" in report
+    assert f"The compared loop {MEASURED} is synthetic." in report
+    assert "synthetic: paper001_measured_loop.csv" in report and "measured: paper001" not in report
 
     data = xr.load_dataset(next((out / "cases" / "presliding").glob("*.nc")))
     assert list(data["map"].values.astype(str)) == list(POINTS)
@@ -109,6 +115,46 @@ def test_example_runs_end_to_end(cli, shrunk, tmp_path):
     # normal-tangential coupling may add or take away)
     contact = (data["pressure"].values > 0).sum()
     assert np.abs(np.isfinite(shear).sum(axis=(1, 2)) - contact).max() <= 0.05 * contact
+
+
+POM_ON_STAND_IN_BALLS = {
+    key: value
+    for key, value in SMALL.items()
+    if not key.startswith(("realisations", "sample", "topography", "normal_force"))
+} | {
+    'sample = ["HDPE", "HDPE", "HDPE", "POM", "POM", "POM"]': 'sample = ["POM", "POM", "POM"]',
+    'topography = ["hdpe_ball", "hdpe_ball", "hdpe_ball", "pom_ball", "pom_ball", "pom_ball"]': (
+        'topography = ["pom_ball", "pom_ball", "pom_ball"]'
+    ),
+    ZIP: 'normal_force = ["25 mN", "50 mN", "75 mN"]',
+}
+"""The example's POM cases on its five stand-in balls per load, at the reduced grid and steps."""
+
+
+def test_pom_is_not_established_below_johnsons_mindlin_for_one_ball(cli, shrunk, tmp_path):
+    """The example's claim for POM (five stand-in balls per load, reduced size) holds only as printed.
+
+    One POM ball's K_L / Mindlin (Johnson) has a 95 % prediction interval that holds 1 at every load
+    and point: "not established". As printed (4x Johnson's), it is "below" everywhere, which the
+    table says the factor 4 decides.
+    """
+    study = shrunk("paper001.toml", tmp_path, POM_ON_STAND_IN_BALLS, copy=(MEASURED,))
+    status, stdout, stderr = cli("run", study, "-o", tmp_path / "out", "--no-progress")
+    assert status == 0, stderr
+    table = read_table(tmp_path / "out" / "tables" / "presliding_lateral_stiffness_spread.csv")
+    assert len(table) == 9 and {row["n"] for row in table} == {"5"}
+    for row in table:
+        assert row["rough vs smooth, one ball (johnson)"] == "not established"
+        assert (
+            float(row["K_L / mindlin_johnson one ball 95% low"])
+            < 1
+            < float(row["K_L / mindlin_johnson one ball 95% high"])
+        )
+        assert row["rough vs smooth, one ball (printed)"] == (
+            "below (decided by eq. 12's printed factor 4: with Johnson's Mindlin not established)"
+        )
+    assert "POM, Johnson's Mindlin: mean K_L / Mindlin" in " ".join(table.notes)
+    assert "one ball not established at 9 of 9" in " ".join(table.notes)
 
 
 def test_scalars_equal_a_direct_paper001_call(shrunk, tmp_path):

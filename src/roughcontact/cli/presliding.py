@@ -2,9 +2,10 @@
 
 ``presliding`` is a view of the study model ``presliding`` (:mod:`roughcontact.study.kinds.presliding`):
 a ball FILE under paper 001's programme (``--stroke``) or your own (``--path`` CSV), or the paper's
-own cases with ``--paper001`` (generated balls, Table 1 loads, strokes and mu,
-:mod:`roughcontact.papers.paper001`). ``loop-analysis`` is a view of the model ``loop_analysis``:
-a measured loop's stroke, mu, eq. 9 fit and K_L at A, B, C.
+own cases with ``--paper001`` (generated stand-in balls of Table 2's roughness, Table 1 loads,
+strokes and mu, :mod:`roughcontact.papers.paper001`; each case solved on the central window that
+holds its contact, ``--window auto``). ``loop-analysis`` is a view of the model ``loop_analysis``:
+a friction loop's stroke, mu, eq. 9 fit and K_L at A, B, C.
 """
 
 from __future__ import annotations
@@ -26,7 +27,7 @@ from .output import run_command
 
 COMMANDS = {
     "presliding": "partial-slip friction loops of a rough ball on a flat, K_L vs Mindlin (paper 001)",
-    "loop-analysis": "stroke, mu, eq. 9 fit and K_L at A, B, C of a measured friction loop (paper 001)",
+    "loop-analysis": "stroke, mu, eq. 9 fit and K_L at A, B, C of a friction loop (paper 001)",
 }
 """This module's commands and their lines in ``roughcontact --help``."""
 
@@ -62,7 +63,7 @@ def _paper001(command: CommandStudy, args: argparse.Namespace) -> tuple[dict, di
         "topography": (zipped["topography"][0], None),
         "sample": (zipped["sample"][0], None),
         "normal_force": (zipped["normal_force"][0], None),
-        "window": (args.window or 160, "--window"),
+        "window": (args.window or "auto", "--window"),
     }
     flags = {"normal_force": "--normal-forces"}
     return keys, {key: (values, flags.get(key, "--ball")) for key, values in zipped.items()}
@@ -87,6 +88,24 @@ def _ball(command: CommandStudy, args: argparse.Namespace) -> dict:
     } | options(args, "normal_force", "friction_coefficient", "stroke", "maps", "window")
 
 
+def _window_option(args: argparse.Namespace) -> None:
+    """Read --window (pixels or 'auto') in place."""
+    if args.window is not None:
+        args.window = _window(args.window)
+
+
+def _window(text: str) -> int | str:
+    """Return --window as a number of pixels, or ``"auto"`` (the study checks the range)."""
+    if text.strip().lower() == "auto":
+        return "auto"
+    try:
+        return int(text)
+    except ValueError:
+        raise InputError(
+            "--window", f"got {text!r}.", "give a number of pixels such as 160, or 'auto'."
+        ) from None
+
+
 def _fraction(text: str) -> float:
     """Return --max-stick-change as a number (the study checks its range; 0 turns it off)."""
     try:
@@ -102,6 +121,7 @@ def _presliding(args: argparse.Namespace) -> int:
         "roughcontact presliding", "partial-slip friction loops of a rough ball (paper 001)"
     )
     zipped = {}
+    _window_option(args)
     if args.paper001:
         keys, zipped = _paper001(command, args)
     else:
@@ -160,7 +180,8 @@ def add_commands(commands) -> None:
         "Press the ball FILE (heights with its spherical shape) on a flat with --normal-force, "
         "move the flat 0 -> --stroke -> 0 for --cycles cycles, and analyse the last loop; or drive it along "
         "your own displacement or force programme (--path CSV); or run paper 001's HDPE/POM cases with "
-        "--paper001 (generated balls, Table 1 loads, strokes and mu). Study model 'presliding'.",
+        "--paper001 (generated stand-in balls of Table 2's roughness, Table 1 loads, strokes and mu; each "
+        "case solved on the central window that holds its contact). Study model 'presliding'.",
         file=False,
     )
     add_material_options(presliding, "material", "the ball", "HDPE, POM")
@@ -210,14 +231,18 @@ def add_commands(commands) -> None:
     )
     presliding.add_argument(
         "--window",
-        type=int,
-        help="pixels of the solved central window (default 160 with --paper001, else the whole scan)",
+        help="pixels of the solved central window, or 'auto': per case, the smallest that holds every point "
+        "of the ball that can touch at its load (default 'auto' with --paper001, else the whole scan)",
     )
     presliding.add_argument(
         "--pixels", type=int, default=512, help="with --paper001: pixels of the 1.1 mm scan"
     )
     presliding.add_argument("--seed", type=int, default=1, help="with --paper001: seed of the roughness")
-    add_realisations(presliding, "the ball's roughness (--paper001; paper 001 measured five spots)")
+    add_realisations(
+        presliding,
+        "the ball's roughness (--paper001: stand-in balls generated with Table 2's roughness; they are not "
+        "the five spots on the wafer where the paper measured)",
+    )
     presliding.add_argument("--no-coupling", action="store_true", help="uncoupled (Goodman) solution")
     presliding.add_argument(
         "--normal-loading",
@@ -234,10 +259,16 @@ def add_commands(commands) -> None:
         "steps from a reversal to full slip); 'none' or 0 solves the programme's points only",
     )
     presliding.add_argument("--tolerance", type=float, default=1e-8, help="solver tolerance (default 1e-8)")
-    presliding.add_argument("--measured", type=Path, help="a measured loop CSV to set beside the cases")
+    presliding.add_argument(
+        "--measured",
+        type=Path,
+        help="a friction loop CSV to set beside the cases; its '# origin:' header line says whether it is "
+        "measured or synthetic (examples/paper001_measured_loop.csv is synthetic), and tables and legends "
+        "name it so",
+    )
     presliding.add_argument("--measured-displacement-unit", default="um")
     presliding.add_argument("--measured-force-unit", default="mN")
-    presliding.add_argument("--measured-normal-force", help="F0 of the measured loop (default: the cases')")
+    presliding.add_argument("--measured-normal-force", help="F0 of the --measured loop (default: the cases')")
     add_output_options(presliding)
 
     analysis = new_command(

@@ -13,11 +13,17 @@ What the paper does not give, and what is done instead (stated in every result):
 
 * the scans: without a file, a rough sphere is generated (:func:`roughness` : self-affine,
   Hurst 0.8, seeded, on the paper's 1.1 mm / 1024 px field), the drawn roughness of Table 2's rms
-  (``rms="flattened"``: the scan after sphere removal has it, as the paper measured);
+  (``rms="flattened"``: the scan after sphere removal has it, as the paper measured). Several
+  seeds give several *stand-in balls* of the same statistics (``--realisations``): they stand in
+  for the paper's unpublished balls; they are not the five spots on the wafer where it measured;
 * the solved window: only a small central part of the ball touches (paper Figs. 8-9), so the
   free-boundary problem is solved on the central ``window`` x ``window`` pixels at the scan's
-  resolution (default 160 px of a 512 px scan = 0.34 mm; the paper zooms to 0.2 mm); the
-  pressure is checked to vanish on the window's border, else an error asks for a larger window;
+  resolution (:func:`run_case`'s default 160 px of a 512 px scan = 0.34 mm; the paper zooms to
+  0.2 mm); the pressure is checked to vanish on the window's border, else an error asks for a
+  larger window. ``window="auto"`` (the ``--paper001`` command's default) chooses, per ball and
+  load, the smallest window that holds every point that can touch
+  (:func:`roughcontact.contact.presliding.contact_window`): with HDPE's 3.17 um roughness some
+  balls touch 0.19 mm off the apex, beyond a 160 px window;
 * the steps of the path: ``steps_per_stroke`` per branch, spaced quadratically from each reversal
   so the pre-sliding part (a fraction of a micrometre) is resolved.
 
@@ -31,7 +37,7 @@ from __future__ import annotations
 from typing import Any
 
 from .._deprecation import moved, renamed
-from ..contact.presliding import MindlinReference, PreslidingResult, mindlin_reference
+from ..contact.presliding import MindlinReference, PreslidingResult, contact_window, mindlin_reference
 from ..contact.presliding import presliding as _presliding
 from ..errors import InputError
 from ..materials import get_material
@@ -170,7 +176,7 @@ def run_case(
     normal_force: float,
     *,
     scan: Topography | None = None,
-    window: int = 160,
+    window: int | str = 160,
     pixels: int = 512,
     seed: int = 1,
     stroke: float | None = None,
@@ -189,8 +195,10 @@ def run_case(
         F0 [N]; Table 1's stroke and mu are used when it is one of 0.025, 0.05, 0.075 N.
     scan : Topography, optional
         The measured ball (heights with the spherical shape, as paper Fig. 4); default generated.
-    window : int
-        Pixels of the central window that is solved (free boundary).
+    window : int or "auto"
+        Pixels of the central window that is solved (free boundary); ``"auto"`` chooses the
+        smallest that holds every point of the ball that can touch at ``normal_force``
+        (:func:`roughcontact.contact.presliding.contact_window`).
     pixels : int
         Pixels across the generated 1.1 mm scan (the paper's 1024 gives 1.07 um; the default
         512 gives 2.15 um, so the default 160-pixel window is 0.34 mm, wide enough for the
@@ -209,11 +217,19 @@ def run_case(
         table = table1(name, normal_force)
         stroke = table[0] if stroke is None else stroke
         friction_coefficient = table[1] if friction_coefficient is None else friction_coefficient
-    surface = central_window(scan if scan is not None else roughness(name, seed=seed, pixels=pixels), window)
+    ball = scan if scan is not None else roughness(name, seed=seed, pixels=pixels)
+    material, flat = get_material(name), get_material(FLAT)
+    if window == "auto":
+        chosen = contact_window(
+            ball, material, flat, normal_force=normal_force, radius=RADIUS, tolerance=tolerance
+        )
+        surface = ball if chosen.whole else central_window(ball, chosen.pixels)
+    else:
+        surface = central_window(ball, window)
     return _presliding(
         surface,
-        get_material(name),
-        get_material(FLAT),
+        material,
+        flat,
         normal_force=normal_force,
         stroke=stroke,
         friction_coefficient=friction_coefficient,

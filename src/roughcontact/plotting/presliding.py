@@ -8,7 +8,8 @@
 * :func:`plot_loop_analysis` - a loop's record, its last loop, the eq. 9 fits and the points (Fig. 10).
 
 The ``*_figure`` functions draw a study's figures from cases of the ``presliding`` and
-``loop_analysis`` models (:mod:`roughcontact.plotting.cases`), with a :class:`MeasuredLoop` beside.
+``loop_analysis`` models (:mod:`roughcontact.plotting.cases`), with a compared loop
+(:class:`MeasuredLoop`, named by its origin: measured or synthetic) beside.
 
 Inputs are SI (m, N, N/m). The loops and the lateral stiffness are shown in the paper's fixed units,
 µm, mN and mN/µm (= kN/m); the maps' lengths in the prefix :func:`roughcontact.units.prefixed_scale`
@@ -32,7 +33,9 @@ from matplotlib.patches import Rectangle
 
 from ..contact.presliding import MINDLIN_READINGS as READINGS
 from ..contact.presliding import POINT_NAMES as POINTS
+from ..contact.presliding import mindlin_ratios, rough_vs_smooth, verdict_words
 from ..errors import InputError
+from ..origin import MEASURED, DataOrigin
 from ..spread import spread
 from ..units import format_si, prefixed_scale, unit_factor
 from .cases import caption, evenly_chosen, grouped, panel_per_case, realisations_of, with_fields
@@ -78,17 +81,18 @@ def plot_hysteresis_loops(
 ) -> Figure:
     """Draw friction hysteresis loops, friction force vs tangential displacement (Figs. 13-14).
 
-    Simulated loops are thick solid lines, measured ones thin dashed lines (the paper overlays
-    the loops of five spots on the simulation). Where a simulated loop is the mean over
-    realisations, each realisation is a thin line of its colour: together they show the band
-    the draw of the surface spans.
+    Simulated loops are thick solid lines, compared ones (measured, or synthetic: their labels say
+    which) thin dashed lines; the paper overlays the loops it measured at five spots on the wafer
+    on the simulation. Where a simulated loop is the mean over realisations (stand-in balls of
+    the same statistics), each realisation is a thin line of its colour: together they show the
+    band the draw of the surface spans.
 
     Parameters
     ----------
     simulated : list of (delta, F, label)
         Displacement [m] and force [N] arrays and a legend label per loop.
     measured : list of (delta, F, label), optional
-        The same for measured loops.
+        The same for compared loops; the label names their origin.
     realisations : list of list of (delta, F, label), optional
         Per simulated loop, the loops of its realisations (empty for a loop of one).
     ax : matplotlib Axes, optional
@@ -385,7 +389,9 @@ def plot_lateral_stiffness(
     mindlin: Mapping[str, Mapping[str, Sequence[float]]] | None = None,
     *,
     interval: Mapping[str, Sequence[float]] | None = None,
+    prediction: Mapping[str, tuple[Sequence[float], Sequence[float]]] | None = None,
     realisations: int = 1,
+    realisation_word: str = "realisations",
     ax: Axes | None = None,
     title: str | None = None,
 ) -> Figure:
@@ -409,8 +415,14 @@ def plot_lateral_stiffness(
         Point name to the half width [N/m] of the 95 % interval of the simulated mean at each load
         (``simulated`` then holds means over ``realisations``): drawn as error bars, those of A
         and C shifted by -1 % and +1 % of the largest load so that the three do not hide each other.
+    prediction : dict of str to (array_like, array_like), optional
+        Point name to the low and high ends [N/m] of the 95 % prediction interval of one more
+        realisation at each load (where one ball falls; :meth:`roughcontact.spread.Spread.prediction`):
+        drawn as thin lines without caps behind the error bars of the mean.
     realisations : int
         Realisations behind each simulated mean (said in the legend).
+    realisation_word : str
+        What the realisations are, in the legend (``"stand-in balls"`` for paper 001's generated balls).
     ax : matplotlib Axes, optional
         Axes to draw on.
     title : str, optional
@@ -446,6 +458,17 @@ def plot_lateral_stiffness(
             label=f"{point} measured",
         )
     dodge = 0.01 * float(np.max(load)) / _FORCE_SCALE if load.size else 0.0  # bars of A, B, C side by side
+    for number, (point, (lows, highs)) in enumerate((prediction or {}).items()):
+        low, high = values(lows, "prediction", point), values(highs, "prediction", point)
+        ax.vlines(
+            load / _FORCE_SCALE + (number - 1) * dodge,
+            low,
+            high,
+            color=POINT_COLOURS.get(point),
+            linewidth=0.8,
+            alpha=0.5,
+            label=f"{point} one of the {realisation_word}: 95 % prediction interval",
+        )
     for number, (point, series) in enumerate((simulated or {}).items()):
         colour = POINT_COLOURS.get(point)
         if interval is not None and point in interval:
@@ -456,7 +479,7 @@ def plot_lateral_stiffness(
                 fmt="o",
                 capsize=3,
                 color=colour,
-                label=f"{point} simulated, mean ± 95 % CI ({realisations} realisations)",
+                label=f"{point} simulated, mean ± 95 % CI of the mean ({realisations} {realisation_word})",
             )
             continue
         ax.plot(
@@ -559,8 +582,9 @@ def plot_loop_analysis(
 
 
 @caption(
-    "Measured friction case (grey) with its last loop, the eq. 9 fits of its pre-sliding branches "
-    "and the points A, B, C with their lateral stiffness K_L (paper 001 Fig. 10)."
+    "The friction record (grey; measured or synthetic, as its file says) with its last loop, the eq. 9 "
+    "fits of its pre-sliding branches and the points A, B, C with their lateral stiffness K_L "
+    "(paper 001 Fig. 10)."
 )
 def loop_analysis_figure(cases):
     """Draw each case (grey), its last loop, the eq. 9 fits and the points with their K_L (Fig. 10).
@@ -588,7 +612,10 @@ def _number(case, name: str) -> float:
 
 @dataclass(frozen=True)
 class MeasuredLoop:
-    """A measured friction loop to draw beside the cases: the loop, its analysis and where it belongs.
+    """A compared friction loop to draw beside the cases: the loop, its analysis, its place and origin.
+
+    The class keeps its name (the study key is ``measured_loop``), but the loop is called what its
+    file says it is (:attr:`origin`): a synthetic loop is never labelled measured.
 
     Attributes
     ----------
@@ -599,9 +626,11 @@ class MeasuredLoop:
     name : str
         Its name in legends (the file's).
     normal_force : float
-        F0 of the measurement [N].
+        F0 of the loop [N].
     sample : str or None
         The sample it belongs to; None: every sample.
+    origin : DataOrigin
+        Measured, reconstructed or synthetic (the file's ``# origin:`` header, :mod:`roughcontact.origin`).
     """
 
     loop: Any
@@ -609,6 +638,12 @@ class MeasuredLoop:
     name: str
     normal_force: float
     sample: str | None = None
+    origin: DataOrigin = MEASURED
+
+    @property
+    def legend(self) -> str:
+        """The loop's name in a legend, by its origin: ``synthetic loop (paper001_measured_loop.csv)``."""
+        return f"{self.origin.word} loop ({self.name})"
 
     def applies_to(self, sample: str) -> bool:
         """Whether the loop is drawn beside the cases of ``sample``."""
@@ -626,10 +661,11 @@ def _realisations_by_load(cases) -> list[list]:
 
 @caption(
     "Friction force against tangential displacement of every case, one panel per sample, with the "
-    "measured loop of [analysis.compare] where given (paper 001 Figs. 13-14)."
+    "loop of [analysis.compare] where given, named by its origin (measured or synthetic, as its file "
+    "says; paper 001 Figs. 13-14)."
 )
 def loops_figure(cases, measured: MeasuredLoop | None = None, title: str = ""):
-    """Draw the friction loops of every case, one panel per sample, with a measured loop (Figs. 13-14).
+    """Draw the friction loops of every case, one panel per sample, with a compared loop (Figs. 13-14).
 
     ``title`` names a panel of cases without a sample.
     """
@@ -639,6 +675,7 @@ def loops_figure(cases, measured: MeasuredLoop | None = None, title: str = ""):
     if not groups:
         return None
     figure, axes = new_figure(1, len(groups), width=5.5, height=4.2)
+    word = _realisation_word(cases)
     for ax, (sample, group) in zip(axes[0], groups.items(), strict=True):
         curves, spreads = [], []
         for cases in _realisations_by_load(group):
@@ -652,7 +689,7 @@ def loops_figure(cases, measured: MeasuredLoop | None = None, title: str = ""):
             if data.attrs.get("control") == "force":
                 label += ", force control"
             loops = [(np.asarray(c.dataset()["delta_x"]), np.asarray(c.dataset()["force_x"])) for c in cases]
-            curve, each = _mean_loop(loops, label)
+            curve, each = _mean_loop(loops, label, word)
             curves.append(curve)
             spreads.append(each)
         overlay = []
@@ -663,8 +700,8 @@ def loops_figure(cases, measured: MeasuredLoop | None = None, title: str = ""):
                 (
                     loop.displacement - shift,
                     loop.force,
-                    f"measured {measured.name} "
-                    f"({measured.normal_force * 1e3:g} mN, shifted {-shift * 1e6:+.2f} µm)",
+                    f"{measured.origin.word} loop ({measured.name}, "
+                    f"{measured.normal_force * 1e3:g} mN, shifted {-shift * 1e6:+.2f} µm)",
                 )
             )
         plot_hysteresis_loops(
@@ -673,12 +710,15 @@ def loops_figure(cases, measured: MeasuredLoop | None = None, title: str = ""):
     return figure
 
 
-def _mean_loop(loops: list[tuple[np.ndarray, np.ndarray]], label: str) -> tuple[tuple, list[tuple]]:
+def _mean_loop(
+    loops: list[tuple[np.ndarray, np.ndarray]], label: str, word: str = "realisations"
+) -> tuple[tuple, list[tuple]]:
     """Return the loop to draw thick for one load's realisations, and the realisations to draw thin.
 
     One realisation is itself. Several under one displacement programme (the same steps, as
     paper 001's) give their mean force at each step, labelled with their number; programmes whose
-    steps differ (the step control inserted steps) give the first loop and say so.
+    steps differ (the step control inserted steps) give the first loop and say so. ``word`` says
+    what the realisations are (paper 001's generated balls: ``"stand-in balls"``).
     """
     if len(loops) == 1:
         return (*loops[0], label), []
@@ -686,8 +726,8 @@ def _mean_loop(loops: list[tuple[np.ndarray, np.ndarray]], label: str) -> tuple[
     first = loops[0][0]
     if all(delta.shape == first.shape and np.allclose(delta, first, rtol=1e-9, atol=0) for delta, _ in loops):
         mean = np.mean([force for _, force in loops], axis=0)
-        return (first, mean, f"{label}: mean of {len(loops)} realisations (thin: each)"), each
-    return (*loops[0], f"{label}: {len(loops)} realisations (thin; their steps differ)"), each[1:]
+        return (first, mean, f"{label}: mean of {len(loops)} {word} (thin: each)"), each
+    return (*loops[0], f"{label}: {len(loops)} {word} (thin; their steps differ)"), each[1:]
 
 
 @caption(
@@ -898,15 +938,65 @@ def _mindlin_curves(group, loads: np.ndarray) -> dict[str, dict[str, np.ndarray]
     }
 
 
+def _realisation_word(cases) -> str:
+    """Return what the realisations are: paper 001's generated balls are stand-ins of Table 2's roughness."""
+    return (
+        "stand-in balls"
+        if any(case.scalars.get("table2_rq") is not None for case in cases)
+        else "realisations"
+    )
+
+
+def _verdict_line(at_load) -> str:
+    """Sum up one ball's verdict against Mindlin over a sample's loads and points, in both readings.
+
+    ``at_load``: the cases of each load, each list the realisations of one case. Empty with fewer
+    than two realisations (no interval to judge). See
+    :func:`roughcontact.contact.presliding.rough_vs_smooth`.
+    """
+    words: dict[str, list[str]] = {reading: [] for reading in READINGS}
+    decided = 0
+    for cases in at_load:
+        if len(cases) < 2:
+            return ""
+        for point in POINTS:
+            references = {
+                reading: [_number(r, f"K_L_{point}_mindlin_{reading}") for r in cases] for reading in READINGS
+            }
+            verdicts = rough_vs_smooth(
+                mindlin_ratios([_number(r, f"K_L_{point}") for r in cases], references)
+            )
+            for reading in READINGS:
+                words[reading].append(verdicts[reading].word)
+            decided += verdict_words(verdicts, "printed") != verdicts["printed"].word
+    total = len(words["johnson"])
+
+    def tally(reading: str) -> str:
+        counts = {word: words[reading].count(word) for word in dict.fromkeys(words[reading])}
+        return ", ".join(f"{word} {count}/{total}" for word, count in counts.items())
+
+    line = f"one ball vs Mindlin (95 % prediction): Johnson {tally('johnson')}"
+    line += f"; as printed {tally('printed')}"
+    if decided:
+        line += f"\n({decided}/{total} as printed decided by eq. 12's printed factor 4, not by the roughness)"
+    return line
+
+
 @caption(
     "Lateral stiffness K_L at the points A, B, C against the normal force, simulated beside Mindlin's "
-    "smooth ball in both readings of eq. 12, one panel per sample (paper 001 Fig. 15)."
+    "smooth ball in both readings of eq. 12, one panel per sample (paper 001 Fig. 15). Over "
+    "realisations: the mean with the 95 % interval of the mean (capped bars) and the 95 % prediction "
+    "interval of one ball (thin lines), and the verdict of one ball against Mindlin in the title."
 )
 def lateral_stiffness_figure(cases, measured: MeasuredLoop | None = None, title: str = ""):
     """Draw K_L at A, B, C against F0 with Mindlin in both readings, one panel per sample (Fig. 15).
 
-    A ``measured`` loop's K_L is marked at its load; ``title`` names a panel of cases without a sample.
-    None where no case has an analysed loop (its K_L are undefined).
+    Over realisations, each load shows the mean with its 95 % interval (capped bars) and the 95 %
+    prediction interval of one ball (thin lines); the panel's title sums up one ball's verdict
+    against Mindlin in both readings (:func:`roughcontact.contact.presliding.rough_vs_smooth`),
+    saying where eq. 12's printed factor 4 decides it. A ``measured`` loop's K_L is marked at its
+    load, named by its origin; ``title`` names a panel of cases without a sample. None where no
+    case has an analysed loop (its K_L are undefined).
     """
     from .layout import new_figure
 
@@ -918,27 +1008,34 @@ def lateral_stiffness_figure(cases, measured: MeasuredLoop | None = None, title:
     if high <= low * (1 + 1e-9):
         low, high = 0.8 * low, 1.2 * high
     dense = np.linspace(low, high, 50)
-    figure, axes = new_figure(1, len(groups), width=5.5, height=5.2)
+    word = _realisation_word(cases)
+    figure, axes = new_figure(1, len(groups), width=5.5, height=5.6)
     for number, (ax, (sample, group)) in enumerate(zip(axes[0], groups.items(), strict=True)):
         at_load = _realisations_by_load(group)
         firsts = [cases[0] for cases in at_load]
         loads = [_number(case, "normal_force") for case in firsts]
-        spreads = {p: [spread(_number(r, f"K_L_{p}") for r in cases) for cases in at_load] for p in POINTS}
+        spreads = {
+            p: [spread((_number(r, f"K_L_{p}") for r in cases), bounds=(0.0, math.inf)) for cases in at_load]
+            for p in POINTS
+        }
         simulated = {p: [s.mean for s in spreads[p]] for p in POINTS}
         count = max(len(cases) for cases in at_load)
         interval = {p: [s.half_width for s in spreads[p]] for p in POINTS} if count > 1 else None
+        prediction = None
+        if count > 1:
+            ends = {p: [s.prediction() for s in spreads[p]] for p in POINTS}
+            prediction = {p: ([e[0] for e in ends[p]], [e[1] for e in ends[p]]) for p in POINTS}
+        drawn = dict(interval=interval, prediction=prediction, realisations=count, realisation_word=word)
         curves = _mindlin_curves(firsts, dense)
         if curves is None:  # materials differ within the sample: Mindlin at the cases' loads only
             curves = {
                 reading: {p: [_number(r, f"K_L_{p}_mindlin_{reading}") for r in firsts] for p in POINTS}
                 for reading in READINGS
             }
-            plot_lateral_stiffness(
-                loads, simulated, mindlin=curves, interval=interval, realisations=count, ax=ax
-            )
+            plot_lateral_stiffness(loads, simulated, mindlin=curves, ax=ax, **drawn)
         else:
             plot_lateral_stiffness(dense, mindlin=curves, ax=ax)
-            plot_lateral_stiffness(loads, simulated, interval=interval, realisations=count, ax=ax)
+            plot_lateral_stiffness(loads, simulated, ax=ax, **drawn)
         if measured is not None and measured.applies_to(sample):
             stiffness = measured.analysis.lateral_stiffness
             for point in POINTS:
@@ -949,8 +1046,45 @@ def lateral_stiffness_figure(cases, measured: MeasuredLoop | None = None, title:
                     markerfacecolor="none",
                     markersize=9,
                     color=POINT_COLOURS.get(point),
-                    label=f"{point} measured loop",
+                    label=f"{point} {measured.legend}",
                 )
-        ax.set_title(f"({chr(ord('a') + number)}) {sample or title}")
-        legend(ax, fontsize="x-small", ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.15))
+        heading = f"({chr(ord('a') + number)}) {sample or title}"
+        verdict = _verdict_line(at_load)
+        ax.set_title(f"{heading}\n{verdict}" if verdict else heading, fontsize="small" if verdict else None)
+        shown = measured if measured is not None and measured.applies_to(sample) else None
+        _stiffness_legend(ax, count, word, shown)
     return figure
+
+
+def _stiffness_legend(ax: Axes, count: int, word: str, measured: MeasuredLoop | None) -> None:
+    """Put a short legend under a K_L panel: colours name the points once, styles what is drawn."""
+    from matplotlib.lines import Line2D
+
+    grey = "0.3"
+    handles = [Line2D([], [], color=POINT_COLOURS[p], linewidth=3, label=f"point {p}") for p in POINTS]
+    handles += [
+        Line2D([], [], color=grey, linestyle="--", label="Mindlin (Johnson, textbook)"),
+        Line2D([], [], color=grey, linestyle="-.", label="Mindlin (eq. 12 as printed, 4x)"),
+    ]
+    if count > 1:
+        handles += [
+            Line2D(
+                [], [], color=grey, marker="o", linestyle="none", label=f"mean ± 95 % CI ({count} {word})"
+            ),
+            Line2D([], [], color=grey, linewidth=0.8, alpha=0.5, label="one ball: 95 % prediction interval"),
+        ]
+    else:
+        handles.append(Line2D([], [], color=grey, marker="o", linestyle="none", label="simulated"))
+    if measured is not None:
+        handles.append(
+            Line2D(
+                [],
+                [],
+                color=grey,
+                marker="s",
+                markerfacecolor="none",
+                linestyle="none",
+                label=measured.legend,
+            )
+        )
+    ax.legend(handles=handles, fontsize="x-small", ncol=2, loc="upper center", bbox_to_anchor=(0.5, -0.15))

@@ -10,7 +10,11 @@ flat with a constant normal force F0 and taken through a tangential programme: p
    to F0. With ``window`` only the central ``window`` x ``window`` pixels are solved
    (:func:`~roughcontact.topography.process.central_window`; only the centre of the ball touches,
    paper Figs. 8-9); the pressure must vanish on the window's border, else the case fails and
-   asks for a larger window.
+   asks for a larger window (a given window whose outside holds points within the approach of
+   the highest point gets a warning: they may touch). ``window = "auto"`` chooses per case the
+   smallest window that holds every point that can touch
+   (:func:`roughcontact.contact.presliding.contact_window`); ``window_pixels`` and
+   ``window_choice`` say which window each case solved and why.
 2. The programme. Paper 001's (``stroke``): the displacement path of Fig. 6, delta_x: 0 -> d_s -> 0
    repeated ``cycles`` times (default 4, as the paper), ``steps_per_stroke`` steps per branch
    spaced quadratically from each reversal so the short pre-sliding part is resolved. Yours
@@ -58,12 +62,17 @@ precision). With few steps in the pre-sliding part two points can share a step, 
 Figures: ``path`` (the displacement programme with the analysed last loop and the points A, B, C;
 Fig. 6), ``pressure`` (the contact pressure of up to three cases, whole field beside a zoom on
 the contact; Figs. 8-9), ``loops`` (every case's hysteresis loops, one panel per sample, with the
-measured loop of ``[analysis.compare]``; Figs. 13-14), ``stick_slip`` (stick/slip maps of up to three cases,
-zoomed to the contact; Figs. 11-12), ``lateral_stiffness`` (K_L at A, B, C against F0 with
-both Mindlin readings, one panel per sample; Fig. 15). Tables: ``lateral_stiffness`` (per case
-K_L simulated against Mindlin, with their ratios) and, with ``[analysis.compare]``,
-``measured_loop`` (stroke, mu and K_L at A, B, C of the measured loop beside the simulated cases at
-its normal force).
+loop of ``[analysis.compare]``, named by its origin; Figs. 13-14), ``stick_slip`` (stick/slip maps
+of up to three cases, zoomed to the contact; Figs. 11-12), ``lateral_stiffness`` (K_L at A, B, C
+against F0 with both Mindlin readings, one panel per sample, with the mean's and one ball's
+intervals over realisations and one ball's verdict in the title; Fig. 15). Tables:
+``lateral_stiffness`` (per case K_L simulated against Mindlin, with their ratios),
+``lateral_stiffness_spread`` (over realisations, e.g. paper 001's stand-in balls: one ball's
+verdict against Mindlin in each reading, judged by the 95 % prediction interval of one more
+realisation, with the mean's interval beside it, and where eq. 12's printed factor 4 decides
+the verdict) and, with ``[analysis.compare]``, ``measured_loop`` (stroke, mu and K_L at A, B, C of
+the compared loop beside the simulated cases at its normal force; its row, columns and note name
+the loop's origin, measured or synthetic, from its file's ``# origin:`` header).
 
 References
 ----------
@@ -101,9 +110,11 @@ class PreslidingParameters(CaseParameters):
     topography : str
         The ball: a topography with its spherical shape (paper Fig. 4), e.g. a generated
         ``sphere_with_roughness``.
-    window : int or None
-        Solve only the central ``window`` x ``window`` pixels (free boundary); None solves the
-        whole surface.
+    window : int, "auto" or None
+        Solve only the central ``window`` x ``window`` pixels (free boundary); ``"auto"`` chooses,
+        per case, the smallest central window that holds every point of the ball that can touch
+        at the case's normal force (:func:`roughcontact.contact.presliding.contact_window`); None
+        solves the whole surface.
     material, counter_body : str
         The ball's material and the flat's (None: a rigid flat).
     normal_force : float
@@ -145,7 +156,7 @@ class PreslidingParameters(CaseParameters):
     """
 
     topography: TopographyName
-    window: Annotated[int, Field(ge=3)] | None = None
+    window: Annotated[int, Field(ge=3)] | Literal["auto"] | None = None
     material: MaterialName
     counter_body: MaterialName | None = None
     normal_force: Annotated[Force, _Positive] | None = None
@@ -215,17 +226,21 @@ def _paper001_keys(given: Mapping[str, Any]) -> dict[str, Any]:
 
 
 class PreslidingCompare(Strict):
-    """The ``[analysis.compare]`` table: a measured friction loop (CSV) to set beside the cases.
+    """The ``[analysis.compare]`` table: a friction loop (CSV) to set beside the cases.
+
+    The key keeps the name ``measured_loop``; what the loop is (measured, reconstructed or
+    synthetic) its file's ``# origin:`` header says, and the tables and figures name it so.
 
     Attributes
     ----------
     measured_loop : Path
         CSV of displacement and force (:func:`roughcontact.experiment.friction_loop.read_loop_csv`:
-        columns found by name, ``#`` comments), relative to the study file.
+        columns found by name, ``#`` comments, ``# origin: synthetic`` for a synthetic loop),
+        relative to the study file.
     displacement_unit, force_unit : str
         Units of its columns (default um and mN).
     normal_force : float
-        F0 of the measured loop [N]; the loop is compared with the cases at this force.
+        F0 of the compared loop [N]; the loop is compared with the cases at this force.
     sample : str or None
         The sample (ball) the loop belongs to; None compares it with every sample.
     """
@@ -259,13 +274,85 @@ def check(parameters: PreslidingParameters) -> None:
         raise InputError("normal_force", "missing.", "e.g. normal_force = '25 mN' (paper 001 Table 1).")
 
 
-def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
-    """Run the programme on one ball at one load; scalars and dataset of :class:`PreslidingResult`."""
-    from ...contact.presliding import presliding
+def _case_words(parameters: PreslidingParameters, inputs, label: str) -> str:
+    """Name a case in its errors: its label, sample, replicate and the seed of its ball."""
+    spec = inputs.specs.get(parameters.topography)
+    seed = getattr(spec, "seed", None)
+    ball = f"seed {seed}" if seed is not None else "a measured or fixed surface"
+    sample = f"sample {parameters.sample}, " if parameters.sample else ""
+    return (
+        f"{label} ({sample}replicate {parameters.replicate}, {ball} of topography {parameters.topography!r})"
+    )
+
+
+def _largest_load(parameters: PreslidingParameters, normal_path, normal_control) -> dict[str, float]:
+    """Return the largest normal force (or approach) of the case, for the window of ``window = "auto"``."""
+    import numpy as np
+
+    if normal_path is None:
+        return {"normal_force": parameters.normal_force}
+    key = "normal_force" if normal_control == "force" else "approach"
+    return {key: float(np.max(normal_path))}
+
+
+def _solved(parameters: PreslidingParameters, inputs, programme: dict, label: str):
+    """Choose the window, run the programme; return the result, how the window was chosen and warnings."""
+    from ...contact.presliding import contact_window, presliding, window_holds
     from ...topography.process import central_window
 
     scan = inputs.topography(parameters.topography)
-    surface = scan if parameters.window is None else central_window(scan, parameters.window)
+    material = inputs.material(parameters.material)
+    counter_body = inputs.material(parameters.counter_body)
+    warnings = []
+    if parameters.window == "auto":
+        chosen = contact_window(
+            scan,
+            material,
+            counter_body,
+            radius=parameters.radius,
+            tolerance=parameters.tolerance,
+            **_largest_load(parameters, programme.get("normal_path"), programme.get("normal_control")),
+        )
+        surface = scan if chosen.whole else central_window(scan, chosen.pixels)
+        choice = f"auto: {chosen.note}"
+    elif parameters.window is None:
+        surface, choice = scan, "the whole scan (window not given)"
+    else:
+        surface = central_window(scan, parameters.window)
+        choice = f"given: {parameters.window} px"
+    result = presliding(
+        surface,
+        material,
+        counter_body,
+        normal_force=parameters.normal_force,
+        friction_coefficient=parameters.friction_coefficient,
+        radius=parameters.radius,
+        coupling=parameters.coupling,
+        normal_loading=parameters.normal_loading,
+        loading_steps=parameters.loading_steps,
+        max_stick_change=parameters.max_stick_change or None,
+        tolerance=parameters.tolerance,
+        label=label,
+        **programme,
+    )
+    if isinstance(parameters.window, int):
+        holds, depth = window_holds(scan, result.normal)
+        if not holds:
+            warnings.append(
+                f"points of the ball outside the given {parameters.window} px window lie within the approach "
+                f"({depth * 1e6:.3g} um below the highest point) and may touch: the window's answer is not "
+                "proven to hold the whole contact. window = 'auto' chooses one that holds them."
+            )
+    return result, scan, choice, warnings
+
+
+def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
+    """Run the programme on one ball at one load; scalars and dataset of :class:`PreslidingResult`.
+
+    Every error names the case: its label, sample, replicate and the seed of its ball.
+    """
+    from ...errors import ConvergenceError, InputError
+
     if parameters.path is not None:
         from ...contact.paths import read_programme_csv
 
@@ -280,25 +367,21 @@ def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
             "steps_per_stroke": parameters.steps_per_stroke,
         }
     ball = parameters.sample or parameters.topography
-    result = presliding(
-        surface,
-        inputs.material(parameters.material),
-        inputs.material(parameters.counter_body),
-        normal_force=parameters.normal_force,
-        friction_coefficient=parameters.friction_coefficient,
-        radius=parameters.radius,
-        coupling=parameters.coupling,
-        normal_loading=parameters.normal_loading,
-        loading_steps=parameters.loading_steps,
-        max_stick_change=parameters.max_stick_change or None,
-        tolerance=parameters.tolerance,
-        label=ball if parameters.normal_force is None else f"{ball} at {parameters.normal_force * 1e3:g} mN",
-        **programme,
-    )
-    scalars = result.scalars()
+    label = ball if parameters.normal_force is None else f"{ball} at {parameters.normal_force * 1e3:g} mN"
+    where = _case_words(parameters, inputs, label)
+    try:
+        result, scan, choice, warnings = _solved(parameters, inputs, programme, label)
+    except InputError as error:
+        problem = error.problem.removeprefix(f"{label}: ")
+        raise InputError(error.field, f"{where}: {problem}", error.fix, fixes=error.fixes) from error
+    except ConvergenceError as error:
+        raise ConvergenceError(
+            f"{where}: {error.solver}", error.residual, error.iterations, error.tolerance, error.stalled_at
+        ) from error
+    scalars = result.scalars() | {"window_choice": choice}
     if scan.info.get("rms") in ("drawn", "flattened") and parameters.sample in paper001.ROUGHNESS:
         scalars |= paper001.flattened_roughness(scan, parameters.sample)  # a generated ball of paper 001
-    return CaseOutput(scalars, result.to_xarray())
+    return CaseOutput(scalars, result.to_xarray(), tuple(warnings))
 
 
 # --- figures and tables (from stored records only) -----------------------------------------------
@@ -311,7 +394,10 @@ def _number(record, name: str) -> float:
 
 
 def _measured(context):
-    """Return the measured loop of ``[analysis.compare]`` and its analysis, or None (none, or file gone).
+    """Return the compared loop of ``[analysis.compare]`` and its analysis, or None (none, or file gone).
+
+    The loop carries its origin (measured, reconstructed or synthetic: its file's ``# origin:``
+    header, :func:`roughcontact.experiment.friction_loop.read_loop_csv`).
 
     A file that was there when the study ran but is missing now (a report drawn on another
     machine) leaves the measured overlay out rather than failing the figure.
@@ -327,14 +413,16 @@ def _measured(context):
 
 
 def _measured_loop(records, context):
-    """Return the measured loop of ``[analysis.compare]`` as the figures draw it, or None."""
+    """Return the compared loop of ``[analysis.compare]`` as the figures draw it, with its origin, or None."""
     from ...plotting.presliding import MeasuredLoop
 
     measured = _measured(context)
     if measured is None:
         return None
     compare = context.compare
-    return MeasuredLoop(*measured, Path(compare.measured_loop).name, compare.normal_force, compare.sample)
+    loop, analysis = measured
+    name = Path(compare.measured_loop).name
+    return MeasuredLoop(loop, analysis, name, compare.normal_force, compare.sample, loop.origin)
 
 
 def _analysis_name(records, context) -> str:
@@ -368,12 +456,42 @@ def _columns(record, columns: dict[str, str]) -> dict[str, float]:
     return {header: _number(record, name) for header, name in columns.items()}
 
 
+def _stand_in(records) -> bool:
+    """Return True where the balls are generated paper 001 balls (stand-ins of Table 2's roughness)."""
+    return any(record.scalars.get("table2_rq") is not None for record in records)
+
+
+def _window_notes(records) -> list[str]:
+    """Say which windows were solved where ``window = "auto"`` chose them, per sample."""
+    chosen: dict[str, list[int]] = {}
+    for record in records:
+        if str(record.scalars.get("window_choice", "")).startswith("auto"):
+            pixels = record.scalars.get("window_pixels")
+            if pixels is not None:
+                chosen.setdefault(record.parameters.get("sample", ""), []).append(int(pixels))
+    if not chosen:
+        return []
+    spans = "; ".join(
+        f"{sample or 'the cases'} {min(p)}-{max(p)} px" if min(p) != max(p) else f"{sample} {p[0]} px"
+        for sample, p in chosen.items()
+    )
+    return [
+        f"Solved windows, chosen per case (window = 'auto'): {spans}. Each holds every point of the "
+        "ball within the case's approach of its highest point, so nothing outside it can touch "
+        "(window_choice in results.csv says how each was found)."
+    ]
+
+
 def _lateral_stiffness_table(records, context):
     """Per case: K_L at A, B, C simulated, Mindlin (Johnson and as printed) and their ratios [N/m]."""
+    from ..store import Table
+
     rows = []
     for record in records:
         row = {"case": record["case"], "sample": record.parameters.get("sample", "")}
         row |= _columns(record, _INPUTS)
+        pixels = record.scalars.get("window_pixels")
+        row["window_pixels"] = "" if pixels is None else int(pixels)
         for point in POINTS:
             simulated = _number(record, f"K_L_{point}")
             row[f"K_L_{point} [N/m]"] = simulated
@@ -382,53 +500,126 @@ def _lateral_stiffness_table(records, context):
                 row[f"K_L_{point}_mindlin_{reading} [N/m]"] = reference
                 row[f"K_L_{point} / mindlin_{reading}"] = _ratio(simulated, reference)
         rows.append(row)
-    return rows
+    return Table(rows, _window_notes(records))
+
+
+def _tally(verdicts: list[str]) -> str:
+    """Count verdict words: ``below at 9 of 9`` or ``not established at 8 of 9, below at 1 of 9``."""
+    counts: dict[str, int] = {}
+    for word in verdicts:
+        counts[word] = counts.get(word, 0) + 1
+    order = sorted(counts, key=lambda word: -counts[word])
+    return ", ".join(f"{word} at {counts[word]} of {len(verdicts)}" for word in order)
 
 
 def _lateral_stiffness_spread_table(records, context):
-    """Per sample, load and point: K_L over the realisations against Mindlin's (paper 001's claim).
+    """Per sample, load and point: one ball's K_L against Mindlin's smooth ball (paper 001's claim).
 
-    K_L's mean and 95 % interval of the mean [N/m], and the ratio to each Mindlin reading with its
-    own interval; ``rough vs smooth`` says whether the whole interval of the ratio lies below 1
-    (the rough ball is laterally softer than the smooth one at 95 % confidence), above 1, or
-    whether 1 lies within the realisations' scatter. None without realisations.
+    The claim (the rough ball is laterally softer than the smooth one, paper 001 sec. 5, Fig. 15) is
+    about one ball, so ``rough vs smooth, one ball`` judges the 95 % prediction interval of K_L /
+    Mindlin for one more realisation (:func:`roughcontact.contact.presliding.rough_vs_smooth`):
+    ``below`` or ``above`` where the whole interval lies on that side of 1, ``not established``
+    where it holds 1. Beside it, the ratio's mean and the 95 % confidence interval of the mean, and
+    K_L's mean with its interval [N/m]. Where the verdict under eq. 12 as printed (Mindlin's K_L 4x
+    Johnson's) differs from Johnson's, the printed cell says that the factor 4 decides it. The
+    notes (CSV, report, terminal) say what the intervals are and sum up the verdicts per sample.
+    None without realisations.
     """
+    from ...contact.presliding import READING_WORDS, mindlin_ratios, rough_vs_smooth, verdict_words
     from ...plotting.cases import realisations_of
     from ...spread import spread
+    from ..store import Table
 
     groups = list(realisations_of(records).values())
     if all(len(group) < 2 for group in groups):
         return None
-    rows = []
+    rows, tally, means, cut = [], {}, {}, set()
     for group in groups:
         sample, force = group[0].parameters.get("sample", ""), _number(group[0], "normal_force")
         for point in POINTS:
-            stiffness = spread(_number(r, f"K_L_{point}") for r in group)
+            values = [_number(r, f"K_L_{point}") for r in group]
+            stiffness = spread(values, bounds=(0.0, math.inf))
+            references = {
+                reading: [_number(r, f"K_L_{point}_mindlin_{reading}") for r in group] for reading in READINGS
+            }
+            ratios = mindlin_ratios(values, references)
+            verdicts = rough_vs_smooth(ratios)
             row = {"sample": sample, "normal_force [N]": force, "point": point, "n": stiffness.n}
-            row |= {"K_L mean [N/m]": stiffness.mean, "K_L 95% low [N/m]": stiffness.ci95_low}
-            row["K_L 95% high [N/m]"] = stiffness.ci95_high
+            row |= {"K_L mean [N/m]": stiffness.mean, "K_L mean 95% low [N/m]": stiffness.ci95_low}
+            row["K_L mean 95% high [N/m]"] = stiffness.ci95_high
             for reading in READINGS:
-                ratio = spread(
-                    _ratio(_number(r, f"K_L_{point}"), _number(r, f"K_L_{point}_mindlin_{reading}"))
-                    for r in group
-                )
+                ratio, verdict = ratios[reading], verdicts[reading]
                 row[f"K_L / mindlin_{reading} mean"] = ratio.mean
-                row[f"K_L / mindlin_{reading} 95% low"] = ratio.ci95_low
-                row[f"K_L / mindlin_{reading} 95% high"] = ratio.ci95_high
-                row[f"rough vs smooth ({reading})"] = ratio.verdict(1.0).word
+                row[f"K_L / mindlin_{reading} mean 95% low"] = ratio.ci95_low
+                row[f"K_L / mindlin_{reading} mean 95% high"] = ratio.ci95_high
+                row[f"K_L / mindlin_{reading} one ball 95% low"] = verdict.interval[0]
+                row[f"K_L / mindlin_{reading} one ball 95% high"] = verdict.interval[1]
+                row[f"rough vs smooth, one ball ({reading})"] = verdict_words(verdicts, reading)
+                tally.setdefault((sample, reading), []).append(verdict.word)
+                means.setdefault((sample, reading), []).append(ratio.mean)
+                if ratio.note:
+                    cut.add(ratio.note)
+                if verdict.interval[0] == 0.0:
+                    cut.add(
+                        "Where a 'one ball 95% low' is 0, Student's prediction interval reached below 0 and "
+                        "was cut there (K_L / Mindlin cannot be negative): the scatter of the balls is wide "
+                        "against their mean."
+                    )
             rows.append(row)
-    return rows
+    count = max(len(group) for group in groups)
+    balls = "stand-in balls" if _stand_in(records) else "realisations"
+    notes = [
+        "rough vs smooth, one ball: the claim that a rough ball is laterally softer than Mindlin's "
+        "smooth ball is about one ball, so it is judged with the 95 % prediction interval of K_L / "
+        f"Mindlin for one more of the {balls} (the 'one ball 95%' columns): below or above where that "
+        "whole interval lies on that side of 1, not established where it holds 1. The 95 % "
+        f"confidence interval of the mean over the {balls} ('mean 95%') is shown beside it: it narrows "
+        "with more of them and judges their mean, not one ball."
+    ]
+    if _stand_in(records):
+        notes.append(
+            f"The {count} realisations per load are stand-in balls: balls generated with Table 2's "
+            "roughness (seeds derived from the study's seed), not the paper's balls, nor its five "
+            "spots on the wafer."
+        )
+    for (sample, reading), words in tally.items():
+        low, high = min(means[sample, reading]), max(means[sample, reading])
+        notes.append(
+            f"{sample or 'cases'}, {READING_WORDS[reading]}: mean K_L / Mindlin {low:.2f}-{high:.2f} "
+            f"over the loads and points; one ball {_tally(words)}."
+        )
+    decided = [
+        row
+        for row in rows
+        if row["rough vs smooth, one ball (printed)"] != row["rough vs smooth, one ball (johnson)"]
+    ]
+    if decided:
+        where = sorted({row["sample"] for row in decided})
+        notes.append(
+            f"Eq. 12 as printed makes Mindlin's K_L 4x Johnson's textbook value (a typo of the paper). "
+            f"At {len(decided)} of {len(rows)} rows ({', '.join(where)}) its verdict differs from "
+            "Johnson's: the factor 4 decides it there, not the roughness."
+        )
+    notes += sorted(cut)
+    return Table(rows, notes + _window_notes(records))
 
 
 def _measured_loop_table(records, context):
-    """Tabulate the measured loop's stroke, mu and K_L at A, B, C beside the simulated cases at its F0."""
+    """Tabulate the compared loop's stroke, mu and K_L at A, B, C beside the simulated cases at its F0.
+
+    The loop's origin (its file's ``# origin:`` header, :mod:`roughcontact.origin`) names its row
+    and columns: a synthetic loop is never called measured. Its caveat is the table's note.
+    """
+    from ..store import Table
+
     measured = _measured(context)
     if measured is None:
         return None
     loop, analysis = measured
     compare = context.compare
+    word = loop.origin.word
     row = {
-        "source": f"measured: {Path(compare.measured_loop).name}",
+        "source": f"{word}: {Path(compare.measured_loop).name}",
         "sample": compare.sample or "",
         "normal_force [N]": compare.normal_force,
         "stroke [m]": analysis.stroke,
@@ -452,31 +643,40 @@ def _measured_loop_table(records, context):
         for point in POINTS:
             value = _number(record, f"K_L_{point}")
             simulated[f"K_L_{point} [N/m]"] = value
-            simulated[f"K_L_{point} simulated / measured"] = _ratio(value, analysis.lateral_stiffness[point])
+            simulated[f"K_L_{point} simulated / {word}"] = _ratio(value, analysis.lateral_stiffness[point])
         rows.append(simulated)
-    if len(rows) > 2:
-        rows.append(_realisations_row(rows[1:], analysis.lateral_stiffness))
-    return rows
+    balls = "stand-in balls" if _stand_in(records) else "realisations"
+    by_sample: dict[str, list[dict]] = {}
+    for simulated in rows[1:]:
+        by_sample.setdefault(simulated["sample"], []).append(simulated)
+    for group in by_sample.values():  # one sample's realisations, never two samples' mixed
+        if len(group) > 1:
+            rows.append(_realisations_row(group, analysis.lateral_stiffness, word, balls))
+    notes = [f"The compared loop {Path(compare.measured_loop).name} is {loop.origin.words}."]
+    if loop.origin.caveat():
+        notes.append(loop.origin.caveat())
+    return Table(rows, notes)
 
 
-def _realisations_row(simulated: list[dict], measured: Mapping[str, float]) -> dict:
-    """Return the simulated cases' mean K_L and whether the measured K_L lies within their scatter.
+def _realisations_row(
+    simulated: list[dict], measured: Mapping[str, float], word: str = "measured", balls: str = "realisations"
+) -> dict:
+    """Return the simulated cases' mean K_L and whether the compared loop's K_L lies within their scatter.
 
-    The measured loop is one spot: it is compared with the 95 % prediction interval of one
-    realisation (:meth:`roughcontact.spread.Spread.prediction`), not with the interval of the mean.
+    The compared loop is one ball: it is set against the 95 % prediction interval of one
+    realisation (:meth:`roughcontact.spread.Spread.prediction`), not the interval of the mean.
+    ``word`` is the loop's origin (measured, synthetic, ...), ``balls`` what the realisations are.
     """
     from ...spread import spread
 
-    row = {"source": f"simulated: mean of {len(simulated)} realisations", "sample": simulated[0]["sample"]}
+    row = {"source": f"simulated: mean of {len(simulated)} {balls}", "sample": simulated[0]["sample"]}
     row["normal_force [N]"] = simulated[0]["normal_force [N]"]
     for point in POINTS:
-        summary = spread(r[f"K_L_{point} [N/m]"] for r in simulated)
+        summary = spread((r[f"K_L_{point} [N/m]"] for r in simulated), bounds=(0.0, math.inf))
         low, high = summary.prediction()
         row[f"K_L_{point} [N/m]"] = summary.mean
-        row[f"K_L_{point} simulated / measured"] = _ratio(summary.mean, measured[point])
-        row[f"K_L_{point} measured in the realisations' 95% prediction"] = bool(
-            low <= measured[point] <= high
-        )
+        row[f"K_L_{point} simulated / {word}"] = _ratio(summary.mean, measured[point])
+        row[f"K_L_{point} {word} in the {balls}' 95% prediction"] = bool(low <= measured[point] <= high)
     return row
 
 
