@@ -16,7 +16,7 @@ import numpy as np
 
 from .errors import InputError
 
-__all__ = ["finite_array", "no_string", "positive"]
+__all__ = ["finite_array", "flag", "no_string", "positive"]
 
 
 def no_string(value, field: str) -> None:
@@ -172,3 +172,14 @@ def poissons_ratio_checked(value: float, field: str = "poissons_ratio") -> float
             "give a Poisson's ratio with -1 < nu <= 0.5 (0.5 = incompressible, e.g. rubber).",
         )
     return float(value)
+
+
+def flag(value, field: str) -> bool:
+    """Return ``value`` as a bool after checking that it is one (``True``/``False``, NumPy's too).
+
+    ``periodic="no"`` would otherwise be truthy and silently mean the opposite of what was meant.
+    """
+    if isinstance(value, bool | np.bool_):
+        return bool(value)
+    raise InputError(field, f"expected True or False, got {value!r}.", f"pass {field}=True or {field}=False.")
+

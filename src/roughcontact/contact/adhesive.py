@@ -39,6 +39,7 @@ from ..errors import InputError
 from ..materials import Material
 from ..progress import tracked
 from ..topography import Topography
+from ..topography.surface import topography_argument
 from ._adhesive_engine import AdhesiveEnergy
 from .adhesive_result import AdhesiveResult
 from .interaction import cohesive_zone_length
@@ -122,6 +123,7 @@ def solve_adhesive(
     ConvergenceError
         A step did not converge (its residual and iterations are reported).
     """
+    topography = topography_argument(topography, "topography")
     programme = _programme(approach)
     if not all(hasattr(interaction, name) for name in ("energy", "traction", "stiffness")):
         raise InputError(

@@ -41,6 +41,7 @@ from .._deprecation import folded
 from ..errors import InputError
 from ..materials import Material
 from ..topography import Topography
+from ..topography.surface import topography_argument
 from . import _programme
 from .normal import resolve_boundary
 from .shear_solver import DEFAULT, SOLVER_KEYWORDS, ShearSolver, folded_solver
@@ -147,6 +148,7 @@ def solve_frictional(
     ConvergenceError
         A step or its coupling passes did not converge (residual and iterations given).
     """
+    topography = topography_argument(topography, "topography")
     if not isinstance(topography, Topography) or topography.dim != 2:
         raise InputError("topography", "a 2D Topography is needed.", "load or generate a 2D map.")
     if not isinstance(material, Material):

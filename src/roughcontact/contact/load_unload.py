@@ -60,6 +60,7 @@ from ..errors import InputError
 from ..materials import Material
 from ..progress import tracked
 from ..topography import Topography
+from ..topography.surface import topography_argument
 from .normal import compliance_for, solve_normal
 from .result import NormalContactResult
 from .volume_plastic import VOLUME_UNITS, VolumePlasticResult, solve_elastic_plastic
@@ -452,6 +453,7 @@ def load_unload(
     >>> j2 = VolumePlasticity(depth=5e-5)
     >>> deep = load_unload(ball, steel, max_force=2e-3, plasticity=j2)  # doctest: +SKIP
     """
+    topography = topography_argument(topography, "topography")
     plasticity = _plasticity(plasticity)
     programmes = {"max_force": max_force, "max_approach": max_approach, "forces": forces}
     given = [name for name, value in programmes.items() if value is not None]

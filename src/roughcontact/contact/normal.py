@@ -27,6 +27,7 @@ from ..elasticity.halfspace import ElasticLayer, SurfaceCompliance
 from ..errors import InputError
 from ..materials import Material, check_material, contact_modulus
 from ..topography import Topography
+from ..topography.surface import topography_argument
 from ..units import format_si
 from . import _box, _constrained_cg
 from .result import NormalContactResult
@@ -244,7 +245,10 @@ def solve_normal(
     Polonsky, I. A. and Keer, L. M. (1999). Wear 231, 206-219. doi:10.1016/S0043-1648(99)00113-1
     Seed paper 001, eq. 4; seed paper 002 (elastic-plastic compression).
     """
+    topography = topography_argument(topography, "topography")
     name, value = _one_target(mean_pressure=mean_pressure, force=force, approach=approach)
+    if value == 0.0:  # no load: the unloaded state, where the highest point touches the flat
+        name = "approach"
     check_heights(topography)
     if compliance is None:
         compliance = compliance_for(

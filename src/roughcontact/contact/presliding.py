@@ -41,6 +41,7 @@ from ..experiment.friction_loop import LoopAnalysis, analyse_loop
 from ..materials import Material, compliance_sum, contact_modulus, johnson_shear_modulus
 from ..spread import Spread, Verdict, spread
 from ..topography import Topography
+from ..topography.surface import topography_argument
 from .frictional import solve_frictional
 from .normal import solve_normal
 from .paths import as_path, reversals, stroke_path
@@ -871,6 +872,7 @@ def presliding(
     ConvergenceError
         A solve did not converge.
     """
+    topography = topography_argument(topography, "topography")
     if (stroke is None) == (path is None):
         raise InputError(
             "stroke",

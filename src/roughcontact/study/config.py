@@ -494,8 +494,28 @@ class _Builder:
         )
         return None
 
-    def topographies(self, name: str, raw_tables: dict, case: CaseParameters, where: Where, found: dict):
-        """Add the specification of topography ``name`` (and of its components) to ``found``."""
+    def topographies(
+        self,
+        name: str,
+        raw_tables: dict,
+        case: CaseParameters,
+        where: Where,
+        found: dict,
+        chain: tuple[str, ...] = (),
+    ):
+        """Add the specification of topography ``name`` (and of its components) to ``found``.
+
+        ``chain`` is the combinations being resolved around it: a name that combines itself,
+        directly or through another, is a problem (it would never be made).
+        """
+        if name in chain:
+            loop = " -> ".join((*chain[chain.index(name) :], name))
+            self.problem(
+                where,
+                f"the combinations are circular: {loop}.",
+                f"combine surfaces that are made without {name!r} (a file or a generator).",
+            )
+            return
         if name in found:
             return
         if name not in raw_tables:
@@ -518,7 +538,7 @@ class _Builder:
         if isinstance(spec, Combined):
             for part in spec.combine:
                 parts = Where(("topographies", name, "combine"), f"topographies.{name}.combine")
-                self.topographies(part, raw_tables, case, parts, found)
+                self.topographies(part, raw_tables, case, parts, found, (*chain, name))
 
     def analysis(self, index: int, raw: Any) -> Analysis | None:
         from .kinds import get_kind, kind_names

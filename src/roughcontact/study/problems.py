@@ -154,7 +154,12 @@ def _generic_fix(kind: str, context: dict) -> str | None:
     bounds = {"greater_than": "gt", "greater_than_equal": "ge", "less_than": "lt", "less_than_equal": "le"}
     if kind in bounds:
         words = {"gt": "above", "ge": "at least", "lt": "below", "le": "at most"}[bounds[kind]]
-        return f"give a value {words} {context.get(bounds[kind])}."
+        bound = context.get(bounds[kind])
+        return (
+            f"give a value {words} {bound:g}."
+            if isinstance(bound, int | float)
+            else f"give a value {words} {bound}."
+        )
     if kind == "literal_error":
         return f"use one of {context.get('expected')}."
     if kind in ("int_parsing", "int_type", "int_from_float"):

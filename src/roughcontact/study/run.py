@@ -404,6 +404,11 @@ def run_study(
         Counts of skipped, done, failed and pending cases; ``interrupted`` after Ctrl-C (the
         KeyboardInterrupt is re-raised after the table and provenance are written).
     """
+    if not isinstance(study, Study):
+        fix = "load it first: run_study(load_study('study.toml'), 'out')."
+        raise InputError("study", f"expected a Study, got {type(study).__name__}.", fix)
+    if not isinstance(output, str | Path):
+        raise InputError("output", f"expected a folder path, got {type(output).__name__}.", "e.g. 'out'.")
     if workers is not None and scheduler is not None:
         raise InputError("--workers", "both --workers and --scheduler were given.", "give one of them.")
     if workers is not None and workers < 1:

@@ -20,7 +20,7 @@ import numpy as np
 
 from .._files import existing_file, first_line, replacing
 from ..errors import InputError, UnsupportedFormatError
-from .surface import Topography
+from .surface import Topography, topography_argument
 
 __all__ = [
     "NATIVE_FORMAT",
@@ -75,6 +75,7 @@ def save_topography(topography: Topography, path: PathLike) -> None:
     InputError
         Not a Topography, info that JSON cannot hold exactly, a missing or unwritable folder.
     """
+    topography = topography_argument(topography, "topography")
     import xarray as xr
 
     if not isinstance(topography, Topography):

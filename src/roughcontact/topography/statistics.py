@@ -69,7 +69,7 @@ from scipy import fft
 
 from ..checks import positive
 from ..errors import InputError
-from .surface import Topography
+from .surface import Topography, topography_argument
 
 __all__ = [
     "McCoolParameters",
@@ -396,6 +396,7 @@ def spectral_moments(topography: Topography, *, derivative: str = "forward") -> 
     Seed paper 002, eqs. 1-3. Nayak (1971) doi:10.1115/1.3451150. McCool (1986)
     doi:10.1016/0043-1648(86)90045-1
     """
+    topography = topography_argument(topography, "topography")
     m0 = float(np.mean(_centred(topography) ** 2))
     averages = []
     for order in (1, 2):

@@ -26,7 +26,7 @@ from typing import Any
 
 import numpy as np
 
-from ..checks import no_string
+from ..checks import flag, no_string
 from ..errors import InputError
 
 KEEP = object()
@@ -134,7 +134,7 @@ class Topography:
             object.__setattr__(self, name, _mask(getattr(self, name), heights.shape, name))
         object.__setattr__(self, "heights", heights)
         object.__setattr__(self, "size", tuple(float(s) for s in size))
-        object.__setattr__(self, "periodic", bool(self.periodic))
+        object.__setattr__(self, "periodic", flag(self.periodic, "periodic"))
         object.__setattr__(self, "info", _frozen_mapping(self.info))
 
     # --- geometry -------------------------------------------------------------------------------
@@ -232,3 +232,22 @@ class Topography:
         )
 
     __hash__ = None  # mutable-looking numpy content; equality is by value
+
+
+def topography_argument(value, field: str = "topography") -> Topography:
+    """Return ``value`` after checking that it is a :class:`Topography` (for the public solvers).
+
+    A NumPy array of heights carries no physical size; the fix says how to give it one.
+
+    Raises
+    ------
+    InputError
+        ``value`` is not a Topography.
+    """
+    if isinstance(value, Topography):
+        return value
+    if isinstance(value, np.ndarray):
+        fix = f"give the heights their size, Topography(heights, size=5e-6) in metres, as {field}."
+    else:
+        fix = "read one with read_topography(path) or make one with roughcontact.generate."
+    raise InputError(field, f"expected a Topography, got {type(value).__name__}.", fix)

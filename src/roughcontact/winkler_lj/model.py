@@ -50,6 +50,7 @@ from ..errors import InputError
 from ..materials import Material, check_material
 from ..topography import Topography
 from ..topography.process import combine
+from ..topography.surface import topography_argument
 from .bem import BEM_LOAD_RTOL, GAP_MODELS, bem_state_at_load
 from .readings import Readings
 from .results import FrictionSweep, WinklerLJResult, WinklerNormalCurve
@@ -779,6 +780,7 @@ def winkler_lj_model(
         ``readings.base="half_sphere"`` without a tip radius, an unknown ``gap_model`` or
         ``bem_boundary``, ``gap_model="bem"`` with a non-default reading of eq. 2.
     """
+    topography = topography_argument(topography, "topography")
     readings = Readings() if readings is None else readings
     _check_gap_model(gap_model, bem_boundary, readings)
     tip_radius = _tip_radius(tip_radius, counter_topography, readings)

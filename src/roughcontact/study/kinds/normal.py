@@ -24,6 +24,9 @@ from ...contact.result import NormalContactResult
 from ..kind import CaseOutput, CaseParameters, Kind, figure
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
 
+_NON_NEGATIVE = Field(ge=0.0, allow_inf_nan=False)
+"""A load or an approach: zero (the unloaded state) or more, finite."""
+
 
 class NormalParameters(CaseParameters):
     """Keys of a ``model = "normal"`` analysis (SI after validation)."""
@@ -34,13 +37,13 @@ class NormalParameters(CaseParameters):
     """The surface's body (the film with film_thickness)."""
     counter_body: MaterialName | None = None
     """The flat's material; default rigid."""
-    mean_pressure: Pressure | None = None
-    """Load control by the nominal mean pressure (one of three targets)."""
-    force: Force | None = None
+    mean_pressure: Annotated[Pressure, _NON_NEGATIVE] | None = None
+    """Load control by the nominal mean pressure (one of three targets; 0: the unloaded state)."""
+    force: Annotated[Force, _NON_NEGATIVE] | None = None
     """Load control by the total force."""
-    approach: Length | None = None
+    approach: Annotated[Length, _NON_NEGATIVE] | None = None
     """Displacement control by the rigid approach from the first touch."""
-    hardness: Pressure | None = None
+    hardness: Annotated[Pressure, Field(gt=0.0, allow_inf_nan=False)] | None = None
     """Caps the pressure: elastic-perfectly-plastic surface."""
     boundary: Literal["periodic", "free"] | None = None
     """Default: periodic for a periodic surface, else free."""
