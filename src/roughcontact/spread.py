@@ -272,22 +272,32 @@ NON_NEGATIVE_UNITS = frozenset({"m^2", "N/m", "J", "s"})
 """Units of quantities that cannot be negative whatever their name (areas, stiffnesses, energies, times)."""
 
 
+ROOT_MEAN_SQUARE = frozenset(
+    {"ra", "rq", "sa", "sq", "m0", "m2", "m4", "rms_height", "rms_slope", "rms_curvature"}
+)
+"""Roughness statistics and spectral moments: non-negative whatever their unit."""
+
+
 def natural_bounds(name: str, unit: str | None = None) -> tuple[float, float] | None:
     """Return the range a result's scalar can take from its name and unit, or None if unbounded.
 
-    Fractions and shares lie in [0, 1]; counts (``number_of_*``, ``*_springs``), areas,
-    stiffnesses (``K_L_*``), energies, times, friction coefficients (``mu*``) and ratios of
-    positive quantities (``*_over_*``, ``*_to_*``, ``* / *``) are non-negative. Forces,
-    approaches and interferences may be negative (adhesion, a pulled flat) and are not bounded.
+    Fractions and shares lie in [0, 1]; counts (``number_of_*``, ``*_springs``, ``iterations``),
+    residuals, gaps, areas, stiffnesses (``K_L_*``), energies, times, friction coefficients
+    (``mu*``), roughness statistics and spectral moments, largest pressures and von Mises
+    stresses (``max_*``), and ratios of positive quantities (``*_over_*``, ``*_to_*``, ``* / *``)
+    are non-negative. Forces, approaches and interferences may be negative (adhesion, a pulled
+    flat) and are not bounded.
     """
     lowered = name.lower()
-    if lowered.endswith(("fraction", "_share")) or lowered.startswith("share"):
+    if "fraction" in lowered or lowered.endswith("_share") or lowered.startswith("share"):
         return (0.0, 1.0)
     words = lowered.replace("/", " / ")
     if (
         unit in NON_NEGATIVE_UNITS
-        or lowered.startswith(("number_of", "k_l", "mu", "crossover"))
-        or lowered.endswith(("_springs", "_area", "patches"))
+        or lowered in ROOT_MEAN_SQUARE
+        or lowered in ("iterations", "residual")
+        or lowered.startswith(("number_of", "k_l", "mu", "crossover", "max_pressure", "max_von_mises"))
+        or lowered.endswith(("_springs", "_area", "patches", "_gap", "von_mises"))
         or "_over_" in lowered
         or "_to_" in lowered
         or " / " in words
