@@ -199,7 +199,7 @@ class LoadUnloadResult(NotebookDisplay):
 
     @property
     def interference_at_return_force(self) -> float:
-        """Interference [m] where the unloading branch comes back to :attr:`return_force` (NaN if it never does).
+        """Interference [m] where the unloading branch comes back to :attr:`return_force` (NaN if never).
 
         The interference of the unloading step that carries the return force (to 1e-4 of it, as a
         force-controlled step reaches its target), else interpolated linearly in the force between

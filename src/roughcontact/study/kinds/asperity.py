@@ -30,9 +30,9 @@ Scalars: the asperity parameters (plain names: ``summit_radius``, ``summit_heigh
 ``contact_modulus``, ``critical_interference``, ``plasticity_index``, ...) and, with a curve, the
 peak interference and the ``interference_at_return_force`` (where unloading comes back to the
 ``return_force``: ``reference_force``, paper 002's 25 uN; not a residual interference at zero load,
-which a Gaussian population does not reach), both also over omega_c. Dataset: the curve (``branch``, ``approach``
-(the interference), ``interference_ratio``, ``separation``, ``force``, ``contact_area``,
-``number_of_contacts``, ``plastic_fraction``) on the dimension ``point``.
+which a Gaussian population does not reach), both also over omega_c. Dataset: the curve
+(``branch``, ``approach`` (the interference), ``interference_ratio``, ``separation``, ``force``,
+``contact_area``, ``number_of_contacts``, ``plastic_fraction``) on the dimension ``point``.
 
 Figures: ``load_interference`` (paper 002 Fig. 7: load against omega / omega_c, loading solid,
 unloading dashed, with the measured curve of ``[analysis.compare]``) and ``contact_area`` (real
