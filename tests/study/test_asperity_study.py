@@ -90,10 +90,10 @@ def test_example_end_to_end_reproduces_section_iv_and_draws_kke_against_bem(cli,
     # KKE against the BEM's realisations: for one island (the paper's claim), the mean beside it
     against = read_table(out / "tables" / "bem_against_statistical.csv")
     assert [(r["quantity"], r["judged for"]) for r in against] == [
-        ("peak_interference", "one island"),
-        ("peak_interference", "the mean"),
-        ("interference_at_return_force", "one island"),
-        ("interference_at_return_force", "the mean"),
+        ("peak_interference", "one island (prediction interval)"),
+        ("peak_interference", "the mean (confidence interval)"),
+        ("interference_at_return_force", "one island (prediction interval)"),
+        ("interference_at_return_force", "the mean (confidence interval)"),
     ]
     one, mean = against[0], against[1]
     peaks = [float(row["peak_interference [m]"]) for row in bem]
@@ -137,6 +137,8 @@ def test_example_end_to_end_reproduces_section_iv_and_draws_kke_against_bem(cli,
     report = (out / "report.html").read_text()
     assert "kke" in report and "bem" in report and "paper002" in report
     assert "prediction interval of one island" in report  # the table's sentence, under it
+    # each analysis shows its own tables: bem's section not bem_volume's (whose name starts alike)
+    assert report.count("<h3>against statistical</h3>") == 2 and "volume against statistical" not in report
     assert report.count("data:image/png;base64") >= 4
 
     # The combined figure (paper 002 Fig. 7): the KKE curve of the other analysis, the mean of both

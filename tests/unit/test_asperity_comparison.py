@@ -23,6 +23,7 @@ from roughcontact.study.store import notes_of
 # inside the prediction interval of one more island (the case of paper002.toml's run).
 BEM = [30e-9, 45e-9, 39e-9, 50e-9, 31e-9]
 KKE = 56.4e-9
+ONE, MEAN = "one island (prediction interval)", "the mean (confidence interval)"
 
 
 def _student(values, factor):
@@ -129,9 +130,9 @@ def test_table_judges_one_island_and_the_mean_with_ratio_and_the_papers_words():
     assert set(rows) == {
         (quantity, level)
         for quantity in ("peak_interference", "interference_at_return_force")
-        for level in ("one island", "the mean")
+        for level in (ONE, MEAN)
     }
-    one, mean = rows["peak_interference", "one island"], rows["peak_interference", "the mean"]
+    one, mean = rows["peak_interference", ONE], rows["peak_interference", MEAN]
     found = against_realisations(KKE, BEM, quantity="peak_interference")
     assert one["statistical model"] == "not established" and mean["statistical model"] == "over-predicts"
     assert (one["bem 95% low [m]"], one["bem 95% high [m]"]) == pytest.approx(found.one.interval, rel=1e-12)
@@ -145,7 +146,7 @@ def test_table_judges_one_island_and_the_mean_with_ratio_and_the_papers_words():
     assert all(row["paper's words"] == "slightly over-predicts" for row in table)
     assert all(row["n"] == 5 and row["bem"] == "bem (surface plasticity)" for row in table)
     # the return point: KKE's 14 nm against the BEM's at the same load (not its zero-load residual)
-    back = rows["interference_at_return_force", "the mean"]
+    back = rows["interference_at_return_force", MEAN]
     assert back["bem mean [m]"] == pytest.approx(0.3 * np.mean(BEM), rel=1e-12)
     notes = notes_of(table)
     assert len(notes) == 2 and "that KKE over-predicts one island is not established" in notes[0]

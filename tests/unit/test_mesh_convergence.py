@@ -41,6 +41,10 @@ def test_trend_says_why_there_is_no_order():
     assert trend([0.4, 0.2, 0.1], [5.0, 5.1, 5.05]) == (None, "not monotone")
     assert trend([0.4, 0.2, 0.1], [5.0, 5.01, 5.05]) == (None, "changes do not shrink")
     assert trend([0.2, 0.1], [5.0, 5.01]) == (None, "2 grids: no order")
+    # changes that hardly shrink fit an "order" of 0.16: not asymptotic, no extrapolation given
+    values = [1.8e-9 + 2e-9 * h**0.16 for h in (0.4, 0.2, 0.1)]
+    assert convergence_order([0.4, 0.2, 0.1], values)[0] == pytest.approx(0.16, rel=1e-6)
+    assert trend([0.4, 0.2, 0.1], values) == (None, "order 0.16, too low: not asymptotic")
 
 
 def _record(points, replicate, **scalars):
@@ -80,16 +84,16 @@ def test_table_reports_every_quantity_per_grid_with_its_interval_change_and_orde
             assert (row["mean"], row["ci95_low"], row["ci95_high"]) == pytest.approx(
                 (summary.mean, summary.ci95_low, summary.ci95_high), rel=1e-12
             )
-        assert rows[0]["change_from_coarser"] is None
-        assert rows[1]["change_from_coarser"] == pytest.approx(
-            rows[1]["mean"] / rows[0]["mean"] - 1, rel=1e-12
+        assert rows[0]["change_from_coarser (%)"] is None
+        assert rows[1]["change_from_coarser (%)"] == pytest.approx(
+            100 * (rows[1]["mean"] / rows[0]["mean"] - 1), rel=1e-12
         )
         assert rows[-1]["observed_order"] == pytest.approx(2.0, rel=1e-8)
         assert rows[-1]["trend"] == "observed order 2"
         assert "observed_order" not in rows[0]
     # each draw's change per refinement, signed, in %
-    change = by["peak_interference", 256**2]["change_per_draw"]
-    assert change.count("%") == 2 and change.startswith("-")
+    change = by["peak_interference", 256**2]["change_per_draw (%)"].split(", ")
+    assert len(change) == 2 and all(c.startswith("-") for c in change)
     notes = notes_of(table)
     assert len(notes) == 3 and notes[0].startswith("peak interference: the mean changes")
     assert (
@@ -124,6 +128,21 @@ def test_non_monotone_mean_and_draws_are_said_so():
     assert all(r["observed_order"] is None for r in rows if "observed_order" in r)
     # no interference at the return force stored: that quantity is left out, not invented
     assert {r["quantity"] for r in rows} == {"peak_interference", "peak_contact_area"}
+
+
+def test_a_draw_missing_on_one_grid_is_left_out_of_the_means():
+    """A failed (or pending) case must not move the mean by the scatter between draws."""
+    records = [
+        c
+        for c in _smooth_study(draw_offsets=(-1.0, 1.0))
+        if (c.scalars["grid_points"], c.parameters["replicate"]) != (256**2, 1)
+    ]
+    peak = mesh_convergence(records)[0]
+    assert peak.left_out == (1,)
+    assert [g.spread.n for g in peak.grids] == [1, 1, 1]
+    assert peak.order == pytest.approx((2.0, 4.0e-8), rel=1e-8)  # draw 0 alone: 5 + 2 h^2 - 1 (x 1e-8)
+    assert peak.finest.draw_changes == {0: pytest.approx((4.0 + 2 * 0.01) / (4.0 + 2 * 0.04) - 1, rel=1e-12)}
+    assert "Draw 1 left out of the means: not on every grid" in peak.summary()
 
 
 def test_intervals_of_positive_quantities_stop_at_zero():

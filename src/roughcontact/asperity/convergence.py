@@ -15,10 +15,12 @@ interference where unloading returns to the reference load, the real contact are
 
 and over the three finest grids, for the mean and for each draw, the observed order of convergence
 and the Richardson extrapolation (:func:`roughcontact.spread.convergence_order`) where the changes
-shrink monotonically, and otherwise why there is none: ``not monotone`` (the change changes sign) or
-``changes do not shrink`` (it keeps its sign but grows on refinement). A refinement that changes a
-quantity by less than the realisations scatter it is converged for a comparison between models, with
-or without an order; the table shows both numbers so a reader can tell.
+shrink monotonically at an order of at least :data:`MIN_ORDER`, and otherwise why there is none:
+``not monotone`` (the change changes sign), ``changes do not shrink`` (it keeps its sign and does
+not shrink on refinement) or an order too low to be asymptotic. A refinement that changes a
+quantity by much less than the realisations scatter it is converged enough for a comparison
+between models, with or without an order; a quantity whose changes do not shrink is not converged,
+whatever its scatter. The table and its sentences give both numbers so a reader can tell.
 """
 
 from __future__ import annotations
@@ -53,20 +55,32 @@ def _relative_change(fine: float, coarse: float) -> float:
     return fine / coarse - 1.0
 
 
+MIN_ORDER = 0.5
+"""Smallest observed order taken as one: below it the three finest grids are not in the asymptotic range.
+
+A discretisation of this kind converges at order 1 or more (the contact edge moves by a pixel); an
+"order" of 0.2 fitted to three grids says that the changes hardly shrink, and the Richardson
+extrapolation built on it lands far from every grid (even below zero for a positive quantity)."""
+
+
 def trend(sizes: Sequence[float], values: Sequence[float]) -> tuple[tuple[float, float] | None, str]:
     """Return (order, words) of a quantity over grids: the observed order and extrapolation, or why none.
 
     ``order`` is ``(p, extrapolated)`` of :func:`roughcontact.spread.convergence_order` over the three
-    finest grids, or None; ``words`` is ``observed order 1.93`` or ``two grids: no order``, ``not
-    monotone`` (the change over the three finest grids changes sign) or ``changes do not shrink``.
+    finest grids where p >= :data:`MIN_ORDER`, else None; ``words`` is ``observed order 1.93`` or why
+    there is none: ``2 grids: no order``, ``not monotone`` (the change over the three finest grids
+    changes sign), ``changes do not shrink`` (it keeps its sign but does not shrink on refinement) or
+    ``order 0.16, too low: not asymptotic``.
     """
     pairs = sorted((h, w) for h, w in zip(sizes, values, strict=True) if math.isfinite(w))
     if len(pairs) < 3:
         return None, f"{len(pairs)} grid{'s' if len(pairs) != 1 else ''}: no order"
     (h1, w1), (h2, w2), (h3, w3) = pairs[:3]
     found = convergence_order([h1, h2, h3], [w1, w2, w3])
-    if found is not None:
+    if found is not None and found[0] >= MIN_ORDER:
         return found, f"observed order {found[0]:.3g}"
+    if found is not None:
+        return None, f"order {found[0]:.2g}, too low: not asymptotic"
     if (w3 - w2) * (w2 - w1) <= 0:
         return None, "not monotone"
     return None, "changes do not shrink"
@@ -83,7 +97,8 @@ class GridValue:
     pixel_size : float
         Its pixel size h [m].
     spread : Spread
-        The quantity over the realisations on this grid (interval of the mean within :data:`BOUNDS`).
+        The quantity over the realisations on this grid that every grid has (interval of the mean
+        within :data:`BOUNDS`).
     change : float
         Relative change of the mean from the next coarser grid (signed; NaN on the coarsest).
     draw_changes : dict of int to float
@@ -113,6 +128,9 @@ class QuantityConvergence:
         The means' trend in words (:func:`trend`).
     draw_trends : dict of int to str
         Each realisation's trend in words, by its ``replicate``.
+    left_out : tuple of int
+        Realisations missing on some grid (a failed or pending case): left out of the means, which
+        compare the grids over the same draws; their own changes and trends are still given.
     """
 
     quantity: str
@@ -121,6 +139,7 @@ class QuantityConvergence:
     order: tuple[float, float] | None
     trend: str
     draw_trends: dict[int, str]
+    left_out: tuple[int, ...] = ()
 
     @property
     def finest(self) -> GridValue:
@@ -146,7 +165,7 @@ class QuantityConvergence:
             f"{finest.grid_points} points" + (f" (each draw: {draws})" if draws else "")
         )
         if len(grids) >= 3:
-            text += f"; over the three finest grids the mean is {self.trend}"
+            text += f"; over the three finest grids, mean: {self.trend}"
             if self.order is not None:
                 text += (
                     f" (Richardson extrapolation {format_si(self.order[1], self.unit)}, finest grid "
@@ -158,6 +177,12 @@ class QuantityConvergence:
         if by_trend and len(grids) >= 3:
             text += "; per draw: " + ", ".join(
                 f"{words} (draw{'s' if len(r) > 1 else ''} {', '.join(r)})" for words, r in by_trend.items()
+            )
+        if self.left_out:
+            missing = ", ".join(map(str, self.left_out))
+            text += (
+                f". Draw{'s' if len(self.left_out) > 1 else ''} {missing} left out of the means: not on "
+                "every grid"
             )
         spread_ = finest.spread
         if spread_.n > 1 and spread_.mean:
@@ -171,8 +196,8 @@ class QuantityConvergence:
         """Return one table row per grid (values in the row's ``unit``; changes relative).
 
         Columns: ``quantity``, ``unit``, ``grid_points``, ``pixel_size [m]``, ``n``, ``mean``,
-        ``ci95_low``, ``ci95_high`` (of the mean), ``std`` (of one draw), ``change_from_coarser``
-        (of the mean), ``change_per_draw`` (each draw's, in %) and, on the finest grid,
+        ``ci95_low``, ``ci95_high`` (of the mean), ``std`` (of one draw), ``change_from_coarser (%)``
+        (of the mean), ``change_per_draw (%)`` (each draw's) and, on the finest grid,
         ``observed_order`` (of the mean; none where there is none) and ``trend`` (the mean's in
         words, :func:`trend`; :meth:`summary` says the rest).
         """
@@ -188,9 +213,9 @@ class QuantityConvergence:
                 "ci95_low": grid.spread.ci95_low,
                 "ci95_high": grid.spread.ci95_high,
                 "std": grid.spread.std,
-                "change_from_coarser": None if math.isnan(grid.change) else grid.change,
-                "change_per_draw": ", ".join(
-                    f"{100 * c:+.2g} %" for _, c in sorted(grid.draw_changes.items()) if math.isfinite(c)
+                "change_from_coarser (%)": None if math.isnan(grid.change) else 100 * grid.change,
+                "change_per_draw (%)": ", ".join(
+                    f"{100 * c:+.2g}" for _, c in sorted(grid.draw_changes.items()) if math.isfinite(c)
                 ),
             }
             if grid is self.finest:
@@ -242,9 +267,13 @@ def mesh_convergence(
         ]  # fmt: skip
         if not any(per_grid):
             continue
+        # the mean compares grids over the same draws: one missing on some grid (failed, pending)
+        # would move it by the scatter between draws, not by the grid
+        common = set.intersection(*(set(draws) for draws in per_grid))
+        left_out = tuple(sorted({r for draws in per_grid for r in draws} - common))
         values = []
         for number, ((points, _), draws) in enumerate(zip(ordered, per_grid, strict=True)):
-            summary = spread(draws.values(), bounds=BOUNDS)
+            summary = spread((v for r, v in draws.items() if r in common), bounds=BOUNDS)
             coarser = per_grid[number - 1] if number else {}
             change = _relative_change(summary.mean, values[-1].spread.mean) if values else math.nan
             draw_changes = {r: _relative_change(v, coarser[r]) for r, v in draws.items() if r in coarser}
@@ -260,5 +289,5 @@ def mesh_convergence(
         }
         if len(replicates) < 2:
             draw_trends = {}  # one draw: its trend is the mean's
-        found.append(QuantityConvergence(quantity, unit, tuple(values), order, words, draw_trends))
+        found.append(QuantityConvergence(quantity, unit, tuple(values), order, words, draw_trends, left_out))
     return found or None

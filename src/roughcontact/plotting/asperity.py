@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 
 import numpy as np
@@ -348,6 +349,9 @@ def mesh_convergence_figure(cases):
         change = quantity.finest.change
         ax.set_title(f"last refinement {100 * change:+.2g} %\nmean: {quantity.trend}", fontsize="medium")
         ax.set_xscale("log")
+        side = [round(math.sqrt(n)) for n in points]  # a square grid of n = side^2 points reads as side²
+        ax.set_xticks(points, [f"{s}²" if s * s == n else str(n) for s, n in zip(side, points, strict=True)])
+        ax.minorticks_off()
         ax.set_xlabel("grid points (elements)")
         ax.set_ylabel(f"{name} ({unit})")
         ax.grid(True, alpha=0.3)

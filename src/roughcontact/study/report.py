@@ -168,7 +168,10 @@ def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) 
         + "</p>",
         *_cases(analysis, rows),
     ]
+    own = {*analysis.kind.tables, "spread"}  # not those of another analysis whose name starts alike
     for path in sorted((folder / "tables").glob(f"{analysis.name}_*.csv")):
+        if path.stem.removeprefix(analysis.name + "_") not in own:
+            continue
         parts.append(f"<h3>{html.escape(path.stem.removeprefix(analysis.name + '_').replace('_', ' '))}</h3>")
         table = read_table(path)
         if path.stem == f"{analysis.name}_spread":

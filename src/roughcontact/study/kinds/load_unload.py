@@ -353,6 +353,9 @@ def _mesh_convergence(records, context):
     return Table([row for quantity in found for row in quantity.rows()], [q.summary() for q in found])
 
 
+INTERVALS = {"one": "prediction interval", "mean": "confidence interval"}
+"""The 95 % interval each row of the comparison rests on."""
+
 COMPARED = ("peak_interference", "interference_at_return_force")
 """The interferences judged against the statistical model: at the peak, and back at the reference load."""
 
@@ -440,7 +443,7 @@ def _against_statistical(records, context):
                             "bem": f"{bem} ({plasticity} plasticity)",
                             "statistical": model,
                             "quantity": quantity,
-                            "judged for": LEVELS[of],
+                            "judged for": f"{LEVELS[of]} ({INTERVALS[of]})",
                             "n": found.deterministic.n,
                             "bem mean [m]": found.deterministic.mean,
                             "bem 95% low [m]": low,
