@@ -28,6 +28,8 @@ from .options import (
     EXIT_INTERNAL_ERROR,
     EXIT_INTERRUPTED,
     EXIT_NOT_CONVERGED,
+    RecordedOptions,
+    given_options,
 )
 
 __all__ = [
@@ -85,11 +87,18 @@ def _command(argv: Sequence[str]) -> str | None:
     return next((word for word in argv if not word.startswith("-")), None)
 
 
+def _subparser(parser: argparse.ArgumentParser, command: str) -> argparse.ArgumentParser:
+    """Return the parser of ``command`` (its options are those a user can type after it)."""
+    commands = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    return commands.choices[command]
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the ``roughcontact`` command; return its exit status."""
     argv = sys.argv[1:] if argv is None else list(argv)
     parser = build_parser(built=[command] if (command := _command(argv)) else [])
     args = parser.parse_args(argv)
+    args = RecordedOptions(args, given_options(_subparser(parser, args.command), argv))
     level = (logging.WARNING, logging.INFO, logging.DEBUG)[min(args.verbose, 2)]
     logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")
     try:

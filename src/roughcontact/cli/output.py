@@ -12,7 +12,7 @@ import sys
 
 from .._json import json_ready
 from ..errors import InputError
-from .options import CommandStudy
+from .options import CommandStudy, refuse_unused
 
 
 def run_command(command: CommandStudy, args) -> int:
@@ -30,32 +30,31 @@ def run_command(command: CommandStudy, args) -> int:
     """
     from ..study.answers import answer, reusable
 
+    as_json, output = args.json, getattr(args, "output", None)
+    replace, dpi = (getattr(args, "overwrite", False), getattr(args, "dpi", 150)) if output else (False, 150)
+    if output is None:
+        args.taking("without -o nothing is written", "add -o OUT")
+    refuse_unused(args)  # every option the command's path did not read, before anything is computed
     study = command.build()
     for note in study.notes:
         print(f"roughcontact: note: {command.translate(note)}", file=sys.stderr)
-    if not args.json:
+    if not as_json:
         from ..study.report import preparation_line
 
         for name, prepared in study.prepared.items():
             print(command.translate(preparation_line(name, prepared)))
-    output = getattr(args, "output", None)
     try:
-        resume = output is not None and reusable(output, study, replace=getattr(args, "overwrite", False))
+        resume = output is not None and reusable(output, study, replace=replace)
         result = answer(
-            study,
-            output,
-            resume=resume,
-            progress=sys.stderr.isatty(),
-            raise_errors=True,
-            dpi=getattr(args, "dpi", 150),
+            study, output, resume=resume, progress=sys.stderr.isatty(), raise_errors=True, dpi=dpi
         )
     except InputError as error:
         raise command.input_error(error) from None
-    if result.summary is not None and result.summary.recomputed_note:
-        print(f"roughcontact: note: {result.summary.recomputed_note}", file=sys.stderr)
+    for note in [] if result.summary is None else result.summary.notes:
+        print(f"roughcontact: note: {note}", file=sys.stderr)
     for _, line in result.warnings():  # on stderr, where a person sees them, also with --json
         print(f"roughcontact: warning: {line}", file=sys.stderr)
-    if args.json:
+    if as_json:
         print(json.dumps(json_ready(result.document()), indent=2))
         return 0
     print("\n".join(result.text_lines()))

@@ -14,7 +14,14 @@ import textwrap
 from pathlib import Path
 
 from ..errors import InputError
-from .options import EXIT_CASES_FAILED, EXIT_INTERRUPTED, add_device, new_command, output_folder
+from .options import (
+    EXIT_CASES_FAILED,
+    EXIT_INTERRUPTED,
+    add_device,
+    new_command,
+    output_folder,
+    refuse_unused,
+)
 
 COMMANDS = {
     "run": "run a study file (TOML): every case, the results table, figures and an HTML report",
@@ -89,8 +96,8 @@ def run_and_report(
     for analysis, line in result.warnings():
         print(f"roughcontact: warning: {analysis}: {line}", file=sys.stderr)
     summary = result.summary
-    if summary.recomputed_note:
-        print(f"roughcontact: note: {summary.recomputed_note}", file=sys.stderr)
+    for note in summary.notes:  # a lock taken over, stored cases not reused and why
+        print(f"roughcontact: note: {note}", file=sys.stderr)
     print(
         f"{summary.done} case{'s' if summary.done != 1 else ''} run, {summary.skipped} reused, "
         f"{summary.failed} failed "
@@ -116,8 +123,16 @@ def _quiet_dask(verbose: int) -> None:
 def _run(args: argparse.Namespace) -> int:
     from ..study import load_study
 
-    if args.workers is not None or args.scheduler is not None:
+    dask = args.workers is not None or args.scheduler is not None
+    if dask:
         _quiet_dask(args.verbose)
+        worker_storage = args.worker_storage
+    else:
+        args.taking("without --workers or --scheduler the cases run in this process", "add --workers N")
+        worker_storage = None
+    options = {"progress": not args.no_progress and sys.stderr.isatty(), "resume": args.resume}
+    output = args.output
+    refuse_unused(args)
     study = load_study(args.study)
     if args.device is not None:  # the command line overrides [study] device
         if args.device == "gpu":
@@ -129,12 +144,11 @@ def _run(args: argparse.Namespace) -> int:
     print("\n".join(_describe(study)))
     return run_and_report(
         study,
-        args.output,
-        progress=not args.no_progress and sys.stderr.isatty(),
+        output,
         workers=args.workers,
         scheduler=args.scheduler,
-        resume=args.resume,
-        worker_storage=args.worker_storage,
+        worker_storage=worker_storage,
+        **options,
     )
 
 
@@ -217,17 +231,56 @@ def _models(args: argparse.Namespace) -> int:
 
 def _report(args: argparse.Namespace) -> int:
     from ..study.report import write_report
+    from ..study.store import locked
 
-    print(f"wrote {write_report(args.folder)}")
+    with locked(args.folder, field="OUT", create=False) as note:
+        _stored_warnings(args.folder, note)
+        print(f"wrote {write_report(args.folder)}")
     return 0
 
 
-def plot_study(folder: Path) -> int:
-    """Re-draw the figures and tables of a study's output folder from its stored records."""
-    from ..study.outputs import draw_figures, write_tables
+def _stored_warnings(folder: Path, lock_note: str | None) -> None:
+    """Say which stored cases ``plot`` and ``report`` leave out (damaged) or use unverified (no checksum)."""
+    from ..study.outputs import read_study
+    from ..study.store import record_path
 
-    tables, table_problems = write_tables(folder)
-    figures, problems = draw_figures(folder)
+    if lock_note:
+        print(f"roughcontact: note: {lock_note}", file=sys.stderr)
+    if not (Path(folder) / "study.json").is_file():
+        return  # read_study says what the folder lacks
+    for analysis in read_study(folder)[1]:
+        for case, problem in analysis.damaged:
+            print(
+                f"roughcontact: warning: case {case} ({analysis.name}): {problem}; left out of the tables, "
+                "figures and report (pending in results.csv). Fix: rerun the study into this folder with "
+                "--resume to compute it again.",
+                file=sys.stderr,
+            )
+        if analysis.unsealed:
+            many = len(analysis.unsealed) != 1
+            example = record_path(Path(folder).expanduser().resolve(), analysis.name, analysis.unsealed[0])
+            print(
+                f"roughcontact: warning: {analysis.name}: {len(analysis.unsealed)} case{'s' if many else ''} "
+                f"stored without a checksum by a roughcontact before checksums (e.g. {example}): used as "
+                "stored, not verified. Fix: rerun the study into this folder with --resume to compute "
+                f"{'them' if many else 'it'} again.",
+                file=sys.stderr,
+            )
+
+
+def plot_study(folder: Path) -> int:
+    """Re-draw the figures and tables of a study's output folder from its stored records.
+
+    Cases whose stored files do not match their checksums are left out, each named on standard
+    error; the folder is locked while its tables and figures are written.
+    """
+    from ..study.outputs import draw_figures, write_tables
+    from ..study.store import locked
+
+    with locked(folder, field="OUT", create=False) as note:
+        _stored_warnings(folder, note)
+        tables, table_problems = write_tables(folder)
+        figures, problems = draw_figures(folder)
     problems = table_problems + problems
     for path in [*tables, *figures]:
         print(f"wrote {path}")

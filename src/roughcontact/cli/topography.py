@@ -18,13 +18,17 @@ from ..topography import Topography
 from ..topography.io import MAX_FILLED, channel_of, channel_words, max_filled_allowing
 from ..topography.process import LEVELLING, SPECK
 from ..units import format_si
-from .options import dpi_argument, levelling, new_command, read_file
+from .options import dpi_argument, levelling, new_command, read_file, refuse_unused
 
 COMMANDS = {
     "inspect": "print channels, grid, physical size, units and statistics of a file",
     "plot": "draw the height map and PSD of a file, or re-draw a study's figures (plot OUT/)",
 }
 """This module's commands and their lines in ``roughcontact --help``."""
+
+
+FILLED_AS_READ = "inspect and plot describe the heights as read (filled points included)"
+"""Why ``--exclude-filled`` (which acts in the contact models) is refused by ``inspect`` and ``plot``."""
 
 
 def describe(topography: Topography, undefined=None) -> dict:
@@ -133,6 +137,9 @@ def _inspect(args: argparse.Namespace) -> int:
 
     channels = list_channels(args.file)
     topography, undefined = read_file(args)
+    as_json = args.json
+    args.taking(FILLED_AS_READ, "use it with a contact command", options=("exclude_filled",))
+    refuse_unused(args)
     description = describe(topography, undefined)
     description["file"] = str(args.file)
     description["detrend"] = levelling(args)
@@ -150,7 +157,7 @@ def _inspect(args: argparse.Namespace) -> int:
         }
         for c in channels
     ]
-    if args.json:
+    if as_json:
         print(json.dumps(json_ready(description), indent=2))
         return 0
     print(f"file           {args.file}  ({description['format']})")
@@ -195,14 +202,19 @@ def _plot(args: argparse.Namespace) -> int:
     if args.file.is_dir():
         from .study import plot_study
 
+        args.taking("a study's folder is redrawn as its study file says", "give a topography file instead")
+        refuse_unused(args)
         return plot_study(args.file)
     if args.output is None:
         raise InputError("-o/--output", "no figure file given.", "add -o FIGURE.png.")
     _check_figure_file(args.output, args.overwrite)
     topography, undefined = read_file(args)
+    dpi = args.dpi
+    args.taking(FILLED_AS_READ, "use it with a contact command", options=("exclude_filled",))
+    refuse_unused(args)
     figure = plot_overview(topography, undefined=undefined)
     args.output.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(args.output, dpi=args.dpi)
+    figure.savefig(args.output, dpi=dpi)
     print(f"wrote {args.output}")
     return 0
 

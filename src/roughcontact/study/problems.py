@@ -123,6 +123,12 @@ def from_validation_error(
             problem = context.get("problem") or item["msg"]
             problem = problem.rstrip(".") + "."
             shown = "" if repr(value) in problem or str(value) in problem else shown
+        elif item["type"] in _BOUND_WORDS:
+            bound = context.get(_BOUND_WORDS[item["type"]][0])
+            shown_bound = f"{bound:g}" if isinstance(bound, int | float) else str(bound)
+            problem = _BOUND_WORDS[item["type"]][1].format(bound=shown_bound)
+            problem = "must be positive." if problem == "must be above 0." else problem
+            fix = fix or _generic_fix(item["type"], context)
         else:
             problem = item["msg"].removeprefix("Value error, ").rstrip(".") + "."
             fix = fix or _generic_fix(item["type"], context)
@@ -147,6 +153,15 @@ def _one_per_typo(problems: list[Problem]) -> list[Problem]:
 def _at(problem: Problem) -> tuple:
     """Return (the table's path, the key) of a problem."""
     return problem.path[:-1], problem.path[-1] if problem.path else None
+
+
+_BOUND_WORDS = {
+    "greater_than": ("gt", "must be above {bound}."),
+    "greater_than_equal": ("ge", "must be {bound} or more."),
+    "less_than": ("lt", "must be below {bound}."),
+    "less_than_equal": ("le", "must be {bound} or less."),
+}
+"""pydantic's bound checks in our words (``must be above 0.``), with the bound's context key."""
 
 
 def _generic_fix(kind: str, context: dict) -> str | None:
