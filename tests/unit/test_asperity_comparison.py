@@ -165,3 +165,22 @@ def test_an_earlier_store_is_said_not_compared_under_the_old_name():
     table = _against_statistical(records, context)
     assert {row["quantity"] for row in table} == {"peak_interference"}
     assert any("stored by an earlier roughcontact" in note for note in notes_of(table))
+
+
+def test_an_interval_reaching_zero_leaves_the_ratio_unbounded_not_negative():
+    """The BEM's interference back at 25 uN scatters about a nanometre: its interval stops at 0."""
+    records = [
+        _bem(i, peak, back)
+        for i, (peak, back) in enumerate(zip(BEM, [0.1e-9, 3e-9, 0.5e-9, 1e-9, 2e-9], strict=True))
+    ]
+    context = _context({"peak_interference": KKE, "interference_at_return_force": 14e-9})
+    back = [
+        row
+        for row in _against_statistical(records, context)
+        if row["quantity"] == "interference_at_return_force"
+    ]
+    assert [row["bem 95% low [m]"] for row in back] == [0.0, 0.0]
+    assert all(row["statistical / bem 95% high"] is None for row in back)  # shown as unbounded, never inf
+    assert all(
+        row["statistical / bem 95% low"] > 1 and row["statistical model"] == "over-predicts" for row in back
+    )

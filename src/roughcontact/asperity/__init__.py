@@ -3,9 +3,13 @@
 ``greenwood_williamson`` holds the summit population (Gaussian or measured heights) and the GW
 integrals; ``elastic_plastic`` the single-asperity laws (Hertz, Chang-Etsion-Bogy, Kogut-Etsion,
 Jackson-Green, paper 002 eq. 10, Etsion-Kligerman-Kadin unloading); ``load_unload`` the statistical
-Kadin-Kogut-Etsion load-unload of a rough surface against a flat. Theory: ``docs/asperity.md``.
+Kadin-Kogut-Etsion load-unload of a rough surface against a flat; ``comparison`` judges a statistical
+prediction against a deterministic model's realisations at the level of a claim (one island, or the
+mean), ``convergence`` a mesh study of the island (paper 002 Fig. 6). Theory: ``docs/asperity.md``.
 """
 
+from .comparison import Comparison, against_realisations
+from .convergence import GridValue, QuantityConvergence, mesh_convergence
 from .elastic_plastic import (
     contact_pressure_factor,
     critical_interference,
@@ -30,8 +34,12 @@ from .load_unload import LOADING_LAWS, StatisticalLoadUnload, statistical_load_u
 
 __all__ = [
     "LOADING_LAWS",
+    "Comparison",
+    "GridValue",
+    "QuantityConvergence",
     "StatisticalLoadUnload",
     "SummitDistribution",
+    "against_realisations",
     "contact_pressure_factor",
     "critical_interference",
     "critical_load",
@@ -42,6 +50,7 @@ __all__ = [
     "kogut_etsion_area",
     "kogut_etsion_load",
     "measured_summits",
+    "mesh_convergence",
     "paper002_eq10_load",
     "plasticity_index",
     "residual_interference_ratio",

@@ -19,7 +19,7 @@ holds 1 exactly when the verdict is "not established" at the same level: the rat
 say the same thing. (The mean of the per-realisation ratios :math:`s / x_i` would not: by Jensen's
 inequality it exceeds :math:`s / \bar x`, and its interval need not agree with the verdict.)
 Quantities are positive (interferences past the reference load, areas): the deterministic spread
-is taken within :data:`POSITIVE` so that no interval reaches below zero.
+is taken within ``POSITIVE`` so that no interval reaches below zero.
 """
 
 from __future__ import annotations
@@ -63,7 +63,7 @@ class Comparison:
     statistical : float
         The statistical model's value.
     deterministic : Spread
-        The deterministic model's values over its realisations, within :data:`POSITIVE`.
+        The deterministic model's values over its realisations, within ``POSITIVE``.
     one, mean : Verdict
         The verdict for one island (prediction interval) and for the mean (confidence interval).
     """
@@ -157,7 +157,7 @@ def against_realisations(
     quantity : str
         Name of the quantity, for the sentence and the table.
     bounds : (float, float)
-        The quantity's range (default :data:`POSITIVE`): intervals are cut there.
+        The quantity's range (default ``POSITIVE``): intervals are cut there.
 
     Returns
     -------

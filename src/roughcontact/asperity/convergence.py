@@ -4,18 +4,18 @@ Paper 002 refines its FEM mesh and shows the error of :math:`\omega_{max}` again
 falling monotonically. Here a mesh study is cases of the same island on several grids (a generator
 of ``modes = "wavevector"`` draws one surface at every resolution) and, at each grid, several
 realisations of it (``replicate``): the same draws on every grid. For every quantity the paper's
-figure and the statistical comparison use (:data:`QUANTITIES`: the peak interference, the
+figure and the statistical comparison use (``QUANTITIES``: the peak interference, the
 interference where unloading returns to the reference load, the real contact area at the peak),
 :func:`mesh_convergence` gives per grid
 
 * the value: the mean over the realisations with its 95 % confidence interval (within
-  :data:`BOUNDS`: none of these quantities is negative) and the standard deviation of one draw;
+  ``BOUNDS``: none of these quantities is negative) and the standard deviation of one draw;
 * the change per refinement: the mean's relative change from the next coarser grid, and each
   draw's (signed: a change of sign is a non-monotone sequence);
 
 and over the three finest grids, for the mean and for each draw, the observed order of convergence
 and the Richardson extrapolation (:func:`roughcontact.spread.convergence_order`) where the changes
-shrink monotonically at an order of at least :data:`MIN_ORDER`, and otherwise why there is none:
+shrink monotonically at an order of at least ``MIN_ORDER``, and otherwise why there is none:
 ``not monotone`` (the change changes sign), ``changes do not shrink`` (it keeps its sign and does
 not shrink on refinement) or an order too low to be asymptotic. A refinement that changes a
 quantity by much less than the realisations scatter it is converged enough for a comparison
@@ -67,7 +67,7 @@ def trend(sizes: Sequence[float], values: Sequence[float]) -> tuple[tuple[float,
     """Return (order, words) of a quantity over grids: the observed order and extrapolation, or why none.
 
     ``order`` is ``(p, extrapolated)`` of :func:`roughcontact.spread.convergence_order` over the three
-    finest grids where p >= :data:`MIN_ORDER`, else None; ``words`` is ``observed order 1.93`` or why
+    finest grids where p >= ``MIN_ORDER``, else None; ``words`` is ``observed order 1.93`` or why
     there is none: ``2 grids: no order``, ``not monotone`` (the change over the three finest grids
     changes sign), ``changes do not shrink`` (it keeps its sign but does not shrink on refinement) or
     ``order 0.16, too low: not asymptotic``.
@@ -98,7 +98,7 @@ class GridValue:
         Its pixel size h [m].
     spread : Spread
         The quantity over the realisations on this grid that every grid has (interval of the mean
-        within :data:`BOUNDS`).
+        within ``BOUNDS``).
     change : float
         Relative change of the mean from the next coarser grid (signed; NaN on the coarsest).
     draw_changes : dict of int to float
@@ -125,7 +125,7 @@ class QuantityConvergence:
     order : (float, float) or None
         Observed order and Richardson extrapolation of the means over the three finest grids.
     trend : str
-        The means' trend in words (:func:`trend`).
+        The means' trend in words (``trend``).
     draw_trends : dict of int to str
         Each realisation's trend in words, by its ``replicate``.
     left_out : tuple of int
@@ -199,7 +199,7 @@ class QuantityConvergence:
         ``ci95_low``, ``ci95_high`` (of the mean), ``std`` (of one draw), ``change_from_coarser (%)``
         (of the mean), ``change_per_draw (%)`` (each draw's) and, on the finest grid,
         ``observed_order`` (of the mean; none where there is none) and ``trend`` (the mean's in
-        words, :func:`trend`; :meth:`summary` says the rest).
+        words, ``trend``; :meth:`summary` says the rest).
         """
         rows = []
         for grid in self.grids:

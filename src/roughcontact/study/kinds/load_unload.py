@@ -453,7 +453,7 @@ def _against_statistical(records, context):
                             "statistical / omega_c": found.statistical / omega_c,
                             "statistical / bem": found.ratio,
                             "statistical / bem 95% low": ratio_low,
-                            "statistical / bem 95% high": ratio_high,
+                            "statistical / bem 95% high": None if math.isinf(ratio_high) else ratio_high,
                             "statistical model": found.model_words(of),
                             "paper's words": words,
                         }
