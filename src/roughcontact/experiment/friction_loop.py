@@ -109,7 +109,7 @@ class Loop:
         Where it came from (file path).
     origin : DataOrigin
         What kind of data it is (measured, reconstructed or synthetic), from the file's ``#``
-        header (``# origin: synthetic``, :mod:`roughcontact.origin`); measured where the file does
+        header (``# origin: synthetic``, ``roughcontact.origin``); measured where the file does
         not say otherwise.
     """
 
@@ -171,7 +171,7 @@ def read_loop_csv(
     -------
     Loop
         Displacement [m], force [N], time [s] or None, and the origin its ``#`` header declares
-        (``# origin: synthetic``; measured where it says nothing else, :mod:`roughcontact.origin`).
+        (``# origin: synthetic``; measured where it says nothing else, ``roughcontact.origin``).
 
     Raises
     ------

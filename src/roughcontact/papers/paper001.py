@@ -22,7 +22,7 @@ What the paper does not give, and what is done instead (stated in every result):
   0.2 mm); the pressure is checked to vanish on the window's border, else an error asks for a
   larger window. ``window="auto"`` (the ``--paper001`` command's default) chooses, per ball and
   load, the smallest window that holds every point that can touch
-  (:func:`roughcontact.contact.presliding.contact_window`): with HDPE's 3.17 um roughness some
+  (``roughcontact.contact.presliding.contact_window``): with HDPE's 3.17 um roughness some
   balls touch 0.19 mm off the apex, beyond a 160 px window;
 * the steps of the path: ``steps_per_stroke`` per branch, spaced quadratically from each reversal
   so the pre-sliding part (a fraction of a micrometre) is resolved.
@@ -198,7 +198,7 @@ def run_case(
     window : int or "auto"
         Pixels of the central window that is solved (free boundary); ``"auto"`` chooses the
         smallest that holds every point of the ball that can touch at ``normal_force``
-        (:func:`roughcontact.contact.presliding.contact_window`).
+        (``roughcontact.contact.presliding.contact_window``).
     pixels : int
         Pixels across the generated 1.1 mm scan (the paper's 1024 gives 1.07 um; the default
         512 gives 2.15 um, so the default 160-pixel window is 0.34 mm, wide enough for the

@@ -417,7 +417,7 @@ def plot_lateral_stiffness(
         and C shifted by -1 % and +1 % of the largest load so that the three do not hide each other.
     prediction : dict of str to (array_like, array_like), optional
         Point name to the low and high ends [N/m] of the 95 % prediction interval of one more
-        realisation at each load (where one ball falls; :meth:`roughcontact.spread.Spread.prediction`):
+        realisation at each load (where one ball falls; ``Spread.prediction`` of :mod:`roughcontact.spread`):
         drawn as thin lines without caps behind the error bars of the mean.
     realisations : int
         Realisations behind each simulated mean (said in the legend).
@@ -615,7 +615,7 @@ class MeasuredLoop:
     """A compared friction loop to draw beside the cases: the loop, its analysis, its place and origin.
 
     The class keeps its name (the study key is ``measured_loop``), but the loop is called what its
-    file says it is (:attr:`origin`): a synthetic loop is never labelled measured.
+    file says it is (``origin``): a synthetic loop is never labelled measured.
 
     Attributes
     ----------
@@ -630,7 +630,7 @@ class MeasuredLoop:
     sample : str or None
         The sample it belongs to; None: every sample.
     origin : DataOrigin
-        Measured, reconstructed or synthetic (the file's ``# origin:`` header, :mod:`roughcontact.origin`).
+        Measured, reconstructed or synthetic (the file's ``# origin:`` header, ``roughcontact.origin``).
     """
 
     loop: Any
@@ -952,7 +952,7 @@ def _verdict_line(at_load) -> str:
 
     ``at_load``: the cases of each load, each list the realisations of one case. Empty with fewer
     than two realisations (no interval to judge). See
-    :func:`roughcontact.contact.presliding.rough_vs_smooth`.
+    ``roughcontact.contact.presliding.rough_vs_smooth``.
     """
     words: dict[str, list[str]] = {reading: [] for reading in READINGS}
     decided = 0
@@ -993,7 +993,7 @@ def lateral_stiffness_figure(cases, measured: MeasuredLoop | None = None, title:
 
     Over realisations, each load shows the mean with its 95 % interval (capped bars) and the 95 %
     prediction interval of one ball (thin lines); the panel's title sums up one ball's verdict
-    against Mindlin in both readings (:func:`roughcontact.contact.presliding.rough_vs_smooth`),
+    against Mindlin in both readings (``roughcontact.contact.presliding.rough_vs_smooth``),
     saying where eq. 12's printed factor 4 decides it. A ``measured`` loop's K_L is marked at its
     load, named by its origin; ``title`` names a panel of cases without a sample. None where no
     case has an analysed loop (its K_L are undefined).

@@ -52,7 +52,9 @@ paper argues the polymer balls stay elastic) without visco-elasticity (so the me
 curved corners are absent); static and kinetic friction coefficients are equal; the counter-face
 (paper: a silicon wafer) is smooth; no ``counter_body`` means a rigid flat.
 
-Scalars: :meth:`roughcontact.contact.presliding.PreslidingResult.scalars` (units in its ``UNITS``).
+Scalars: :meth:`roughcontact.contact.presliding.PreslidingResult.scalars` (units in its ``UNITS``),
+with ``window_choice`` (the window solved and how it was chosen: given, the whole scan, or
+``auto: ...``) and, for a generated paper 001 ball, ``flattened_rq`` beside ``table2_rq``.
 Dataset: :meth:`~roughcontact.contact.presliding.PreslidingResult.to_xarray` (every step from the
 unloaded start, the pressure map, the normalised shear sqrt(q_x^2 + q_y^2)/(mu_f p) at the points
 A, B, C of the last loop, or at the last reversals and step of your programme, in single
