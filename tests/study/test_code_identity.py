@@ -3,6 +3,7 @@
 import json
 
 from roughcontact._version import code_fingerprint, code_identity
+from roughcontact.study.store import sealed
 
 STUDY = """
 [study]
@@ -43,8 +44,8 @@ def test_cases_stored_by_other_code_are_recomputed_with_a_note(tmp_path, cli):
     assert stored["code"] == code_identity()
     status, out, err = cli("run", study, "-o", output, "--resume", "--no-progress")
     assert "0 cases run, 2 reused" in out and "other code" not in err
-    stored["code"]["fingerprint"] = "0123456789abcdef"  # as an older roughcontact would have left it
-    records[0].write_text(json.dumps(stored))
+    stored["code"]["fingerprint"] = "0123456789abcdef"  # as an older roughcontact would have left it,
+    records[0].write_text(json.dumps(sealed(stored)))  # sealed as it would have sealed it
     status, out, err = cli("run", study, "-o", output, "--resume", "--no-progress")
     assert status == 0 and "1 case run, 1 reused" in out
     assert (
@@ -52,3 +53,4 @@ def test_cases_stored_by_other_code_are_recomputed_with_a_note(tmp_path, cli):
         in err
     )
     assert json.loads(records[0].read_text())["code"] == code_identity()
+    assert "checksum mismatch" not in err

@@ -28,8 +28,9 @@ from roughcontact.study import load_study, run_study
 from roughcontact.study.outputs import write_results_table
 from roughcontact.study.store import read_table, record_path
 
-TIMING = ("seconds", "started", "pid", "host")
-"""Entries of a case record that say when, where and how long, not what: excluded from comparisons."""
+TIMING = ("seconds", "started", "pid", "host", "checksum")
+"""Entries of a case record that say when, where and how long, not what: excluded from comparisons
+(with the record's checksum, which covers them; the fields file's checksum is compared)."""
 
 STUDY = """
 [study]

@@ -41,7 +41,7 @@ from .outputs import (
     warning_lines,
 )
 from .run import RunSummary, case_progress, execute, make_task, run_study
-from .store import notes_of
+from .store import LOCK, locked, notes_of, refuse_if_in_use
 
 
 @dataclass(frozen=True)
@@ -153,48 +153,53 @@ def answer(
     from ..progress import shown
     from .report import write_report
 
-    with shown(progress):
-        if output is None:
-            if workers is not None or scheduler is not None:
-                raise InputError("-o/--output", "a run on Dask needs an output folder.", "add -o OUT.")
-            records: dict[str, list[CaseRecord]] = {}
-            with case_progress(len(study.cases), progress and len(study.cases) > 1) as bar:
-                for case in study.cases:
-                    record, _ = execute(make_task(study, case, raise_errors=raise_errors))
-                    records.setdefault(case.analysis, []).append(CaseRecord(record, Path.cwd()))
-                    bar.update()
-            return StudyAnswer(study, in_memory(study, records))
-        folder = Path(output).expanduser().resolve()
-        summary = run_study(
-            study,
-            folder,
-            resume=resume,
-            progress=progress,
-            raise_errors=raise_errors,
-            workers=workers,
-            scheduler=scheduler,
-            worker_storage=worker_storage,
-        )
-    report = write_report(folder, dpi=dpi)
-    return StudyAnswer(study, read_study(folder)[1], folder, report, summary)
+    if output is None:
+        if workers is not None or scheduler is not None:
+            raise InputError("-o/--output", "a run on Dask needs an output folder.", "add -o OUT.")
+        records: dict[str, list[CaseRecord]] = {}
+        with shown(progress), case_progress(len(study.cases), progress and len(study.cases) > 1) as bar:
+            for case in study.cases:
+                record, _ = execute(make_task(study, case, raise_errors=raise_errors))
+                records.setdefault(case.analysis, []).append(CaseRecord(record, Path.cwd()))
+                bar.update()
+        return StudyAnswer(study, in_memory(study, records))
+    folder = Path(output).expanduser().resolve()
+    with locked(folder) as lock_note:  # the run, its report and what is read back: one writer at a time
+        with shown(progress):
+            summary = run_study(
+                study,
+                folder,
+                resume=resume,
+                progress=progress,
+                raise_errors=raise_errors,
+                workers=workers,
+                scheduler=scheduler,
+                worker_storage=worker_storage,
+            )
+        summary.lock_note = summary.lock_note or lock_note
+        report = write_report(folder, dpi=dpi)
+        analyses = read_study(folder)[1]
+    return StudyAnswer(study, analyses, folder, report, summary)
 
 
 def reusable(folder: str | Path, study: Study, *, replace: bool = False) -> bool:
     """Check ``folder`` for a command's study; return True where it holds this very study (resume it).
 
     A folder written by the same command with the same options is resumed (its finished cases are
-    the answer); one with other options is emptied only with ``replace``, never silently; a
-    folder of something else is refused.
+    the answer, each verified against its checksums before it is reused); one with other options is
+    emptied only with ``replace``, never silently; a folder of something else, or one another run
+    is writing into, is refused.
 
     Raises
     ------
     InputError
         Field ``-o/--output``: the folder holds other files, another command's results, or this
-        command's with other options (without ``replace``).
+        command's with other options (without ``replace``), or another running process holds it.
     """
     folder = Path(folder).expanduser().resolve()
-    if not folder.exists() or not any(folder.iterdir()):
+    if not folder.is_dir() or not any(path.name != LOCK for path in folder.iterdir()):
         return False
+    refuse_if_in_use(folder)
     marker = folder / "study.json"
     if not marker.is_file():
         raise InputError("-o/--output", f"{folder} is not empty.", "choose a new or empty folder.")

@@ -89,7 +89,8 @@ class CaseRecord:
     data : dict
         The JSON record: ``analysis``, ``case``, ``status``, ``parameters`` (SI), ``axes`` (the
         swept values as written), ``scalars``, ``seconds``, ``fields`` (path of the NetCDF file, or
-        None), ``error``.
+        None), ``fields_sha256`` and ``fields_bytes`` (that file as written), ``error``, and
+        ``checksum`` (of the record's own content, :func:`roughcontact.study.store.sealed`).
     folder : Path
         The study's output folder (relative field paths are relative to it).
     """
@@ -99,8 +100,17 @@ class CaseRecord:
 
     @classmethod
     def read(cls, path: Path, folder: Path) -> CaseRecord:
-        """Read a record file."""
-        return cls(json.loads(path.read_text()), folder)
+        """Read a record file as it is (:func:`roughcontact.study.store.stored_case` verifies it).
+
+        Raises
+        ------
+        ValueError
+            The file is not a JSON object (truncated, damaged, or not a record).
+        """
+        data = json.loads(path.read_text())
+        if not isinstance(data, dict):
+            raise ValueError(f"{path} holds a JSON {type(data).__name__}, not a case record")
+        return cls(data, folder)
 
     def __getitem__(self, key: str) -> Any:
         return self.data[key]

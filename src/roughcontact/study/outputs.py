@@ -18,7 +18,7 @@ from ..errors import InputError
 from .display import columns, header
 from .kind import CaseRecord, FigureContext, Kind
 from .schema import STORED
-from .store import Table, notes_of, read_record, replacing, write_table
+from .store import Table, notes_of, replacing, stored_case, write_table
 
 log = logging.getLogger(__name__)
 
@@ -44,6 +44,12 @@ class StoredAnalysis:
     """Its generated random topographies drawn anew for each realisation."""
     drawn_once: tuple[str, ...] = ()
     """Its generated random topographies drawn once (one seed for every case)."""
+    damaged: tuple[tuple[str, str], ...] = ()
+    """(case id, what did not match) of each case whose stored files do not match their checksums:
+    not used (its record is None, shown as pending), named by ``plot`` and ``report``."""
+    unsealed: tuple[str, ...] = ()
+    """Ids of the cases stored without a checksum (by a roughcontact before checksums): used
+    unverified, said by ``plot`` and ``report``."""
 
     @property
     def finished(self) -> list[CaseRecord]:
@@ -65,17 +71,19 @@ def context(analysis: StoredAnalysis, analyses: list[StoredAnalysis]) -> FigureC
 
 
 def _current(record: CaseRecord | None, case_id: str) -> CaseRecord | None:
-    """Return the record if it is this case's (key starts with the id) and complete, else None (pending)."""
+    """Return the record if it is this case's (key starts with the id), else None (pending)."""
     if record is None or not str(record.data.get("key", "")).startswith(case_id):
         return None
-    path = record.fields_path
-    if record.done and path is not None and not path.exists():
-        return None  # its fields are gone (a purged worker storage): the runner would redo it
     return record
 
 
 def read_study(folder: str | Path) -> tuple[dict[str, Any], list[StoredAnalysis]]:
-    """Read ``OUT/study.json`` and every stored record of the study in ``folder``."""
+    """Read ``OUT/study.json`` and every stored record of the study in ``folder``, verified.
+
+    A record or fields file that does not match its checksum is not used: the case reads as not
+    stored (pending) and :attr:`StoredAnalysis.damaged` says what did not match. A record stored
+    without a checksum (an earlier roughcontact) is used and listed in :attr:`StoredAnalysis.unsealed`.
+    """
     from .kinds import get_kind
 
     folder = Path(folder).expanduser().resolve()
@@ -95,7 +103,12 @@ def read_study(folder: str | Path) -> tuple[dict[str, Any], list[StoredAnalysis]
             compare = kind.compare.model_validate(compare, context=STORED)  # written in SI by the runner
             kept = {k: folder / v for k, v in compare if isinstance(v, Path) and not v.is_absolute()}
             compare = compare.model_copy(update=kept)  # measured data kept in OUT/inputs/
-        records = tuple(_current(read_record(folder, entry["name"], case), case) for case in entry["cases"])
+        stored = {case: stored_case(folder, entry["name"], case) for case in entry["cases"]}
+        records = tuple(_current(stored[case].record, case) for case in entry["cases"])
+        damaged = tuple((case, s.problem) for case, s in stored.items() if s.problem is not None)
+        unsealed = tuple(
+            case for (case, s), record in zip(stored.items(), records, strict=True) if s.unsealed and record
+        )
         analyses.append(
             StoredAnalysis(
                 entry["name"],
@@ -109,6 +122,8 @@ def read_study(folder: str | Path) -> tuple[dict[str, Any], list[StoredAnalysis]
                 entry.get("realisations", 1),
                 tuple(entry.get("redrawn", ())),
                 tuple(entry.get("drawn_once", ())),
+                damaged,
+                unsealed,
             )
         )
     return document, analyses
@@ -144,10 +159,12 @@ def result_rows(analyses: list[StoredAnalysis]) -> list[dict[str, Any]]:
     rows = []
     for analysis in analyses:
         units = dict(analysis.kind.units)
+        damaged = dict(analysis.damaged)
         for case_id, record in zip(analysis.cases, analysis.records, strict=True):
             row: dict[str, Any] = {"analysis": analysis.name, "model": analysis.kind.name, "case": case_id}
             if record is None:
-                rows.append(row | {"status": "pending"})
+                why = damaged.get(case_id)
+                rows.append(row | {"status": "pending"} | ({"error": f"not used: {why}"} if why else {}))
                 continue
             row["status"] = record["status"]
             row["sample"] = record.parameters.get("sample", "")

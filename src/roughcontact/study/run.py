@@ -5,7 +5,11 @@ The runner turns each pending :class:`~roughcontact.study.config.Case` into a pi
 and stores what comes back (:mod:`roughcontact.study.store`) as soon as it comes back. So:
 
 * a rerun with ``resume=True`` skips every case whose record is stored with the same key (same
-  model, parameters, inputs and seeds) and redoes failed, interrupted and changed ones;
+  model, parameters, inputs and seeds) and verifies against its checksums, and redoes failed,
+  interrupted and changed ones, and those whose stored files do not match what was written (a
+  line per case says what did not match);
+* one run at a time writes into a folder (``OUT/.lock``, :func:`~roughcontact.study.store.locked`);
+  a stopped run's table and ``provenance.json`` count the cases stored on disk, not those computed;
 * Ctrl-C or a killed process loses no finished case, and leaves no half-written file (each is
   renamed into place when complete); the table written on the way out marks what is pending;
 * a case that raises is recorded with its error (``status = "failed"``) and the others go on;
@@ -46,12 +50,15 @@ from .inputs import CaseInputs
 from .kind import CaseParameters, CaseRecord
 from .schema import FileTopography, MaterialSpec, unit_of
 from .store import (
+    LOCK,
     clean_partial_files,
     dumps,
     fields_path,
     json_ready,
-    read_record,
+    locked,
     record_path,
+    sealed,
+    stored_case,
     write_atomically,
     write_dataset,
 )
@@ -106,6 +113,8 @@ def failed_record(task: Task, error: str | None) -> dict[str, Any]:
         "seeds": task.seeds,
         "scalars": {},
         "fields": None,
+        "fields_sha256": None,
+        "fields_bytes": None,
         "error": error,
         "version": _version(),
         "code": _code(),
@@ -145,19 +154,23 @@ def execute(task: Task) -> tuple[dict[str, Any], Any]:
     record["seconds"] = time.perf_counter() - start
     if dataset is not None and task.worker_storage is not None:
         path = Path(task.worker_storage) / task.study / task.analysis / f"{task.case_id}.nc"
-        write_dataset(path, dataset)
+        record["fields_sha256"], record["fields_bytes"] = write_dataset(path, dataset)
         record["fields"] = str(path.resolve())
         dataset = None
     return record, dataset
 
 
 def store(folder: Path, record: dict[str, Any], dataset) -> None:
-    """Store a case: its NetCDF file first (if any), then its record, the mark of a finished case."""
+    """Store a case: its NetCDF file first (if any), then its record, the mark of a finished case.
+
+    The record is sealed (:func:`~roughcontact.study.store.sealed`): it holds the checksum of the
+    NetCDF file's bytes and of its own content, which a later run verifies before reusing it.
+    """
     if dataset is not None:
         path = fields_path(folder, record["analysis"], record["case"])
-        write_dataset(path, dataset)
+        record["fields_sha256"], record["fields_bytes"] = write_dataset(path, dataset)
         record["fields"] = str(path.relative_to(folder))
-    write_atomically(record_path(folder, record["analysis"], record["case"]), dumps(record))
+    write_atomically(record_path(folder, record["analysis"], record["case"]), dumps(sealed(record)))
 
 
 def _axes_si(case: Case) -> tuple[dict[str, Any], dict[str, str | None]]:
@@ -212,21 +225,45 @@ def is_finished(folder: Path, case: Case) -> bool:
     """Return True when ``case`` is stored as done with the same key, by the running code.
 
     Done means: the same key (inputs), the same code fingerprint
-    (:func:`roughcontact._version.code_identity`) and its fields file, if any, present.
+    (:func:`roughcontact._version.code_identity`), and its record and fields file, if any, as
+    they were written (their checksums, :func:`~roughcontact.study.store.stored_case`).
     """
     return finished_state(folder, case) == "finished"
 
 
 def finished_state(folder: Path, case: Case) -> str | None:
-    """Return "finished", "other code" (done with the same key by other code) or None (not done)."""
-    record = read_record(folder, case.analysis, case.case_id)
-    if record is None or not record.done or record["key"] != case.key:
-        return None
-    path = record.fields_path
-    if path is not None and not path.exists():
-        return None
-    stored = (record.data.get("code") or {}).get("fingerprint")
-    return "finished" if stored == _code()["fingerprint"] else "other code"
+    """Return the state of a case's stored files; see :func:`case_state`, which also says why."""
+    return case_state(folder, case)[0]
+
+
+def case_state(folder: Path, case: Case) -> tuple[str | None, str | None]:
+    """Return the state of a case's stored files and, where they cannot be trusted, what did not match.
+
+    States: ``"finished"`` (done with the same key by the running code, verified), ``"failed"``
+    (stored as failed with the same key), ``"other code"`` (done with the same key by another
+    version or source tree), ``"unsealed"`` (done with the same key but stored without a checksum,
+    by a roughcontact before checksums), ``"damaged"`` (a record or fields file that does not match
+    its checksum, or cannot be read: the second item says how), or None (not stored, or stored
+    with another key: the study changed).
+    """
+    stored = stored_case(folder, case.analysis, case.case_id)
+    if stored.problem is not None:
+        return "damaged", stored.problem
+    record = stored.record
+    if record is None or record["key"] != case.key:
+        return None, None
+    if not record.done:
+        return ("failed" if record["status"] == "failed" else None), None
+    if stored.unsealed:
+        return "unsealed", None
+    fingerprint = (record.data.get("code") or {}).get("fingerprint")
+    return ("finished" if fingerprint == _code()["fingerprint"] else "other code"), None
+
+
+def case_words(case: Case, folder: Path) -> str:
+    """Name a case for a line a user reads: ``case ID (analysis: its swept values or surface and load)``."""
+    shown = {"case": case.case_id, "axes": case.axes, "parameters": case.parameters.model_dump(mode="json")}
+    return f"case {case.case_id} ({case.analysis}: {CaseRecord(shown, folder).label})"
 
 
 @dataclass
@@ -237,6 +274,14 @@ class RunSummary:
     skipped: int = 0
     other_code: int = 0
     """Cases stored as done by other code (another version or source of roughcontact): recomputed."""
+
+    damaged: list[str] = field(default_factory=list)
+    """A line per case whose stored files did not match their checksums: what did not, and that it is
+    computed again."""
+    unsealed: int = 0
+    """Cases stored as done without a checksum (by a roughcontact before checksums): recomputed."""
+    lock_note: str | None = None
+    """Says that a lock left by a killed run was taken over (None when there was none)."""
 
     @property
     def recomputed_note(self) -> str | None:
@@ -249,6 +294,21 @@ class RunSummary:
             f"roughcontact, or changed sources) {'were' if many else 'was'} recomputed, not reused."
         )
 
+    @property
+    def notes(self) -> list[str]:
+        """Every line a user should read about the stored cases: a lock taken over, cases not reused."""
+        lines = [self.lock_note] if self.lock_note else []
+        lines += self.damaged
+        if self.unsealed:
+            many = self.unsealed != 1
+            lines.append(
+                f"{self.unsealed} case{'s' if many else ''} stored without a checksum (by a roughcontact "
+                f"before checksums) {'were' if many else 'was'} recomputed, not reused."
+            )
+        if self.recomputed_note:
+            lines.append(self.recomputed_note)
+        return lines
+
     done: int = 0
     failed: int = 0
     interrupted: bool = False
@@ -256,6 +316,10 @@ class RunSummary:
     wall_seconds: float = 0.0
     case_seconds: float = 0.0
     failures: list[str] = field(default_factory=list)
+    reused: set[str] = field(default_factory=set)
+    """Ids of the cases reused (stored, verified, by the running code)."""
+    store_error: str | None = None
+    """Why the run stopped storing cases (a full disk), where it did: the case and the system's words."""
 
     @property
     def pending(self) -> int:
@@ -351,7 +415,7 @@ def check_output(folder: Path, resume: bool) -> None:
     problem = not_a_folder(folder)
     if problem:
         raise InputError("-o/--output", problem, "give a folder for the results (a new one is made).")
-    if resume or not folder.exists() or not any(folder.iterdir()):
+    if resume or not folder.exists() or not any(path.name != LOCK for path in folder.iterdir()):
         return
     if (folder / MARKER).exists():
         raise InputError(
@@ -414,17 +478,46 @@ def run_study(
     if workers is not None and workers < 1:
         raise InputError("--workers", f"need at least 1 worker, got {workers}.", "e.g. --workers 2.")
     folder = Path(output).expanduser().resolve()
+    with locked(folder) as lock_note:
+        summary = _run_locked(
+            study, folder, resume, workers, scheduler, worker_storage, progress, on_record, raise_errors
+        )
+    if lock_note:
+        summary.lock_note = lock_note
+    return summary
+
+
+def _run_locked(
+    study: Study,
+    folder: Path,
+    resume: bool,
+    workers: int | None,
+    scheduler: str | None,
+    worker_storage: str | Path | None,
+    progress: bool,
+    on_record: Callable[[dict], None] | None,
+    raise_errors: bool,
+) -> RunSummary:
+    """:func:`run_study` in a folder whose lock this process holds."""
     check_output(folder, resume)
-    folder.mkdir(parents=True, exist_ok=True)
     clean_partial_files(folder)
     write_atomically(folder / "study.toml", study.text)
     write_atomically(folder / MARKER, dumps(study_document(study, folder)))
 
     cases = study.cases
-    states = [finished_state(folder, case) if resume else None for case in cases]
-    pending = [case for case, state in zip(cases, states, strict=True) if state != "finished"]
+    states = [case_state(folder, case) if resume else (None, None) for case in cases]
+    pending = [case for case, (state, _) in zip(cases, states, strict=True) if state != "finished"]
     summary = RunSummary(total=len(cases), skipped=len(cases) - len(pending))
-    summary.other_code = states.count("other code")
+    summary.reused = {
+        case.case_id for case, (state, _) in zip(cases, states, strict=True) if state == "finished"
+    }
+    summary.other_code = sum(state == "other code" for state, _ in states)
+    summary.unsealed = sum(state == "unsealed" for state, _ in states)
+    summary.damaged = [
+        f"{case_words(case, folder)}: {problem}; computed again."
+        for case, (state, problem) in zip(cases, states, strict=True)
+        if state == "damaged"
+    ]
     storage = None if worker_storage is None else str(Path(worker_storage).expanduser().resolve())
     tasks = [make_task(study, case, storage, raise_errors=raise_errors) for case in pending]
     started = datetime.now(UTC)
@@ -432,9 +525,19 @@ def run_study(
     bar = case_progress(len(tasks), progress)
     # Cases are stored on one background thread, in order, while the next case solves (the
     # solvers release the GIL): a small case's NetCDF and JSON writes would otherwise add ~5 % to
-    # a sweep. Every write is waited for before the table is written, also after Ctrl-C.
+    # a sweep. Every write is waited for before the table is written, also after Ctrl-C. A write
+    # that fails (a full disk) stops the run: the next case is not started.
     writer = ThreadPoolExecutor(max_workers=1, thread_name_prefix="roughcontact-store")
     writes = []
+    unstored: list[tuple[dict[str, Any], OSError]] = []
+
+    def store_case(record: dict[str, Any], dataset) -> None:
+        try:
+            store(folder, record, dataset)
+        except OSError as error:
+            unstored.append((record, error))
+            raise
+
     try:
         with contextlib.ExitStack() as stack:
             if workers is not None or scheduler is not None:
@@ -445,8 +548,9 @@ def run_study(
                 results = _on_dask(client, tasks)
             else:
                 results = _in_process(tasks)
+            stack.callback(results.close)  # a run stopped early cancels what is left (Dask)
             for record, dataset in results:
-                writes.append(writer.submit(store, folder, record, dataset))
+                writes.append(writer.submit(store_case, record, dataset))
                 summary.case_seconds += record.get("seconds") or 0.0
                 if record["status"] == "done":
                     summary.done += 1
@@ -457,6 +561,8 @@ def run_study(
                 bar.update()
                 if on_record is not None:
                     on_record(record)
+                if unstored:
+                    break
             writer.shutdown(wait=True)  # every case stored before the cluster goes
     except KeyboardInterrupt:
         summary.interrupted = True
@@ -465,7 +571,38 @@ def run_study(
         writer.shutdown(wait=True)
         bar.close()
         summary.wall_seconds = time.perf_counter() - clock
-        write_summary_files(study, folder, summary, started)
+        summary_error = None
+        if unstored:
+            record, error = unstored[0]
+            summary.store_error = f"{record['analysis']}/{record['case']}: {error.strerror or error}"
+        try:
+            write_summary_files(study, folder, summary, started)
+        except OSError as error:
+            if not unstored:
+                raise
+            # the disk that refused a case refuses the table too: remove the earlier run's table and
+            # provenance rather than leave them describing what is no longer so
+            summary_error = error
+            for name in ("results.csv", "provenance.json"):
+                (folder / name).unlink(missing_ok=True)
+    if unstored:
+        record, error = unstored[0]
+        counts = stored_counts(folder, study, summary)
+        kept = counts["done"] + counts["reused"] + counts["failed"]
+        said = (
+            "provenance.json counts them"
+            if summary_error is None
+            else f"results.csv and provenance.json could not be written either ({summary_error.strerror}) "
+            "and were removed"
+        )
+        label = CaseRecord(record, folder).label
+        raise InputError(
+            "-o/--output",
+            f"could not store case {record['case']} ({record['analysis']}: {label}) "
+            f"in {folder}: {error.strerror or error}. The run stopped with {kept} of {summary.total} cases "
+            f"stored ({said}).",
+            "free space (or give another folder) and rerun with --resume: the stored cases are kept.",
+        ) from error
     for write in writes:
         write.result()  # a failed write (disk full, say) is an error of the run, not of a case
     return summary
@@ -561,11 +698,36 @@ def dependency_versions() -> dict[str, str]:
     return versions
 
 
+def stored_counts(folder: Path, study: Study, summary: RunSummary) -> dict[str, int]:
+    """Count the study's cases as they are stored in ``folder`` now, each verified (:func:`case_state`).
+
+    ``done`` and ``reused`` are the cases stored as finished (done, same key, running code, matching
+    their checksums), split into those this run computed and those it reused; ``failed`` those stored
+    as failed with the same key; ``pending`` every other case: not stored, or stored in a way a
+    ``--resume`` would compute again.
+    """
+    counts = {"total": len(study.cases), "reused": 0, "done": 0, "failed": 0, "pending": 0}
+    for case in study.cases:
+        state, _ = case_state(folder, case)
+        if state == "finished":
+            counts["reused" if case.case_id in summary.reused else "done"] += 1
+        elif state == "failed":
+            counts["failed"] += 1
+        else:
+            counts["pending"] += 1
+    return counts
+
+
 def write_summary_files(study: Study, folder: Path, summary: RunSummary, started: datetime) -> None:
-    """Write ``results.csv`` (every case, pending ones marked) and ``provenance.json``."""
+    """Write ``results.csv`` (every case, pending ones marked) and ``provenance.json``.
+
+    Both are written from the case records on disk, each verified against its checksums, not from
+    what the run counted: after a run stopped by a full disk they say what was stored.
+    """
     from .outputs import write_results_table
 
     write_results_table(folder)
+    counts = stored_counts(folder, study, summary)
     document = {
         "roughcontact": _version(),
         "python": sys.version.split()[0],
@@ -585,14 +747,10 @@ def write_summary_files(study: Study, folder: Path, summary: RunSummary, started
         "finished": datetime.now(UTC).isoformat(timespec="seconds"),
         "wall_seconds": summary.wall_seconds,
         "case_seconds": summary.case_seconds,
-        "cases": {
-            "total": summary.total,
-            "reused": summary.skipped,
-            "done": summary.done,
-            "failed": summary.failed,
-            "pending": summary.pending,
-        },
-        "complete": summary.pending == 0 and not summary.interrupted,
+        "cases": counts,
+        "cases_counted": "from the case records on disk, each verified against its checksums",
+        "complete": counts["pending"] == 0 and not summary.interrupted and summary.store_error is None,
         "interrupted": summary.interrupted,
+        "store_error": summary.store_error,
     }
     write_atomically(folder / "provenance.json", dumps(document))
