@@ -195,12 +195,12 @@ def test_scalars_equal_a_direct_paper001_call(shrunk, tmp_path):
         (
             {ZIP: ZIP + "\nfriction_coefficient = [0.153, 0.0, 0.129, 0.108, 0.104, 0.099]"},
             "friction_coefficient",
-            "greater than 0",
+            "must be positive",
         ),
         (
             {ZIP: ZIP + "\nfriction_coefficient = [-0.15, 0.146, 0.129, 0.108, 0.104, 0.099]"},
             "friction_coefficient",
-            "greater than 0",
+            "must be positive",
         ),
         (
             {ZIP: ZIP + '\nstroke = [nan, "2.943 um", "3.697 um", "2.700 um", "3.370 um", "4.264 um"]'},
