@@ -539,17 +539,15 @@ def test_a_load_sweep_is_compared_at_the_load_of_the_measurements(tmp_path, capl
     path.write_text(SWEPT.format(load=""))  # two loads and no compare.normal_force: no comparison, said
     output = tmp_path / "without"
     run_study(load_study(path), output)
-    with caplog.at_level("WARNING"):
-        write_tables(output)
+    _, problems = write_tables(output)
     assert not (output / "tables" / "friction_comparison.csv").exists()
-    assert "compare.normal_force" in caplog.text
+    assert any("compare.normal_force" in problem for problem in problems)
     written, problems = draw_figures(output)
     assert {p.name for p in written} == {"friction_friction_vs_load.png"}
     assert len(problems) == 2 and all("compare.normal_force" in p for p in problems)
     stale = output / "tables" / "friction_comparison.csv"  # left by an earlier run of other settings
     stale.write_text("sample,p_value\na,0.5\n")
-    with caplog.at_level("WARNING"):
-        write_tables(output)
+    write_tables(output)
     assert not stale.exists()  # a table this run could not make is not shown as if it were current
 
 

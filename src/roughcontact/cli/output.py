@@ -12,7 +12,7 @@ import sys
 
 from .._json import json_ready
 from ..errors import InputError
-from .options import CommandStudy, refuse_unused
+from .options import EXIT_CASES_FAILED, CommandStudy, refuse_unused
 
 
 def run_command(command: CommandStudy, args) -> int:
@@ -56,14 +56,23 @@ def run_command(command: CommandStudy, args) -> int:
         print(f"roughcontact: warning: {line}", file=sys.stderr)
     if as_json:
         print(json.dumps(json_ready(result.document()), indent=2))
-        return 0
-    print("\n".join(result.text_lines()))
-    _combined_notes(result)
-    for problem in result.tables[1]:
-        print(f"roughcontact: table not made: {problem}", file=sys.stderr)
-    if result.report is not None:
-        print(f"wrote {result.folder}: results.csv, cases/, tables/, figures/ and {result.report.name}")
-    return 0
+    else:
+        print("\n".join(result.text_lines()))
+        _combined_notes(result)
+        if result.report is not None:
+            print(f"wrote {result.folder}: results.csv, cases/, tables/, figures/ and {result.report.name}")
+    return not_made(result.problems())
+
+
+def not_made(problems: list[str]) -> int:
+    """Say each table or figure that could not be made; return the exit status (non-zero if any).
+
+    A product the command was asked for (a comparison, a figure) that fails is a failure of the
+    command, also when every case finished.
+    """
+    for problem in problems:
+        print(f"roughcontact: not made: {problem}", file=sys.stderr)
+    return EXIT_CASES_FAILED if problems else 0
 
 
 def _combined_notes(result) -> None:

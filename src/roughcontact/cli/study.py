@@ -22,6 +22,7 @@ from .options import (
     output_folder,
     refuse_unused,
 )
+from .output import not_made
 
 COMMANDS = {
     "run": "run a study file (TOML): every case, the results table, figures and an HTML report",
@@ -106,7 +107,8 @@ def run_and_report(
     for failure in summary.failures:
         print(f"  failed: {failure}", file=sys.stderr)
     print(f"wrote {result.folder}/results.csv, figures/, tables/ and {result.report}")
-    return EXIT_CASES_FAILED if summary.failed else 0
+    products = not_made(result.problems())
+    return EXIT_CASES_FAILED if summary.failed else products
 
 
 def _quiet_dask(verbose: int) -> None:

@@ -73,6 +73,23 @@ class StudyAnswer:
         """The analyses' derived tables as (analysis, name, rows), and the tables that could not be made."""
         return produce(self.analyses, "table")
 
+    def problems(self) -> list[str]:
+        """Return the tables and figures that could not be made (a requested product that failed).
+
+        The tables' from :attr:`tables`; the figures' from the last drawing into the folder
+        (``figures/.drawn.json``), none in memory, where no figure is drawn.
+        """
+        problems = list(self.tables[1])
+        if self.folder is not None:
+            from .outputs import DRAWN
+
+            drawn = self.folder / DRAWN
+            if drawn.is_file():
+                problems += [
+                    p for p in json.loads(drawn.read_text()).get("problems", []) if p not in problems
+                ]
+        return problems
+
     def warnings(self) -> list[tuple[str, str]]:
         """Return (analysis, warning) for every model-range and trust warning of the cases."""
         return [(analysis.name, line) for analysis in self.analyses for line in warning_lines(analysis)]

@@ -302,9 +302,10 @@ def produce(analyses: list[StoredAnalysis], what: str) -> tuple[list[tuple[str, 
         for name, function in functions.items():
             try:
                 product = function(records, context(analysis, analyses))
-            except Exception as error:  # one failure must not lose the others
-                problems.append(f"{analysis.name}/{name}: {type(error).__name__}: {error}")
-                log.warning("%s %s of %s failed: %s", what, name, analysis.name, error)
+            except Exception as error:  # one failure must not lose the others; the caller says it
+                kind_of = "" if isinstance(error, InputError) else f"{type(error).__name__}: "
+                problems.append(f"{analysis.name}/{name}: {kind_of}{error}")
+                log.info("%s %s of %s failed: %s", what, name, analysis.name, error)
                 continue
             if product is not None and (what != "table" or product):
                 made.append((analysis.name, name, product))

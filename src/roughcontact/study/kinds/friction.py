@@ -687,7 +687,10 @@ def _p_value_cell(records, context) -> tuple[str, str]:
     """Return the p values of one reading's mu against ``[analysis.compare]`` and the claim's verdict."""
     if context.compare is None:
         return "no compared values", "not tested"
-    result = comparison(records, context)
+    try:
+        result = comparison(records, context)
+    except InputError as error:  # the comparison table says why; the other claims still stand
+        return f"no comparison ({error.problem})", "not tested"
     shown = ", ".join(f"{s.sample} {s.p_value:.2g}" for s in result.samples)
     if result.by_construction:
         return shown, "no verdict: the values were built from this model"
