@@ -13,6 +13,7 @@ from pathlib import Path
 
 from ..errors import InputError
 from .options import (
+    FILE_OPTIONS,
     CommandStudy,
     add_material_options,
     add_output_options,
@@ -48,6 +49,19 @@ def _surface(command: CommandStudy, args: argparse.Namespace) -> dict:
 def _asperity(args: argparse.Namespace) -> int:
     """Build the ``asperity`` analysis; ``paper002 = true`` fills in what the options leave out."""
     paper = args.paper002
+    if args.file is None:
+        args.taking("without FILE no file is read", "give a topography FILE", options=FILE_OPTIONS)
+    if not args.bem:
+        args.taking(
+            "without --bem there is no boundary-element compression",
+            "add --bem",
+            options=("grid", "seed", "substrate", "film_thickness", "plasticity")
+            + ("hardening_modulus", "depth", "layers"),
+        )
+    elif args.file is not None:
+        args.taking(
+            "with FILE the island is the file", "leave out FILE for paper 002's", options=("grid", "seed")
+        )
     command = CommandStudy("roughcontact asperity", "asperity parameters and the statistical load-unload")
     material = command.material("material", args, required=not paper)
     index = command.analysis(

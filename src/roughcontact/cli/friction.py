@@ -67,6 +67,14 @@ def _model_keys(args: argparse.Namespace) -> dict:
 
 def _friction(args: argparse.Namespace) -> int:
     command = CommandStudy("roughcontact friction", f"friction of {args.file.name} (paper 000's model)")
+    if args.normal_forces:
+        args.taking("--normal-forces gives the loads", "leave out --normal-forces", options=("normal_force",))
+    if not args.relaxed_modulus:
+        args.taking(
+            "without --relaxed-modulus the modulus does not relax",
+            "add --relaxed-modulus",
+            options=("hold_time", "relaxation_time"),
+        )
     forces = args.normal_forces or [args.normal_force]
     index = command.analysis(
         "friction",
@@ -109,6 +117,18 @@ def _friction_compare(args: argparse.Namespace) -> int:
     command = CommandStudy(
         "roughcontact friction-compare", f"simulated mu against the values of {args.measured.name}"
     )
+    if args.sample:
+        args.taking(
+            "--sample gives the scans",
+            "leave out --sample for paper 000's",
+            options=("grid", "seed", "realisations"),
+        )
+    else:
+        args.taking(
+            "without --sample the scans and the tip are paper 000's synthetic ones",
+            "give your scans with --sample",
+            options=("tip", "size", "height_unit"),
+        )
     if args.sample:
         names, samples, replicates = [], [], []
         for sample, files in args.sample:

@@ -164,6 +164,23 @@ def channel_argument(text: str) -> int | str:
     return int(text) if text.isdigit() else text
 
 
+FILE_OPTIONS = (
+    "channel",
+    "treat_as_height",
+    "size",
+    "height_unit",
+    "override_file_values",
+    "fill_undefined",
+    "max_filled",
+    "crop",
+    "remove_specks",
+    "exclude_filled",
+    "periodic",
+    "detrend",
+)
+"""The options that say how to read FILE (:func:`file_options`): unused where a command reads no file."""
+
+
 def file_options(*, required: bool = True, periodic: bool = True) -> argparse.ArgumentParser:
     """Return a parent parser with FILE and the options that say how to read it.
 

@@ -33,7 +33,7 @@ def run_command(command: CommandStudy, args) -> int:
     as_json, output = args.json, getattr(args, "output", None)
     replace, dpi = (getattr(args, "overwrite", False), getattr(args, "dpi", 150)) if output else (False, 150)
     if output is None:
-        args.taking("without -o nothing is written", "add -o OUT")
+        args.taking("without -o nothing is written", "add -o OUT", options=("dpi", "overwrite"))
     refuse_unused(args)  # every option the command's path did not read, before anything is computed
     study = command.build()
     for note in study.notes:

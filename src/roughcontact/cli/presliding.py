@@ -16,6 +16,7 @@ from pathlib import Path
 from ..errors import InputError
 from ..units import quantity, written
 from .options import (
+    FILE_OPTIONS,
     CommandStudy,
     add_material_options,
     add_output_options,
@@ -74,7 +75,11 @@ def _ball(command: CommandStudy, args: argparse.Namespace) -> dict:
     if args.file is None:
         raise InputError("FILE", "no ball topography given.", "pass a FILE, or --paper001.")
     if args.path is not None and args.stroke is not None:
-        raise InputError("--path", "give --stroke (paper 001's cycles) or --path, not both.", None)
+        raise InputError(
+            "--path",
+            "give --stroke (paper 001's cycles) or --path (your programme), not both.",
+            "leave out --stroke to follow your programme, or --path for paper 001's cycles.",
+        )
     if args.path is None and args.stroke is None:
         raise InputError(
             "--stroke", "missing.", "give --stroke (paper 001's cycles) or --path (your programme)."
@@ -123,8 +128,21 @@ def _presliding(args: argparse.Namespace) -> int:
     zipped = {}
     _window_option(args)
     if args.paper001:
+        args.taking(
+            "--paper001 runs the paper's own scenario (its balls and their materials, Table 1's loads, "
+            "strokes and mu, the programme of Fig. 6)",
+            "leave out --paper001 to run your own ball FILE",
+            options=("material", "material_youngs_modulus", "material_poissons_ratio", "path", "stroke")
+            + ("counter_body", "counter_body_youngs_modulus", "counter_body_poissons_ratio")
+            + ("friction_coefficient", "normal_force", "maps", *FILE_OPTIONS),
+        )
         keys, zipped = _paper001(command, args)
     else:
+        args.taking(
+            "without --paper001 the ball is FILE",
+            "add --paper001 for the paper's generated balls",
+            options=("ball", "pixels", "seed", "realisations", "normal_forces"),
+        )
         keys = _ball(command, args)
     keys |= options(args, "radius", "cycles", "steps_per_stroke", "tolerance")
     keys["coupling"] = (False if args.no_coupling else None, "--no-coupling")
@@ -136,7 +154,13 @@ def _presliding(args: argparse.Namespace) -> int:
     if zipped:
         command.zipped(index, zipped)
     command.realisations(index, args, *dict.fromkeys(zipped.get("topography", ([], None))[0]))
-    if args.measured is not None:
+    if args.measured is None:
+        args.taking(
+            "without --measured there is no loop to compare",
+            "add --measured LOOP.csv",
+            options=("measured_displacement_unit", "measured_force_unit", "measured_normal_force"),
+        )
+    else:
         command.compare(
             index,
             {"measured_loop": (str(args.measured.resolve()), "--measured")}
