@@ -263,3 +263,67 @@ def test_result_protocol_units_name_every_dimensional_scalar(curve):
     assert set(scalars) == set(IndentationResult.UNITS) | dimensionless | fractional
     for unit in IndentationResult.UNITS.values():
         assert prefixed_scale(1.0, unit)  # every unit is one roughcontact.units can show
+
+
+def _example_rows(depth_unit: str = "nm", load_unit: str = "mN") -> str:
+    """The synthetic HDPE curve of examples/ as CSV text (depth in nm, load in mN), header units as given."""
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[2] / "examples" / "paper001_indentation_hdpe.csv").read_text()
+    return text.replace("depth (nm)", f"depth ({depth_unit})").replace("load (mN)", f"load ({load_unit})")
+
+
+def test_a_unit_option_that_contradicts_the_header_is_refused_naming_the_cell(tmp_path):
+    path = _write(tmp_path, _example_rows())
+    with pytest.raises(InputError) as error:
+        read_indentation_csv(path, depth_unit="um")
+    assert error.value.field == "depth_unit"
+    assert error.value.problem == "'um' contradicts the header cell 'depth (nm)' of c.csv, which gives [nm]."
+    assert error.value.fix_in("cli").startswith("leave --depth-unit out: the column is read in nm")
+    # the header's own unit, typed again, is no contradiction
+    np.testing.assert_array_equal(
+        read_indentation_csv(path, depth_unit="nm").depth, read_indentation_csv(path).depth
+    )
+
+
+@pytest.mark.parametrize(
+    ("depth_unit", "load_unit", "column", "reached"),
+    [
+        ("m", "mN", "depth", "3.004 km"),  # nm labelled m: issue 45's 3 km and 967 pPa
+        ("nm", "kN", "load", "10 kN"),
+        ("fm", "mN", "depth", "3.004 pm"),
+        ("nm", "fN", "load", "10 fN"),
+    ],
+)
+def test_a_depth_or_load_no_indentation_reaches_is_refused(tmp_path, depth_unit, load_unit, column, reached):
+    path = _write(tmp_path, _example_rows(depth_unit, load_unit))
+    with pytest.raises(InputError) as error:
+        read_indentation_csv(path)
+    assert error.value.field == str(path)
+    assert f"the {column} column of c.csv, read in the unit of its header cell" in error.value.problem
+    assert f"reaches {reached}" in error.value.problem
+    assert error.value.fix.startswith(f"check the unit of the {column} column: correct its header cell")
+
+
+def test_a_wrong_unit_option_is_refused_as_implausible_naming_the_option(tmp_path):
+    path = _write(tmp_path, _example_rows().replace("depth (nm)", "depth"))
+    with pytest.raises(InputError) as error:
+        read_indentation_csv(path, depth_unit="m")
+    assert error.value.field == "depth_unit" and "read in 'm', reaches 3.004 km" in error.value.problem
+    assert (
+        error.value.fix_in("cli")
+        == "check the unit of the depth column: give the unit its values are in, e.g. --depth-unit nm."
+    )
+    assert read_indentation_csv(path, depth_unit="nm").depth.max() == pytest.approx(3.004e-6, rel=1e-3)
+
+
+def test_units_written_with_in_are_read(tmp_path):
+    path = _write(
+        tmp_path,
+        "time in s,depth in nm,load in mN\n" + "".join(f"{i},{i * 10},{i * 0.1}\n" for i in range(12)),
+    )
+    read = read_indentation_csv(path)
+    np.testing.assert_allclose(read.depth[:3], [0, 1e-8, 2e-8], rtol=1e-12, atol=0)
+    np.testing.assert_allclose(read.load[:3], [0, 1e-4, 2e-4], rtol=1e-12, atol=0)
+    assert split_header("time in contact") == ("time in contact", None)
+    assert split_header("x in µm") == ("x", "µm") and split_header("X_(microns)") == ("x_", "microns")

@@ -10,7 +10,7 @@ from roughcontact.analytic.mindlin import (
     masing_force,
     sliding_displacement,
 )
-from roughcontact.errors import InputError
+from roughcontact.errors import InputError, UnitError
 from roughcontact.experiment.friction_loop import (
     analyse_loop,
     eq9_force,
@@ -154,8 +154,9 @@ def test_csv_unit_invariance(tmp_path, clean):
         )
     )
     a = read_loop_csv(micro)
-    b = read_loop_csv(si, displacement_unit="m", force_unit="N")
+    b = read_loop_csv(si, displacement_unit="m", force_unit="N", time_unit="s")
     assert b.time is not None and a.time is None
+    assert read_loop_csv(si, displacement_unit="m", force_unit="N").time is None  # no unit: not read
     ra, rb = analyse_loop(a, None, P), analyse_loop(b, None, P)
     assert ra.branch.point_stiffness == pytest.approx(rb.branch.point_stiffness, rel=1e-9)
     assert ra.stroke == pytest.approx(rb.stroke, rel=1e-12)
@@ -163,6 +164,76 @@ def test_csv_unit_invariance(tmp_path, clean):
     with pytest.raises(InputError) as info:
         read_loop_csv(micro, displacement_unit="nm")
     assert info.value.field == "displacement_unit"
+    assert (
+        "'displacement [um]'" in info.value.problem
+        and "leave --displacement-unit out" in info.value.fix_in("cli")
+    )
+    # the same unit as the header's, typed, is no contradiction
+    same = read_loop_csv(micro, displacement_unit="µm", force_unit="mN")
+    np.testing.assert_array_equal(same.displacement, a.displacement)
+    np.testing.assert_array_equal(same.force, a.force)
+
+
+def _nm_newton_rows(path, force) -> str:
+    return "".join(f"{d * 1e9:.17g},{f:.17g}\n" for d, f in zip(path, force, strict=True))
+
+
+def test_no_unit_is_assumed_for_a_loop(tmp_path, clean):
+    """A loop in nm and N reads right when its header or the caller says so, and is refused otherwise."""
+    path, force, _ = clean
+    rows = _nm_newton_rows(path, force)
+    labelled, bare, plain = tmp_path / "labelled.csv", tmp_path / "bare.csv", tmp_path / "plain.csv"
+    labelled.write_text("displacement [nm],force [N]\n" + rows)
+    bare.write_text(rows)
+    plain.write_text("displacement,force\n" + rows)
+    expected = analyse_loop(path, force, P).mu
+    assert analyse_loop(read_loop_csv(labelled), None, P).mu == pytest.approx(expected, rel=1e-12)
+    assert analyse_loop(read_loop_csv(bare, "nm", "N"), None, P).mu == pytest.approx(expected, rel=1e-12)
+    assert analyse_loop(read_loop_csv(plain, "nm", "N"), None, P).mu == pytest.approx(expected, rel=1e-12)
+    with pytest.raises(InputError) as info:
+        read_loop_csv(bare)
+    assert info.value.field == "displacement_unit"
+    assert "no header" in info.value.problem and "displacement and force" in info.value.problem
+    assert "--displacement-unit um --force-unit mN" in info.value.fix_in("cli")
+    with pytest.raises(InputError) as info:
+        read_loop_csv(plain, displacement_unit="nm")
+    assert info.value.field == "force_unit" and "'force'" in info.value.problem
+    assert info.value.fix_in("study").endswith('force_unit = "mN".')
+    with pytest.raises(InputError) as info:
+        read_loop_csv(labelled, force_unit="mN")  # a typed unit that contradicts the header
+    assert info.value.field == "force_unit"
+    assert (
+        info.value.problem
+        == f"'mN' contradicts the header cell 'force [N]' of {labelled.name}, which gives [N]."
+    )
+
+
+@pytest.mark.parametrize(
+    ("header", "fields"),
+    [
+        ("displacement (nm);force (N)", {}),
+        ("delta/nm;F/N", {}),
+        ("displacement in nm;force in N", {}),
+        ("displacement [nm];force", {"force_unit": "N"}),
+    ],
+)
+def test_header_units_in_every_form(tmp_path, clean, header, fields):
+    path, force, _ = clean
+    file = tmp_path / "loop.csv"
+    file.write_text(header + "\n" + _nm_newton_rows(path, force).replace(",", ";"))
+    loop = read_loop_csv(file, **fields)
+    np.testing.assert_allclose(loop.displacement, path, rtol=1e-12, atol=1e-21)
+    np.testing.assert_allclose(loop.force, force, rtol=1e-12, atol=0)
+
+
+def test_a_header_unit_of_the_wrong_kind_is_refused_naming_the_cell(tmp_path, clean):
+    path, force, _ = clean
+    file = tmp_path / "loop.csv"
+    file.write_text("displacement [nm],force [mm]\n" + _nm_newton_rows(path, force))
+    with pytest.raises(UnitError) as info:
+        read_loop_csv(file)
+    assert info.value.field == "force_unit" and "'force [mm]'" in info.value.problem
+    assert "'force [mN]'" in info.value.fix
 
 
 def test_example_csv_reproduces_table1():

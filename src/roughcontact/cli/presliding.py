@@ -290,8 +290,13 @@ def add_commands(commands) -> None:
         "measured or synthetic (examples/paper001_measured_loop.csv is synthetic), and tables and legends "
         "name it so",
     )
-    presliding.add_argument("--measured-displacement-unit", default="um")
-    presliding.add_argument("--measured-force-unit", default="mN")
+    presliding.add_argument(
+        "--measured-displacement-unit",
+        help="unit of the --measured loop's displacement where its header gives none",
+    )
+    presliding.add_argument(
+        "--measured-force-unit", help="unit of the --measured loop's force where its header gives none"
+    )
     presliding.add_argument("--measured-normal-force", help="F0 of the --measured loop (default: the cases')")
     add_output_options(presliding)
 
@@ -303,10 +308,20 @@ def add_commands(commands) -> None:
         "Analyse the last loop of a friction record (CSV of displacement and force) as paper 001 "
         "does (study model 'loop_analysis'); -o writes the figure of the loop, its fits and points.",
     )
-    analysis.add_argument("file", type=Path, help="CSV with displacement and force columns")
+    analysis.add_argument(
+        "file",
+        type=Path,
+        help="CSV with displacement and force columns, units in the header ('displacement [um],force [mN]'); "
+        "its '# origin:' line says whether it is measured or synthetic, and the outputs call it so",
+    )
     analysis.add_argument("--normal-force", required=True, help="F0, e.g. '25 mN'")
-    analysis.add_argument("--displacement-unit", default="um")
-    analysis.add_argument("--force-unit", default="mN")
+    analysis.add_argument(
+        "--displacement-unit",
+        help="unit of the displacement column where its header gives none, e.g. um (no default)",
+    )
+    analysis.add_argument(
+        "--force-unit", help="unit of the force column where its header gives none, e.g. mN (no default)"
+    )
     analysis.add_argument(
         "--branch", choices=("increasing", "decreasing"), default="increasing", help="branch of the points"
     )

@@ -176,14 +176,17 @@ def read_programme_csv(path: str | Path, *, delimiter: str | None = None) -> Pro
     for index, (name, unit) in enumerate(zip(table.names, table.units, strict=True)):
         if name == "step" and unit is None:
             continue
+        cell = table.header[index]  # as written, for the messages
         if unit is None:
-            raise InputError("path", f"{path}: column {name!r} has no unit.", _PATH_FIX)
+            raise InputError("path", f"{path}: the header cell {cell!r} has no unit.", _PATH_FIX)
         factor, dimension = unit_factor(unit)
         if dimension == DIMENSIONS["time"]:
             continue
         if dimension not in CONTROLS:
             raise InputError(
-                "path", f"{path}: column {name!r} is in [{unit}], neither a length nor a force.", _PATH_FIX
+                "path",
+                f"{path}: the header cell {cell!r} is in [{unit}], neither a length nor a force.",
+                _PATH_FIX,
             )
         if name.strip().lower() in NORMAL_NAMES:
             normal.append((index, float(factor), NORMAL_CONTROLS[dimension], name))

@@ -42,7 +42,8 @@ Energy
     The area enclosed by the last loop, ``|closed-path integral of F d(delta)|`` (trapezoids; the
     shoelace formula closes the path with a straight segment).
 
-All quantities are SI inside (m, N, J, N/m); :func:`read_loop_csv` converts the file's units once.
+All quantities are SI inside (m, N, J, N/m); :func:`read_loop_csv` converts the file's units once
+(from its header, or the units the caller gives; none is assumed).
 
 References
 ----------
@@ -68,11 +69,10 @@ from typing import ClassVar
 import numpy as np
 from scipy.optimize import OptimizeWarning, curve_fit
 
-from .._text_table import read_text_table
+from .._text_table import Column, column_factors, read_text_table
 from ..display_html import NotebookDisplay
 from ..errors import InputError
 from ..origin import MEASURED, DataOrigin
-from ..units import quantity
 
 __all__ = [
     "BranchAnalysis",
@@ -125,10 +125,6 @@ _FORCE_NAMES = ("force", "friction", "f_x", "fx", "f")
 _TIME_NAMES = ("time", "t")
 
 
-def _factor(unit: str, dimension: str, field_name: str) -> float:
-    return quantity(f"1 {unit}", dimension, field=field_name)
-
-
 def _find_column(names: list[str], candidates: tuple[str, ...]) -> int | None:
     for candidate in candidates:
         for index, name in enumerate(names):
@@ -143,27 +139,32 @@ def _find_column(names: list[str], candidates: tuple[str, ...]) -> int | None:
 
 def read_loop_csv(
     path: str | Path,
-    displacement_unit: str = "um",
-    force_unit: str = "mN",
+    displacement_unit: str | None = None,
+    force_unit: str | None = None,
     *,
-    time_unit: str = "s",
+    time_unit: str | None = None,
     delimiter: str | None = None,
 ) -> Loop:
     """Read a friction loop from a CSV (or whitespace-separated) text file.
 
     Lines starting with ``#`` are comments. The first data line is a header when it holds a
     non-numeric entry; columns are then found by name (``displacement``/``delta``/``x``,
-    ``force``/``friction``/``F``, optional ``time``/``t``; case-insensitive; a unit in brackets,
-    ``displacement [um]``, must agree with the unit arguments). Without a header the columns are
-    (displacement, force) or, with three columns, (time, displacement, force).
+    ``force``/``friction``/``F``, optional ``time``/``t``; case-insensitive). Without a header
+    the columns are (displacement, force) or, with three columns, (time, displacement, force).
+
+    No unit is assumed. Each column takes its unit from its header cell (``displacement [um]``,
+    ``force (N)``, ``time/s``, ``force in mN``) or, where the header gives none (or the file has
+    no header), from the unit argument; a displacement or force column with neither is refused,
+    and so is an argument that contradicts the header cell (naming the cell as written). A time
+    column without a unit is not read (the analysis does not use the time).
 
     Parameters
     ----------
     path : str or Path
         The file.
-    displacement_unit, force_unit, time_unit : str
-        Units of the columns (``"um"``, ``"nm"``, ``"m"``; ``"mN"``, ``"uN"``, ``"N"``; ``"s"``),
-        converted to SI once, via :mod:`roughcontact.units`.
+    displacement_unit, force_unit, time_unit : str, optional
+        Units of the columns whose header cell gives none (``"um"``, ``"nm"``, ``"m"``; ``"mN"``,
+        ``"uN"``, ``"N"``; ``"s"``), converted to SI once, via :mod:`roughcontact.units`.
     delimiter : str, optional
         Column separator; detected (comma, semicolon, tab or whitespace) when not given.
 
@@ -176,35 +177,29 @@ def read_loop_csv(
     Raises
     ------
     InputError
-        Missing file, unknown columns, non-numeric or non-finite values, too few rows, or a
-        header unit that contradicts the arguments. UnitError for an unknown or wrong unit.
+        Missing file, unknown columns, non-numeric or non-finite values, too few rows, a
+        displacement or force column without a unit, or a unit argument that contradicts the
+        header. UnitError for an unknown unit, or one of the wrong dimension.
+
+    Examples
+    --------
+    A file whose header says ``displacement [nm],force [N]`` needs no argument; a file without
+    units in its header needs both:
+
+    >>> read_loop_csv("loop.csv", displacement_unit="nm", force_unit="N")  # doctest: +SKIP
     """
-    length = _factor(displacement_unit, "length", "displacement_unit")
-    newton = _factor(force_unit, "force", "force_unit")
-    second = _factor(time_unit, "time", "time_unit")
     path = Path(path)
     table = read_text_table(path, expected="displacement,force rows", delimiter=delimiter)
-    names, units = table.names, table.units
+    names = table.names
     if names is not None:
         i_d, i_f, i_t = (_find_column(names, c) for c in (_DISPLACEMENT_NAMES, _FORCE_NAMES, _TIME_NAMES))
         if i_d is None or i_f is None or i_d == i_f:
             raise InputError(
                 "path",
-                f"{path}: cannot find displacement and force columns in header {names}.",
-                "name the columns 'displacement' and 'force' (optionally 'time').",
+                f"{path}: cannot find displacement and force columns in header {table.header}.",
+                "name the columns 'displacement' and 'force' (optionally 'time'), each with its unit, "
+                "e.g. 'displacement [um],force [mN]'.",
             )
-        for index, unit, dimension, factor, argument in (
-            (i_d, displacement_unit, "length", length, "displacement_unit"),
-            (i_f, force_unit, "force", newton, "force_unit"),
-            (i_t, time_unit, "time", second, "time_unit"),
-        ):
-            stated = units[index] if index is not None else None
-            if stated and not math.isclose(_factor(stated, dimension, argument), factor, rel_tol=1e-12):
-                raise InputError(
-                    argument,
-                    f"{unit!r} contradicts the header of {path}, which says [{stated}].",
-                    f"pass {argument}={stated!r}.",
-                )
     elif table.width == 2:
         i_d, i_f, i_t = 0, 1, None
     elif table.width == 3:
@@ -213,11 +208,21 @@ def read_loop_csv(
         raise InputError(
             "path",
             f"{path} has {table.width} columns and no header.",
-            "give a header naming the displacement and force columns.",
+            "give a header naming the displacement and force columns with their units, e.g. "
+            "'displacement [um],force [mN]'.",
         )
+    length, newton, second = column_factors(
+        table,
+        [
+            Column(i_d, "displacement_unit", displacement_unit, "length", "um"),
+            Column(i_f, "force_unit", force_unit, "force", "mN"),
+            Column(i_t, "time_unit", time_unit, "time", "s", required=False),
+        ],
+        path,
+    )
     try:
         values = np.array([[float(row[i]) for i in (i_d, i_f)] for row in table.rows], dtype=float)
-        times = None if i_t is None else np.array([float(row[i_t]) for row in table.rows]) * second
+        times = None if second is None else np.array([float(row[i_t]) for row in table.rows]) * second
     except (ValueError, IndexError) as error:
         raise InputError(
             "path", f"{path}: unreadable data row ({error}).", "give numbers in every column."

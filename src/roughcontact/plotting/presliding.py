@@ -517,7 +517,12 @@ def plot_lateral_stiffness(
 
 
 def plot_loop_analysis(
-    data: Mapping[str, np.ndarray], scalars: Mapping, *, title: str = "", ax: Axes | None = None
+    data: Mapping[str, np.ndarray],
+    scalars: Mapping,
+    *,
+    title: str = "",
+    ax: Axes | None = None,
+    record: str = "case",
 ):
     """Draw the analysis of a friction loop: the case, its last loop, both eq. 9 fits, the points (Fig. 10).
 
@@ -534,6 +539,8 @@ def plot_loop_analysis(
         Above the figure's own line (mu and the stroke).
     ax : Axes, optional
         Where to draw.
+    record : str
+        The whole record's legend entry (``"synthetic record"``: its origin, where known).
 
     Returns
     -------
@@ -544,7 +551,7 @@ def plot_loop_analysis(
     if "displacement" in data:
         displacement, force = np.asarray(data["displacement"]), np.asarray(data["force"])
         last = np.asarray(data["in_last_loop"]).astype(bool)
-        ax.plot(displacement / um, force / mn, "-", color="0.75", lw=0.8, label="case")
+        ax.plot(displacement / um, force / mn, "-", color="0.75", lw=0.8, label=record)
         ax.plot(displacement[last] / um, force[last] / mn, "k-", lw=1.0, label="last loop")
     branches = np.asarray(data["fit_branch"])
     for number in np.unique(branches):
@@ -590,15 +597,23 @@ def loop_analysis_figure(cases):
     """Draw each case (grey), its last loop, the eq. 9 fits and the points with their K_L (Fig. 10).
 
     Cases of the ``loop_analysis`` model (or :class:`~roughcontact.experiment.friction_loop.LoopAnalysis`
-    results through :func:`~roughcontact.plotting.cases.as_cases`), one panel each, up to four.
+    results through :func:`~roughcontact.plotting.cases.as_cases`), one panel each, up to four. A
+    record is called what its file's ``# origin:`` line says (the case's stored ``origin``): a
+    synthetic loop is never labelled measured.
     """
 
     def draw(case, data, ax):
         force = case.scalars["normal_force"] * 1e3
         source = case.parameters.get("loop")
-        title = f"{Path(source).name}, F0 = {force:g} mN" if source else f"{case.label}, F0 = {force:g} mN"
+        name = Path(source).name if source else case.label
+        origin = data.attrs.get("origin")
+        title = f"{origin} loop {name}, F0 = {force:g} mN" if origin else f"{name}, F0 = {force:g} mN"
         plot_loop_analysis(
-            {name: data[name].values for name in data.variables}, case.scalars, title=title, ax=ax
+            {key: data[key].values for key in data.variables},
+            case.scalars,
+            title=title,
+            ax=ax,
+            record=f"{origin} record" if origin else "case",
         )
 
     return panel_per_case(cases, draw)

@@ -4,8 +4,12 @@
 (:func:`roughcontact._text_table.read_text_table`: comma, semicolon, tab or whitespace
 separated, ``#`` comment lines), finds the depth, load and optional time columns by their
 header names and converts their units to SI once, through :mod:`roughcontact.units`.
-The header gives the units as ``depth (nm)``, ``load [mN]`` or ``time/s``; the ``*_unit``
-arguments override it, the ``*_column`` arguments name columns the auto-detection misses.
+The header gives the units as ``depth (nm)``, ``load [mN]``, ``time/s`` or ``depth in nm``; the
+``*_unit`` arguments give the unit of a column whose header cell has none (one that contradicts
+the header is refused, naming the cell: no unit is assumed, none overridden), the ``*_column``
+arguments name columns the auto-detection misses. A curve whose deepest point or largest load no
+indentation reaches (:data:`DEPTH_RANGE`, :data:`LOAD_RANGE`: a depth in nm read as metres is
+kilometres deep) is refused, naming the column and its unit.
 
 :func:`write_indentation_csv` writes a curve back with ``time (s)``, ``depth (nm)``,
 ``load (mN)`` columns (units to choose) and ``#`` comment lines, in a form
@@ -19,10 +23,18 @@ from pathlib import Path
 
 import numpy as np
 
-from ..._text_table import read_text_table
+from ..._text_table import Column, column_factors, read_text_table
 from ...errors import InputError
-from ...units import quantity
+from ...units import format_si, quantity
 from .curve import IndentationCurve
+
+DEPTH_RANGE = (1e-10, 1e-3)
+"""Largest depth [m] an indentation curve may reach: from an atom's size (0.1 nm) to 1 mm.
+
+Nanoindentation reaches nanometres to tens of micrometres; outside this range the unit of the
+depth column is wrong (a depth in nm labelled m reads as kilometres), not the indentation."""
+LOAD_RANGE = (1e-12, 100.0)
+"""Largest load [N] an indentation curve may reach: from 1 pN (an AFM tip) to 100 N (micro-hardness)."""
 
 # header names recognised for each column (lower case, units stripped, "_" and "-" read as spaces)
 _COLUMN_NAMES = {
@@ -57,8 +69,11 @@ def read_indentation_csv(
     Lines starting with ``#`` are comments. The first other line is the header; columns are
     found by their names (depth/displacement/h, load/force/P, time/t; case, spaces, ``_`` and
     ``-`` ignored) unless named explicitly. Units come from the header, as in ``depth (nm)``,
-    ``load [mN]`` or ``time/s``, and a ``*_unit`` argument overrides them. Comma, semicolon and
-    tab delimiters are recognised, else whitespace (then no spaces inside a column name).
+    ``load [mN]``, ``time/s`` or ``depth in nm``; a ``*_unit`` argument gives the unit of a column
+    whose header cell has none, and one that contradicts the header cell is refused (no unit is
+    assumed). Comma, semicolon and tab delimiters are recognised, else whitespace (then no spaces
+    inside a column name). A deepest point or a largest load outside :data:`DEPTH_RANGE` or
+    :data:`LOAD_RANGE` is refused: the unit of that column is wrong.
 
     Parameters
     ----------
@@ -67,7 +82,7 @@ def read_indentation_csv(
     depth_column, load_column, time_column : str, optional
         Header of the column (without its unit) where auto-detection does not find it.
     depth_unit, load_unit, time_unit : str, optional
-        Unit strings (``"nm"``, ``"mN"``, ``"s"``), overriding the header's.
+        Unit strings (``"nm"``, ``"mN"``, ``"s"``) of columns whose header cell gives none.
 
     Returns
     -------
@@ -78,7 +93,8 @@ def read_indentation_csv(
     ------
     InputError
         Missing file, no header, a depth or load column that cannot be found, a column without
-        a unit, a cell that is not a number.
+        a unit, a unit argument that contradicts the header, a cell that is not a number, a
+        depth or load no indentation reaches.
     UnitError
         An unknown unit, or one of the wrong dimension.
     """
@@ -115,8 +131,8 @@ def read_indentation_csv(
         )
     names = [_clean_name(name) for name in table.names]
     wanted = {"depth": depth_column, "load": load_column, "time": time_column}
-    overrides = {"depth": depth_unit, "load": load_unit, "time": time_unit}
-    columns: dict[str, np.ndarray | None] = {}
+    units = {"depth": depth_unit, "load": load_unit, "time": time_unit}
+    indices: dict[str, int | None] = {}
     for quantity_name, explicit in wanted.items():
         option = f"{quantity_name}_column"
         if explicit is not None:
@@ -125,28 +141,30 @@ def read_indentation_csv(
                 raise InputError(
                     option, f"no column {explicit!r} in {path.name} (columns: {names}).", "name one of them."
                 )
-            index = names.index(key)
-        else:
-            found = [i for i, name in enumerate(names) if name in _COLUMN_NAMES[quantity_name]]
-            if not found:
-                if quantity_name == "time":
-                    columns["time"] = None
-                    continue
-                raise InputError(
-                    option,
-                    f"no {quantity_name} column recognised in {path.name} (columns: {names}).",
-                    f"name it with {option}= (CLI: --{quantity_name}-column).",
-                )
-            index = found[0]
-        unit = overrides[quantity_name] or table.units[index]
-        if not unit:
+            indices[quantity_name] = names.index(key)
+            continue
+        found = [i for i, name in enumerate(names) if name in _COLUMN_NAMES[quantity_name]]
+        if not found and quantity_name != "time":
             raise InputError(
-                f"{quantity_name}_unit",
-                f"column {header[index]!r} of {path.name} has no unit.",
-                f"give it in the header, e.g. '{quantity_name} ({_EXAMPLE_UNITS[quantity_name]})', or pass "
-                f"{quantity_name}_unit= (CLI: --{quantity_name}-unit).",
+                option,
+                f"no {quantity_name} column recognised in {path.name} (columns: {names}).",
+                f"name it with {option}= (CLI: --{quantity_name}-column).",
             )
-        factor = quantity(f"1 {unit}", _DIMENSIONS[quantity_name], field=f"{quantity_name}_unit")
+        indices[quantity_name] = found[0] if found else None
+    factors = column_factors(
+        table,
+        [
+            Column(indices[q], f"{q}_unit", units[q], _DIMENSIONS[q], _EXAMPLE_UNITS[q])
+            for q in ("depth", "load", "time")
+        ],
+        path,
+    )
+    columns: dict[str, np.ndarray | None] = {}
+    for quantity_name, factor in zip(("depth", "load", "time"), factors, strict=True):
+        index = indices[quantity_name]
+        if index is None:
+            columns[quantity_name] = None
+            continue
         values = []
         for number, row in enumerate(table.rows, start=1):
             try:
@@ -158,7 +176,45 @@ def read_indentation_csv(
                     "remove text rows below the header, or mark them as comments with '#'.",
                 ) from None
         columns[quantity_name] = np.asarray(values) * factor
+    for quantity_name, (low, high) in (("depth", DEPTH_RANGE), ("load", LOAD_RANGE)):
+        _plausible(
+            columns[quantity_name], quantity_name, low, high, header[indices[quantity_name]], units, path
+        )
     return IndentationCurve(columns["depth"], columns["load"], columns["time"], source=path.name)
+
+
+def _plausible(
+    values, quantity_name: str, low: float, high: float, cell: str, units: dict, path: Path
+) -> None:
+    """Refuse a depth or load column whose largest value no indentation reaches: its unit is wrong."""
+    finite = np.abs(values[np.isfinite(values)])
+    if finite.size == 0:
+        return
+    largest = float(finite.max())
+    if low <= largest <= high:
+        return
+    si = "m" if quantity_name == "depth" else "N"
+    option = f"{quantity_name}_unit"
+    given = units[quantity_name]
+    read = f"read in {given!r}" if given else f"read in the unit of its header cell {cell!r}"
+    side = "above" if largest > high else "below"
+    problem = (
+        f"the {quantity_name} column of {path.name}, {read}, reaches {format_si(largest, si)}, {side} "
+        f"what an indentation reaches ({format_si(low, si)} to {format_si(high, si)})."
+    )
+    example = _EXAMPLE_UNITS[quantity_name]
+    check = f"check the unit of the {quantity_name} column"
+    if given:
+        fixes = {
+            "python": f'{check}: give the unit its values are in, e.g. {option}="{example}".',
+            "study": f'{check}: give the unit its values are in, e.g. {option} = "{example}".',
+            "cli": f"{check}: give the unit its values are in, e.g. --{quantity_name}-unit {example}.",
+        }
+    else:
+        own = f"{check}: correct its header cell {cell!r} to the unit its values are in, e.g. "
+        own += f"'{quantity_name} ({example})'."
+        fixes = {"python": own}
+    raise InputError(option if given else str(path), problem, fixes["python"], fixes=fixes)
 
 
 def write_indentation_csv(

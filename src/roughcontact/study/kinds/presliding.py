@@ -239,8 +239,9 @@ class PreslidingCompare(Strict):
         CSV of displacement and force (:func:`roughcontact.experiment.friction_loop.read_loop_csv`:
         columns found by name, ``#`` comments, ``# origin: synthetic`` for a synthetic loop),
         relative to the study file.
-    displacement_unit, force_unit : str
-        Units of its columns (default um and mN).
+    displacement_unit, force_unit : str or None
+        Units of its columns where its header gives none (no default: a column without a unit
+        in its header needs one); one that contradicts the header is refused, naming the cell.
     normal_force : float
         F0 of the compared loop [N]; the loop is compared with the cases at this force.
     sample : str or None
@@ -248,10 +249,32 @@ class PreslidingCompare(Strict):
     """
 
     measured_loop: Path
-    displacement_unit: LengthUnit = "um"
-    force_unit: ForceUnit = "mN"
+    displacement_unit: LengthUnit | None = None
+    force_unit: ForceUnit | None = None
     normal_force: Annotated[Force, _Positive]
     sample: str | None = None
+
+    def check(self) -> None:
+        """Read the loop at validation time, so a file without units fails before the cases run.
+
+        Raises
+        ------
+        InputError
+            As :func:`roughcontact.experiment.friction_loop.read_loop_csv`; the command line's fix
+            names ``presliding``'s own options (``--measured-displacement-unit``).
+        """
+        from ...errors import InputError
+        from ...experiment.friction_loop import read_loop_csv
+
+        try:
+            read_loop_csv(self.measured_loop, self.displacement_unit, self.force_unit)
+        except InputError as error:
+            cli = error.fix_in("cli") or ""
+            for unit in ("displacement", "force"):
+                cli = cli.replace(f"--{unit}-unit", f"--measured-{unit}-unit")
+            raise type(error)(
+                error.field, error.problem, error.fix, fixes=error.fixes | {"cli": cli}
+            ) from None
 
 
 def check(parameters: PreslidingParameters) -> None:
