@@ -65,3 +65,22 @@ class SolverResult(Result, Protocol):
 def units_of(result: Any) -> dict[str, str]:
     """Return the ``UNITS`` table of a result (instance or class) as a plain dict ({} without one)."""
     return dict(getattr(result, "UNITS", None) or {})
+
+
+LEVELLING = "levelling"
+"""The scalar that says how a measured surface was levelled before a solver used it (a label)."""
+
+
+def levelling_of(topography: Any) -> dict[str, str]:
+    """Return ``{"levelling": mode}`` for a surface whose levelling is recorded, else ``{}``.
+
+    A surface read from a file is levelled as it is read (``read_topography``'s ``detrend``, the
+    commands' ``--detrend``, a study's ``detrend``), and its ``info['detrend']`` records how:
+    ``"plane"``, ``"none"`` (the tilt kept), ... . The results computed on it add this label to
+    their :meth:`~Result.scalars`, so that a number is never read without knowing whether its scan
+    was levelled (``--json``, the tables and a notebook's display show it). A generated or
+    hand-made surface records none, and its results have no such entry.
+    """
+    info = getattr(topography, "info", None) or {}
+    mode = info.get("detrend")
+    return {} if mode is None else {LEVELLING: str(mode)}

@@ -148,7 +148,10 @@ def test_level_twice_changes_nothing(mode, tolerance):
 
 def test_level_none_is_the_identity_and_unknown_modes_are_refused():
     surface = self_affine((16, 16), 1e-6, hurst=0.8, rms_height=1e-9, seed=1)
-    assert level(surface, "none") is surface
+    kept = level(surface, "none")
+    assert np.array_equal(kept.heights, surface.heights) and kept.size == surface.size and kept.periodic
+    assert kept.info == {**surface.info, "detrend": "none"}  # the levelling is recorded, "none" too
+    assert level(surface, "plane").info["detrend"] == "plane"
     with pytest.raises(InputError, match="detrend.*choose one of none, mean, plane, curvature, sphere"):
         level(surface, "tilt")
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -16,9 +17,10 @@ from .._json import json_ready
 from ..errors import InputError
 from ..topography import Topography
 from ..topography.io import MAX_FILLED, channel_of, channel_words, max_filled_allowing
+from ..topography.plausible import doubts, is_flat
 from ..topography.process import LEVELLING, SPECK
 from ..units import format_si
-from .options import dpi_argument, levelling, new_command, read_file, refuse_unused
+from .options import dpi_argument, new_command, read_file, refuse_unused
 
 COMMANDS = {
     "inspect": "print channels, grid, physical size, units and statistics of a file",
@@ -39,7 +41,9 @@ def describe(topography: Topography, undefined=None) -> dict:
     ``statistics`` stays a mapping of names to numbers. With ``undefined`` (the file's points
     without a height, not filled) the statistics are left out (they need every point) and the
     undefined points are described instead: how many, the fraction, their bounding box [m] and
-    how many separate regions they form.
+    how many separate regions they form. ``flat`` says whether the surface is flat
+    (:func:`~roughcontact.topography.plausible.is_flat`) and ``notes`` what is implausible about it
+    (:func:`~roughcontact.topography.plausible.doubts`, in the options' words), as printed.
     """
     from scipy import ndimage
 
@@ -56,6 +60,8 @@ def describe(topography: Topography, undefined=None) -> dict:
         "undefined_points_filled": topography.info.get("undefined_points_filled", 0),
         "specks": 0 if topography.specks is None else int(np.count_nonzero(topography.specks)),
         "specks_removed": topography.info.get("specks_removed", 0),
+        "flat": undefined is None and is_flat(topography.heights),
+        "notes": [doubt.said("cli") for doubt in doubts(topography)] if undefined is None else [],
     }
     if undefined is None:
         statistics = summary(topography)
@@ -124,6 +130,10 @@ def format_description(description: dict) -> str:
         )
     if "detrend" in description:
         lines.append(f"levelling      {LEVELLING[description['detrend']]}")
+    if description.get("flat"):
+        lines.append(
+            "flat           yes: no roughness (statistics 0, no summits); a contact is the flat punch's"
+        )
     if "statistics" in description:
         lines.append("statistics")
     for key, value in description.get("statistics", {}).items():
@@ -141,8 +151,9 @@ def _inspect(args: argparse.Namespace) -> int:
     args.taking(FILLED_AS_READ, "use it with a contact command", options=("exclude_filled",))
     refuse_unused(args)
     description = describe(topography, undefined)
+    _notes(description["notes"], args.file)
     description["file"] = str(args.file)
-    description["detrend"] = levelling(args)
+    description["detrend"] = topography.info["detrend"]
     description["format"] = topography.info.get("file_format")
     description["channels"] = [
         {
@@ -170,6 +181,12 @@ def _inspect(args: argparse.Namespace) -> int:
         print(f" {marker}{c.index:>2}  {c.name:<24} {grid:<12} {size:<24} {holds}")
     print(format_description(description))
     return 0
+
+
+def _notes(notes: list[str], file: Path) -> None:
+    """Print what is implausible about FILE's surface, one note a line on stderr (as the models' commands)."""
+    for note in notes:
+        print(f"roughcontact: note: {file.name}: {note}", file=sys.stderr)
 
 
 def _check_figure_file(path: Path, overwrite: bool) -> None:
@@ -212,6 +229,8 @@ def _plot(args: argparse.Namespace) -> int:
     dpi = args.dpi
     args.taking(FILLED_AS_READ, "use it with a contact command", options=("exclude_filled",))
     refuse_unused(args)
+    if undefined is None:
+        _notes([doubt.said("cli") for doubt in doubts(topography)], args.file)
     figure = plot_overview(topography, undefined=undefined)
     args.output.parent.mkdir(parents=True, exist_ok=True)
     figure.savefig(args.output, dpi=dpi)

@@ -19,6 +19,7 @@ import scipy
 
 from ..errors import InputError
 from ..units import format_si
+from .plausible import FLAT
 from .surface import Topography
 
 
@@ -265,28 +266,77 @@ def detrend(topography: Topography, mode: str = "plane") -> Topography:
     )
 
 
+def default_levelling(periodic: bool) -> str:
+    """Return the levelling of a measured scan that names none: ``"plane"``, ``"mean"`` if ``periodic``.
+
+    The one default of every door: ``read_topography``, the commands' ``--detrend`` and a study
+    file's ``detrend``. A plane would make a periodic surface's opposite edges disagree.
+    """
+    return "mean" if periodic else "plane"
+
+
+def check_levelling(mode: str, periodic: bool) -> str:
+    """Return ``mode`` after checking that it is one of :data:`LEVELLING` and keeps a periodic surface so.
+
+    Raises
+    ------
+    InputError
+        (field ``detrend``) an unknown levelling, or one that removes a background from a periodic
+        surface (which then no longer repeats).
+    """
+    if mode not in LEVELLING:
+        raise InputError("detrend", f"unknown levelling {mode!r}.", f"choose one of {', '.join(LEVELLING)}.")
+    if periodic and mode not in ("none", "mean"):
+        raise InputError(
+            "detrend",
+            f"{mode} removes a background from a periodic surface, which then no longer repeats.",
+            "use detrend='mean' (or 'none') for a periodic surface, or read it with periodic=False.",
+            fixes={
+                "cli": "use --detrend mean (or none) for a periodic surface, or leave --periodic out.",
+                "study": "use detrend = 'mean' (or 'none') for a periodic surface, or leave periodic out.",
+            },
+        )
+    return mode
+
+
 def level(topography: Topography, mode: str) -> Topography:
     """Remove the background ``mode`` names (one of :data:`LEVELLING`) from a measured scan.
 
     ``"none"`` returns the surface as read; ``"mean"``, ``"plane"`` and ``"curvature"`` are
     :func:`detrend`; ``"sphere"`` is :func:`remove_sphere` (its fitted radius is recorded in
-    ``info['history']``). The commands and study files level measured scans with ``"plane"``
-    unless told otherwise: the tilt of a raw AFM scan is an artefact of mounting, and left in it
-    decides where a flat touches (issue 15: SurfaceTopography's ``mi-1.mi`` touches along one edge,
-    5.6 % contact raw against 10.1 % levelled).
+    ``info['history']``). The commands, study files and ``read_topography`` level measured scans
+    with ``"plane"`` unless told otherwise (:func:`default_levelling`): the tilt of a raw AFM scan
+    is an artefact of mounting, and left in it decides where a flat touches (issue 15:
+    SurfaceTopography's ``mi-1.mi`` touches along one edge, 5.6 % contact raw against 10.1 %
+    levelled).
+
+    ``info['detrend']`` records ``mode`` (``"none"`` included), as the commands' ``--json`` and a
+    study's provenance name it; the results of the solvers show it. A surface that levelling
+    leaves flat (a constant or a perfect plane: what remains varies by no more than
+    :data:`~roughcontact.topography.plausible.FLAT` of the heights' magnitude, the round-off of
+    the fit) is returned as exactly flat, every height 0, with the step in ``info['history']``:
+    its round-off would otherwise read as a roughness of 1e-24 m with summits of gigametres.
 
     Raises
     ------
     InputError
         Unknown ``mode`` (named ``detrend``, the option and study key that set it).
     """
-    if mode not in LEVELLING:
-        raise InputError("detrend", f"unknown levelling {mode!r}.", f"choose one of {', '.join(LEVELLING)}.")
+    check_levelling(mode, periodic=False)
+    info = {**topography.info, "detrend": mode}
     if mode == "none":
-        return topography
-    if mode == "sphere":
-        return remove_sphere(topography)[0]
-    return detrend(topography, mode)
+        return topography.with_heights(topography.heights, info=info)
+    levelled = remove_sphere(topography)[0] if mode == "sphere" else detrend(topography, mode)
+    levelled = levelled.with_heights(levelled.heights, info={**levelled.info, "detrend": mode})
+    magnitude = float(np.max(np.abs(topography.heights)))
+    leftover = float(np.max(np.abs(levelled.heights)))
+    if leftover == 0 or not leftover <= FLAT * magnitude:
+        return levelled
+    step = (
+        f"flat: levelled heights are {leftover:.3g} m at most, round-off of their magnitude "
+        f"{magnitude:.3g} m (at most {FLAT:g} of it): set to 0"
+    )
+    return levelled.with_heights(np.zeros(topography.shape), step=step)
 
 
 def remove_sphere(topography: Topography, *, fit: str = "sphere") -> tuple[Topography, float]:

@@ -69,6 +69,7 @@ from scipy import fft
 
 from ..checks import positive
 from ..errors import InputError
+from .plausible import is_flat
 from .surface import Topography, topography_argument
 
 __all__ = [
@@ -843,6 +844,11 @@ def summary(topography: Topography) -> dict[str, float]:
     skewness and kurtosis of a flat surface, and the McCool entries when the moments give
     alpha < 0.8968 or a zero moment.
 
+    A flat surface (:func:`~roughcontact.topography.plausible.is_flat`: its heights vary by
+    round-off of their magnitude at most) has every amplitude, slope, curvature and moment 0 and
+    none of the entries that need a roughness (skewness, kurtosis, McCool's summits): computed, its
+    round-off would read as a roughness of 1e-25 m with summits of gigametres.
+
     Parameters
     ----------
     topography : Topography
@@ -852,6 +858,10 @@ def summary(topography: Topography) -> dict[str, float]:
     -------
     dict of str to float
     """
+    if is_flat(topography.heights):
+        areal = ("Sa", "Sq", "Sz", "Sdq", "Sdr") if topography.dim == 2 else ()
+        names = (*areal, "Ra", "Rq", "Rt", "Rdq", "rms_slope", "rms_curvature", "m0", "m2", "m4")
+        return dict.fromkeys(names, 0.0)
     result = {}
     slope = rms_slope(topography)
     if topography.dim == 2:

@@ -29,6 +29,29 @@ import numpy as np
 from ..checks import flag, no_string
 from ..errors import InputError
 
+LARGEST = 1e100
+"""Largest magnitude of a height or a physical size [m] that roughcontact computes with.
+
+Beyond it float64 overflows in the sums every surface needs: the squares of its heights, slopes
+and curvatures summed over a grid of up to 1e10 points with pixels down to a femtometre stay below
+1e270 (float64 ends at 1.8e308); a height of 1e300 m already overflows its own square. Such a
+number is no height (a typo, or an instrument's marker of a missing point) and is refused where
+it is read, naming the point."""
+
+
+def largest_point(values: np.ndarray) -> tuple[tuple[int, ...], float] | None:
+    """Return the index and the value of the first value beyond :data:`LARGEST` in magnitude (None if none).
+
+    NaN (an undefined point) is not beyond it.
+    """
+    with np.errstate(invalid="ignore"):
+        beyond = np.abs(values) > LARGEST
+    if not beyond.any():
+        return None
+    index = tuple(int(i) for i in np.argwhere(beyond)[0])
+    return index, float(values[index])
+
+
 KEEP = object()
 """Default of :meth:`Topography.with_heights`' masks: keep the present ones (None removes them)."""
 
@@ -81,8 +104,9 @@ class Topography:
     Raises
     ------
     InputError
-        Empty or non-finite heights, a size that is not positive and finite, or a size
-        whose number of values does not match the number of axes, masks of another shape.
+        Empty or non-finite heights, a height beyond :data:`LARGEST` in magnitude, a size that is
+        not positive and finite (or beyond :data:`LARGEST`), or a size whose number of values does
+        not match the number of axes, masks of another shape.
     """
 
     heights: np.ndarray
@@ -113,6 +137,17 @@ class Topography:
                 f"{int(bad.sum())} of {heights.size} heights are NaN or infinite.",
                 "fill them first (read_topography(..., undefined='interpolate')) or crop them away.",
             )
+        huge = largest_point(heights)
+        if huge is not None:
+            index, value = huge
+            point = ", ".join(str(i) for i in index)
+            raise InputError(
+                "heights",
+                f"the height at point ({point}) is {value:.3g} m, beyond {LARGEST:.0e} m: no surface is "
+                "that high, and the sums of squares of such heights overflow.",
+                "correct that value (a typo, or an instrument's marker of a missing point: make it NaN "
+                "and fill it, roughcontact.topography.process.fill_undefined).",
+            )
         no_string(self.size, "size")
         size = np.atleast_1d(np.asarray(self.size, dtype=float))
         if size.size == 1 and heights.ndim == 2:
@@ -123,10 +158,11 @@ class Topography:
                 f"got {size.size} values for a {heights.ndim}D topography.",
                 f"give {heights.ndim} physical lengths in metres.",
             )
-        if not np.all(np.isfinite(size)) or np.any(size <= 0):
+        if not np.all(np.isfinite(size)) or np.any(size <= 0) or np.any(size > LARGEST):
             raise InputError(
                 "size",
-                f"physical size {tuple(size)} must be positive and finite.",
+                f"physical size {tuple(float(s) for s in size)} m must be positive and finite "
+                f"(at most {LARGEST:.0e} m).",
                 "give the scan size in metres (or with a unit at the CLI, e.g. '10 um').",
             )
         heights.flags.writeable = False
