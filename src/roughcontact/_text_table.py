@@ -114,16 +114,21 @@ def read_text_table(path: str | Path, *, expected: str, delimiter: str | None = 
         raise InputError("path", f"{path} has no data lines.", f"give {expected}.")
     if delimiter is None:
         delimiter = next((d for d in (",", ";", "\t") if d in lines[0]), None)
-    split = (
-        (lambda line: next(csv.reader([line], delimiter=delimiter, skipinitialspace=True)))
-        if delimiter
-        else _WORDS.findall
-    )
-    rows = [[cell.strip() for cell in split(line)] for line in lines]
+    rows = [split_cells(line, delimiter) for line in lines]
     if all(_numeric(cell) for cell in rows[0]):
         return TextTable(None, None, rows, delimiter, comments=comments)
     names, units = zip(*(split_header(cell) for cell in rows[0]), strict=True)
     return TextTable(list(names), list(units), rows[1:], delimiter, rows[0], comments)
+
+
+def split_cells(line: str, delimiter: str | None) -> list[str]:
+    """Split a line into its cells, stripped: at ``delimiter`` (CSV quoting), or at white space.
+
+    Split at white space, a word keeps its bracketed unit: ``x [um] z [nm]`` is two cells.
+    """
+    if delimiter:
+        return [cell.strip() for cell in next(csv.reader([line], delimiter=delimiter, skipinitialspace=True))]
+    return [cell.strip() for cell in _WORDS.findall(line)]
 
 
 def split_header(cell: str) -> tuple[str, str | None]:

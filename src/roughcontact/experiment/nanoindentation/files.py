@@ -72,8 +72,9 @@ def read_indentation_csv(
     ``load [mN]``, ``time/s`` or ``depth in nm``; a ``*_unit`` argument gives the unit of a column
     whose header cell has none, and one that contradicts the header cell is refused (no unit is
     assumed). Comma, semicolon and tab delimiters are recognised, else whitespace (then no spaces
-    inside a column name). A deepest point or a largest load outside :data:`DEPTH_RANGE` or
-    :data:`LOAD_RANGE` is refused: the unit of that column is wrong.
+    inside a column name). A deepest point or a largest load outside 0.1 nm to 1 mm or 1 pN to
+    100 N (``DEPTH_RANGE``, ``LOAD_RANGE`` of ``roughcontact.experiment.nanoindentation.files``) is
+    refused: the unit of that column is wrong.
 
     Parameters
     ----------
