@@ -203,7 +203,9 @@ class SurfaceCompliance:
             contact_modulus = 1.0 / (layer_compliance + counter_compliance)
         if not (np.isfinite(contact_modulus) and contact_modulus > 0):
             raise InputError(
-                "contact_modulus", f"must be positive and finite, got {contact_modulus!r}.", "give E* in Pa."
+                "contact_modulus",
+                f"must be positive and finite, got {float(contact_modulus):g} Pa.",
+                "give E* in Pa.",
             )
         self.shape = (int(shape[0]), int(shape[1]))
         self.size = (float(size[0]), float(size[1]))

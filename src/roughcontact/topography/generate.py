@@ -100,7 +100,7 @@ def _grid(
     if lengths.shape != (len(dims),) or not np.all(np.isfinite(lengths)) or np.any(lengths <= 0):
         raise InputError(
             "size",
-            f"{size!r} is not {len(dims)} positive finite length(s).",
+            f"{np.asarray(size, dtype=float).tolist()} is not {len(dims)} positive finite length(s).",
             "give the physical size in metres, one value or one per axis.",
         )
     return tuple(int(n) for n in dims), tuple(float(s) for s in lengths)

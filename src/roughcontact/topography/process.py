@@ -189,7 +189,7 @@ def scale_to_ra(topography: Topography, ra: float) -> Topography:
     current = arithmetic_mean_deviation(topography)
     if not (math.isfinite(ra) and ra > 0 and current > 0):
         raise InputError(
-            "ra", f"cannot scale Ra {current:g} m to {ra!r}.", "give a positive Ra of a rough surface."
+            "ra", f"cannot scale Ra {current:g} m to {ra} m.", "give a positive Ra of a rough surface."
         )
     return topography.with_heights(topography.heights * (ra / current), step=f"scaled to Ra {ra:g} m")
 
@@ -526,7 +526,7 @@ def _spacing_tuple(spacing: float | tuple[float, ...], dim: int, field: str) -> 
     if values.shape != (dim,) or not np.all(np.isfinite(values)) or np.any(values <= 0):
         raise InputError(
             field,
-            f"{spacing!r} is not {dim} positive finite length(s).",
+            f"{np.asarray(spacing, dtype=float).tolist()} is not {dim} positive finite length(s).",
             f"give the pixel size in metres, one value or one per axis ({dim}).",
         )
     return tuple(float(v) for v in values)

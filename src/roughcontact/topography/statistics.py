@@ -681,12 +681,12 @@ def psd_radial(
     Jacobs, Junge and Pastewka (2017) doi:10.1088/2051-672X/aa51f8
     """
     if ring_ratio is not None and not ring_ratio > 1:
-        raise InputError("ring_ratio", f"must be > 1, got {ring_ratio!r}.", "e.g. 1.1 (10 % wide rings).")
+        raise InputError("ring_ratio", f"must be > 1, got {ring_ratio}.", "e.g. 1.1 (10 % wide rings).")
     qx, qy, psd = psd_2d(topography, window=window, workers=workers)
     if nbins is None:
         nbins = max(topography.shape) // 2
     if isinstance(nbins, bool) or not isinstance(nbins, (int, np.integer)) or nbins < 1:
-        raise InputError("nbins", f"must be a positive integer, got {nbins!r}.", "give e.g. 64, or None.")
+        raise InputError("nbins", f"must be a positive integer, got {nbins}.", "give e.g. 64, or None.")
     magnitude = np.hypot(qx[:, None], qy[None, :]).ravel()
     values = psd.ravel()
     keep = magnitude > 0
