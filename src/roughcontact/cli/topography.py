@@ -17,7 +17,7 @@ from .._json import json_ready
 from ..errors import InputError
 from ..topography import Topography
 from ..topography.io import MAX_FILLED, channel_of, channel_words, max_filled_allowing
-from ..topography.plausible import doubts, is_flat
+from ..topography.plausible import doubts, is_flat, size_doubt
 from ..topography.process import LEVELLING, SPECK
 from ..units import format_si
 from .options import dpi_argument, new_command, read_file, refuse_unused
@@ -61,7 +61,7 @@ def describe(topography: Topography, undefined=None) -> dict:
         "specks": 0 if topography.specks is None else int(np.count_nonzero(topography.specks)),
         "specks_removed": topography.info.get("specks_removed", 0),
         "flat": undefined is None and is_flat(topography.heights),
-        "notes": [doubt.said("cli") for doubt in doubts(topography)] if undefined is None else [],
+        "notes": _doubts(topography, undefined),
     }
     if undefined is None:
         statistics = summary(topography)
@@ -183,6 +183,15 @@ def _inspect(args: argparse.Namespace) -> int:
     return 0
 
 
+def _doubts(topography: Topography, undefined) -> list[str]:
+    """Return what is implausible about FILE's surface, in the options' words (with ``undefined``: its size).
+
+    With undefined points left unfilled the heights hold placeholders, so only the size is judged.
+    """
+    found = doubts(topography) if undefined is None else (size_doubt(topography.size),)
+    return [doubt.said("cli") for doubt in found if doubt is not None]
+
+
 def _notes(notes: list[str], file: Path) -> None:
     """Print what is implausible about FILE's surface, one note a line on stderr (as the models' commands)."""
     for note in notes:
@@ -229,8 +238,7 @@ def _plot(args: argparse.Namespace) -> int:
     dpi = args.dpi
     args.taking(FILLED_AS_READ, "use it with a contact command", options=("exclude_filled",))
     refuse_unused(args)
-    if undefined is None:
-        _notes([doubt.said("cli") for doubt in doubts(topography)], args.file)
+    _notes(_doubts(topography, undefined), args.file)
     figure = plot_overview(topography, undefined=undefined)
     args.output.parent.mkdir(parents=True, exist_ok=True)
     figure.savefig(args.output, dpi=dpi)
