@@ -64,7 +64,10 @@ class Doubt:
     problem : str
         What is implausible (``"the scan is 160 m x 160 m, outside 1 nm to 1 m"``).
     fixes : mapping of str to str
-        What to check, by door: ``"python"``, ``"study"`` (a study file's keys), ``"cli"`` (options).
+        What to check, by door: ``"python"``, ``"study"`` (a study file's keys), ``"cli"`` (options),
+        and ``"marked"``: with its keys marked (``«height_unit»``, :mod:`roughcontact.messages`) for a
+        note that a door renders later in its own words (a study's notes, said by ``validate`` in a
+        study file's words and by a model command in its options').
     """
 
     problem: str
@@ -96,6 +99,8 @@ _UNIT_FIXES = {
     "override_file_values = true where the file stores others)",
     "cli": "check its size and height unit (the file's metadata, or --size and --height-unit, with "
     "--override-file-values where the file stores others)",
+    "marked": "check its size and height unit (the file's metadata, or «size» and «height_unit», with "
+    "«override_file_values=true» where the file stores others)",
 }
 _HEIGHT_FIXES = {
     "python": "check its height unit (the file's metadata, or give height_unit=, with "
@@ -104,11 +109,14 @@ _HEIGHT_FIXES = {
     "override_file_values = true where the file stores another)",
     "cli": "check its height unit (the file's metadata, or --height-unit, with --override-file-values "
     "where the file stores another)",
+    "marked": "check its height unit (the file's metadata, or «height_unit», with "
+    "«override_file_values=true» where the file stores another)",
 }
 _GENERATED_FIXES = {
     "python": "check the size given to the generator and its unit",
     "study": "check size and its unit",
     "cli": "check the size given and its unit",
+    "marked": "check «size» and its unit",
 }
 
 
@@ -153,7 +161,7 @@ def doubts(topography: Topography) -> tuple[Doubt, ...]:
                 {
                     style: "a contact on it is the flat punch's (full contact); check the file and the "
                     "channel if a rough surface was expected"
-                    for style in ("python", "study", "cli")
+                    for style in ("python", "study", "cli", "marked")
                 },
             )
         )
