@@ -23,6 +23,7 @@ DOCUMENTED = (
     "roughcontact.topography.statistics",
     "roughcontact.topography.native",
     "roughcontact.topography.file_cache",
+    "roughcontact.topography.plausible",
     "roughcontact.materials",
     "roughcontact.units",
     "roughcontact.errors",

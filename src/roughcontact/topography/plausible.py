@@ -8,7 +8,7 @@ and the model commands as a note of the study, Python's
 :func:`~roughcontact.topography.io.read_topography` as a :class:`PlausibilityWarning` (a
 ``UserWarning``: shown once, filtered or turned into an error as any warning is). Nothing is
 refused for being implausible (a 2 m scan exists); what cannot be computed at all is refused
-where it is read (a height whose square overflows, :data:`~roughcontact.topography.surface.LARGEST`).
+where it is read (a height whose square overflows: ``roughcontact.topography.surface.LARGEST``).
 
 The checks:
 
@@ -65,7 +65,7 @@ class Doubt:
         What is implausible (``"the scan is 160 m x 160 m, outside 1 nm to 1 m"``).
     fixes : mapping of str to str
         What to check, by door: ``"python"``, ``"study"`` (a study file's keys), ``"cli"`` (options),
-        and ``"marked"``: with its keys marked (``«height_unit»``, :mod:`roughcontact.messages`) for a
+        and ``"marked"``: with its keys marked (``«height_unit»``, ``roughcontact.messages``) for a
         note that a door renders later in its own words (a study's notes, said by ``validate`` in a
         study file's words and by a model command in its options').
     """

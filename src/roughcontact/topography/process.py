@@ -276,7 +276,7 @@ def default_levelling(periodic: bool) -> str:
 
 
 def check_levelling(mode: str, periodic: bool) -> str:
-    """Return ``mode`` after checking that it is one of :data:`LEVELLING` and keeps a periodic surface so.
+    """Return ``mode`` after checking that it is one of ``LEVELLING`` and keeps a periodic surface so.
 
     Raises
     ------
@@ -300,7 +300,7 @@ def check_levelling(mode: str, periodic: bool) -> str:
 
 
 def level(topography: Topography, mode: str) -> Topography:
-    """Remove the background ``mode`` names (one of :data:`LEVELLING`) from a measured scan.
+    """Remove the background ``mode`` names (one of ``LEVELLING``) from a measured scan.
 
     ``"none"`` returns the surface as read; ``"mean"``, ``"plane"`` and ``"curvature"`` are
     :func:`detrend`; ``"sphere"`` is :func:`remove_sphere` (its fitted radius is recorded in

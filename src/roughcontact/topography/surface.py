@@ -104,8 +104,8 @@ class Topography:
     Raises
     ------
     InputError
-        Empty or non-finite heights, a height beyond :data:`LARGEST` in magnitude, a size that is
-        not positive and finite (or beyond :data:`LARGEST`), or a size whose number of values does
+        Empty or non-finite heights, a height beyond ``LARGEST`` (1e100 m) in magnitude, a size that
+        is not positive and finite (or beyond ``LARGEST``), or a size whose number of values does
         not match the number of axes, masks of another shape.
     """
 
