@@ -42,6 +42,10 @@ NOT_DRAWN_HERE = {
     ("loop_analysis", "loop"): "examples/paper001_measured_loop.py",
     ("nanoindentation", "indentation"): "examples/paper001_indentation.py",
     ("presliding", "lateral_stiffness"): "examples/paper001.toml (tests/study/test_presliding_study.py)",
+    **{
+        ("theories", name): "tests/study/test_theories_study.py (read here with figure_problems)"
+        for name in ("area", "gap", "pressure", "kappa", "magnification")
+    },
 }
 
 ADHESION = (

@@ -187,6 +187,14 @@ def _winkler_beside_bem():
     )
 
 
+def _theories():
+    from roughcontact.theory import compare_theories
+    from roughcontact.topography.generate import self_affine
+
+    surface = self_affine((32, 32), 1e-6, hurst=0.8, rms_slope=0.1, seed=1)
+    return compare_theories(surface, 1e9, reduced_pressures=[0.02, 0.2])
+
+
 BUILDERS = {
     "normal contact": _normal,
     "tangential path": _tangential,
@@ -206,6 +214,7 @@ BUILDERS = {
     "loop analysis": _loop,
     "adhesive contact": _adhesive,
     "Winkler beside the adhesive BEM (paper 000)": _winkler_beside_bem,
+    "theories beside the BEM": _theories,
 }
 SOLVED = {
     "Winkler-Lennard-Jones",
@@ -217,6 +226,7 @@ SOLVED = {
     "volume load-unload",
     "island in the volume (paper 002)",
     "adhesive contact",
+    "theories beside the BEM",
 }
 
 

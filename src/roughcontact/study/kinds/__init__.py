@@ -12,6 +12,7 @@
 ``presliding``        a rough ball's partial-slip loops under paper 001's or your programme, K_L
 ``loop_analysis``     a measured friction loop: stroke, mu, eq. 9 fit, K_L (paper 001)
 ``nanoindentation``   Oliver-Pharr modulus with the hold-creep correction (paper 001 eqs. 5-8)
+``theories``          Persson, Bush-Gibson-Thomas and Greenwood-Williamson beside the BEM over a load sweep
 ====================  ===========================================================================
 
 Each module defines its model once: the validated parameters, ``run``, the units of its scalars,
@@ -39,6 +40,7 @@ MODULES = {
     "presliding": "presliding",
     "loop_analysis": "loop_analysis",
     "nanoindentation": "nanoindentation",
+    "theories": "theories",
 }
 """Model name -> module of this package that defines its ``KIND``."""
 
