@@ -35,6 +35,7 @@ DOCUMENTED = (
     "roughcontact.contact.trust",
     "roughcontact.analytic",
     "roughcontact.asperity",
+    "roughcontact.theory",
     "roughcontact.winkler_lj",
     "roughcontact.experiment",
     "roughcontact.experiment.friction_loop",

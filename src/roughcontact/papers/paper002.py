@@ -310,6 +310,48 @@ def paper002_island(
     return flat.with_heights(heights, step="Gaussian-correlated roughness with paper 002's m0, m2", info=info)
 
 
+def island_roughness(shape: int = 256, *, seed: int = 1) -> Topography:
+    """Return the roughness of the island's top alone, periodic over the island's side (25 um).
+
+    The stand-in of :func:`paper002_island` without the island's step: the printed m0, m2 and m4
+    (eqs. 1-3) drawn per wavevector by :func:`~roughcontact.topography.generate.matched_moments`
+    (Hurst :data:`ISLAND_HURST`, assumed; ``coarse="truncate"``: below 19 pixels per shortest
+    wavelength the grid holds the field truncated), over the island's side as the period. For the
+    theories of rough contact (:mod:`roughcontact.theory`), which are of an infinite surface: the
+    top's contact is their question, the island's edge a punch's.
+
+    Parameters
+    ----------
+    shape : int
+        Grid points per side (256: a pixel of 98 nm, 11 per shortest wavelength).
+    seed : int
+        Seed of the roughness.
+
+    Returns
+    -------
+    Topography
+        Periodic heights [m], zero mean.
+    """
+    return matched_moments(
+        (shape, shape),
+        ISLAND_SIDE,
+        **MOMENTS,
+        hurst=ISLAND_HURST,
+        seed=seed,
+        modes="wavevector",
+        coarse="truncate",
+    )
+
+
+def island_pressures(count: int = 5) -> np.ndarray:
+    """Return nominal pressures on the island's top [Pa]: the paper's loads over its 25 um x 25 um.
+
+    ``count`` loads spaced logarithmically from the reference load (25 uN, where the paper takes the
+    interference as zero) to the peak (1000 uN), over the island's area: 0.04 to 1.6 MPa.
+    """
+    return np.geomspace(REFERENCE_FORCE, PEAK_FORCE, count) / ISLAND_SIDE**2
+
+
 def island_top_moments(island: Topography, *, edge: float = 0.2e-6) -> dict[str, float]:
     """Return the spectral moments (eqs. 1-3) and bandwidth of a stand-in island's top, beside the paper's.
 

@@ -101,35 +101,94 @@ class Sweep:
         return [row[load] for row in self.cases if row[load] is not None and row[load].has_fields]
 
 
+class _AtLoad:
+    """One load of a swept result (a :class:`~roughcontact.theory.TheoryComparison`) as a case."""
+
+    def __init__(self, case, index: int, realisation: int):
+        data = case.dataset()
+        self._data, self.index = data, index
+        self.label = case.label
+        self.parameters = {**dict(case.parameters), "replicate": realisation}
+        at = {name: float(data[name].values[index]) for name in _CURVES}
+        x = at["reduced_pressure"]
+        at |= {
+            "area_load_slope": at["contact_fraction_corrected"] / x,
+            "area_load_slope_raw": at["contact_fraction"] / x,
+            "gap_compared": bool(data.attrs.get("gap_compared", 0)),
+        }
+        self.scalars = {**dict(case.scalars), **at}
+        self.has_fields = True
+
+    def dataset(self):
+        return self._data.isel(load=[self.index])
+
+
+_CURVES = (
+    "reduced_pressure",
+    "mean_pressure",
+    "contact_fraction",
+    "contact_fraction_corrected",
+    "mean_gap",
+    "persson_fraction",
+    "bgt_fraction",
+    "gw_fraction",
+    "persson_mean_gap",
+    "gw_mean_gap",
+)
+"""The curves of a swept result that a sweep reads per load."""
+
+
+def _per_load(cases) -> list:
+    """Return the cases with one load each: a study's as they are, a swept result's one per load.
+
+    A swept result (several loads, from Python) is one realisation: the n-th of them in ``cases``
+    is realisation n, unless its parameters name a ``replicate``.
+    """
+    found, swept = [], 0
+    for case in cases:
+        if "reduced_pressure" in case.scalars:
+            found.append(case)
+        elif "kappa_loads" in case.scalars and case.has_fields:
+            realisation = int(case.parameters.get("replicate", swept))
+            data = case.dataset()
+            found += [_AtLoad(case, j, realisation) for j in range(data.sizes["load"])]
+            swept += 1
+    return found
+
+
+def _load_key(case, by: str) -> float:
+    value = case.parameters.get(by)
+    return float(f"{float(case.scalars[by] if value is None else value):.9g}")
+
+
 def sweeps(cases) -> list[Sweep]:
     """Gather the cases of one setting (all but the load and the realisation) into sweeps.
 
     Each :class:`Sweep` holds its cases by realisation (``replicate``) and load (ascending
-    ``reduced_pressure``, or ``mean_pressure``); cases without a ``reduced_pressure`` scalar (not of
-    the ``theories`` model) are left out.
+    ``reduced_pressure``, or ``mean_pressure`` where the cases were loaded in pascals). A study's
+    cases have one load each; a result of several loads (:func:`~roughcontact.theory.compare_theories`
+    from Python, wrapped by :func:`~roughcontact.plotting.cases.as_cases`) is one realisation, the
+    n-th such result of a setting realisation n. Cases of other models are left out.
     """
     settings: dict[str, list] = {}
-    for case in cases:
-        if "reduced_pressure" not in case.scalars:
-            continue
+    for case in _per_load(cases):
         setting = {k: v for k, v in setting_of(case).items() if k not in (*LOAD_KEYS, "replicate")}
         settings.setdefault(repr(sorted(setting.items(), key=lambda item: item[0])), []).append(case)
     found = []
     for group in settings.values():
-        by_load = (
-            "reduced_pressure" if all("reduced_pressure" in c.parameters for c in group) else "mean_pressure"
+        realisations = sorted({int(case.parameters.get("replicate", 0)) for case in group})
+        per_realisation = max(
+            sum(int(c.parameters.get("replicate", 0)) == r for c in group) for r in realisations
         )
-
-        def load_of(case, by_load=by_load) -> float:
-            return float(case.parameters.get(by_load, case.scalars[by_load]))
-
-        loads = sorted({load_of(case) for case in group})
-        replicates = sorted({int(case.parameters.get("replicate", 0)) for case in group})
-        table = [[None] * len(loads) for _ in replicates]
+        by = "reduced_pressure"
+        given = group[0].parameters.get("mean_pressure") is not None
+        if given or len({_load_key(c, by) for c in group}) > per_realisation:
+            by = "mean_pressure"  # loaded in pascals: the reduced loads differ between realisations
+        loads = sorted({_load_key(case, by) for case in group})
+        table = [[None] * len(loads) for _ in realisations]
         for case in group:
-            table[replicates.index(int(case.parameters.get("replicate", 0)))][loads.index(load_of(case))] = (
-                case
-            )
+            row = realisations.index(int(case.parameters.get("replicate", 0)))
+            table[row][loads.index(_load_key(case, by))] = case
         first = group[0].parameters
         found.append(Sweep(str(first.get("sample") or first.get("topography") or ""), table))
     return found
@@ -409,7 +468,7 @@ def theories_kappa_figure(cases):
         ax.set_ylim(bottom=0.0)
         ax.grid(True, alpha=0.3)
         ax.set_title(_title(sweep, f"area-load slope, BEM {said}"), fontsize="medium")
-        _legend(ax, fontsize="small", loc="lower left")
+        _legend(ax, fontsize="small", loc="best")
     return figure
 
 
