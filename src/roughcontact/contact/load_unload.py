@@ -46,6 +46,7 @@ Seed paper 002 (SU-8 island load-unload, sections III and VI, Figs. 7-9).
 
 from __future__ import annotations
 
+import math
 import warnings
 from dataclasses import dataclass, replace
 from typing import ClassVar
@@ -72,6 +73,7 @@ LOAD_UNLOAD_UNITS = {
     "interference_at_return_force": "m",
     "return_force": "N",
     "peak_contact_area": "m^2",
+    "peak_contact_area_corrected": "m^2",
     "max_pressure": "Pa",
     "max_plastic_deformation": "m",
     "hardness": "Pa",
@@ -82,6 +84,7 @@ CURVE_VARIABLES = {
     "approach": ("m", "interference (approach of the flat)"),
     "force": ("N", "load"),
     "contact_area": ("m^2", "real contact area"),
+    "contact_area_corrected": ("m^2", "real contact area corrected for its pixelated perimeter"),
     "plastic_fraction": ("", "fraction of the real contact area at the hardness"),
     "max_pressure": ("Pa", "largest contact pressure"),
 }
@@ -263,8 +266,10 @@ class LoadUnloadResult(NotebookDisplay):
     def curve(self) -> dict[str, np.ndarray]:
         """Return the path, one entry per step; ``approach`` is the interference.
 
-        Surface plasticity: ``branch``, ``approach``, ``force`` [N], ``contact_area`` [m^2],
-        ``plastic_fraction`` (of the real contact area at the hardness) and ``max_pressure`` [Pa];
+        Surface plasticity: ``branch``, ``approach``, ``force`` [N], ``contact_area`` [m^2] (the
+        pixel count) and ``contact_area_corrected`` [m^2] (for its pixelated perimeter,
+        :mod:`roughcontact.contact.area`; NaN for a profile), ``plastic_fraction`` (of the real
+        contact area at the hardness) and ``max_pressure`` [Pa];
         volume plasticity: :meth:`VolumePlasticResult.curve` with the interference as ``approach``.
         """
         if self.volume is not None:
@@ -275,6 +280,7 @@ class LoadUnloadResult(NotebookDisplay):
             "approach": np.asarray(self.interference, dtype=float),
             "force": np.array([s.force for s in steps]),
             "contact_area": np.array([s.contact_area for s in steps]),
+            "contact_area_corrected": np.array([_corrected_area(s) for s in steps]),
             "plastic_fraction": np.array([plastic_fraction(s) for s in steps]),
             "max_pressure": np.array([float(s.pressure.max()) for s in steps]),
         }
@@ -298,6 +304,7 @@ class LoadUnloadResult(NotebookDisplay):
             "peak_force": top.force,
             **interferences,
             "peak_contact_area": top.contact_area,
+            "peak_contact_area_corrected": _corrected_area(top),
             "plastic_fraction_at_peak": plastic_fraction(top),
             "max_pressure": max(float(step.pressure.max()) for step in self.steps),
             "max_plastic_deformation": float(np.max(self.plastic_deformation)),
@@ -364,6 +371,11 @@ def force_targets(max_force: float, steps: int = 10, reference_force: float | No
     """
     targets = np.linspace(0.0, max_force, steps + 1)
     return targets if reference_force is None else np.unique(np.concatenate([targets, [reference_force]]))
+
+
+def _corrected_area(step: NormalContactResult) -> float:
+    """Return the step's contact area corrected for its pixelated perimeter [m^2]; NaN for a line contact."""
+    return step.contact_area_corrected if step.topography.dim == 2 else math.nan
 
 
 def plastic_fraction(step: NormalContactResult) -> float:
