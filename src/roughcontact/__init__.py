@@ -26,8 +26,19 @@ cheap and has no side effects: the names are loaded when first used.
 
 from ._lazy import lazy_names
 from ._version import __version__
+from .display_html import draw_thumbnails_with
 from .errors import ConvergenceError, InputError, UnitError, UnsupportedFormatError
 from .units import quantity
+
+
+def _thumbnail(name: str, result) -> bytes:
+    """Draw a result's thumbnail for a notebook (:mod:`roughcontact.plotting` loaded only then)."""
+    from .plotting.notebook import thumbnail
+
+    return thumbnail(name, result)
+
+
+draw_thumbnails_with(_thumbnail)  # the figures are a floor above display_html: registered from here
 
 _HOMES = {
     "generate": "roughcontact.topography",

@@ -9,7 +9,6 @@ The CPU (numpy, numba, FFTW) is the default and the only requirement. ``device="
 
 from __future__ import annotations
 
-import contextlib
 import os
 import sys
 
@@ -46,33 +45,11 @@ def resolve_device(device: str | None = None) -> str:
         raise InputError(
             "device",
             f"unknown device {device!r}.",
-            f"use one of {DEVICES} (or unset {DEVICE_VARIABLE}).",
-            fixes={"cli": "give --device cpu or --device gpu.", "study": "write device = 'cpu' or 'gpu'."},
+            f"use «device=cpu» or «device=gpu» (or unset {DEVICE_VARIABLE}).",
         )
     if device == "gpu":
         gpu_module()
     return device
-
-
-@contextlib.contextmanager
-def default_device(device: str | None):
-    """Make ``device`` the default of the solves inside the block (``None``: leave it as it is).
-
-    Sets :data:`DEVICE_VARIABLE` for the block, so that a study's cases, which call the solvers
-    without a ``device`` argument, run where the study says (``[study] device``).
-    """
-    if device is None:
-        yield
-        return
-    previous = os.environ.get(DEVICE_VARIABLE)
-    os.environ[DEVICE_VARIABLE] = device
-    try:
-        yield
-    finally:
-        if previous is None:
-            del os.environ[DEVICE_VARIABLE]
-        else:
-            os.environ[DEVICE_VARIABLE] = previous
 
 
 def check_storage(storage: str, device: str) -> str:
@@ -103,8 +80,7 @@ def gpu_module():
             "device",
             f"device 'gpu' needs CuPy, which does not import ({error}).",
             "pip install 'roughcontact[gpu]' (CuPy for CUDA 12; 'roughcontact[gpu-cuda13]' for CUDA 13), "
-            "or use device='cpu'.",
-            fixes={"cli": "install roughcontact[gpu], or leave --device out (the CPU)."},
+            "or use «device=cpu».",
         ) from error
     _gpu.check_device()
     return _gpu

@@ -18,8 +18,7 @@ from __future__ import annotations
 import base64
 import html
 import re
-from collections.abc import Sequence
-from importlib import import_module
+from collections.abc import Callable, Sequence
 from typing import Any, ClassVar
 
 import numpy as np
@@ -100,6 +99,21 @@ def summary_of(cls: type) -> str:
     return _ROLE.sub(lambda match: match.group(1) or match.group(2), lines[0]) if lines else ""
 
 
+_THUMBNAIL: Callable[[str, Any], bytes] | None = None
+"""What draws a result's thumbnail (``thumbnail(name, result) -> PNG bytes``); None: no figure.
+
+Registered from above (:func:`draw_thumbnails_with`): the package ``roughcontact`` registers
+:func:`roughcontact.plotting.notebook.thumbnail`, loaded on first use, so that this module, a floor
+below the figures, never imports them.
+"""
+
+
+def draw_thumbnails_with(thumbnail: Callable[[str, Any], bytes] | None) -> None:
+    """Register the function that draws a result's thumbnail (None: show tables without figures)."""
+    global _THUMBNAIL
+    _THUMBNAIL = thumbnail
+
+
 def figure_html(result: Any) -> str:
     """Return a thumbnail of the result's ``FIGURE`` as an ``<img>`` (base64 PNG); "" without one.
 
@@ -107,10 +121,10 @@ def figure_html(result: Any) -> str:
     the display without a figure, never without its table.
     """
     name = getattr(result, "FIGURE", None)
-    if not name:
+    if not name or _THUMBNAIL is None:
         return ""
     try:
-        png = import_module("roughcontact.plotting.notebook").thumbnail(name, result)
+        png = _THUMBNAIL(name, result)
     except Exception:  # a notebook shows the table whatever the figure does
         return ""
     data = base64.b64encode(png).decode("ascii")

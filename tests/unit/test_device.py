@@ -7,7 +7,7 @@ import textwrap
 import numpy as np
 import pytest
 
-from roughcontact._device import DEVICE_VARIABLE, check_storage, default_device, resolve_device
+from roughcontact._device import DEVICE_VARIABLE, check_storage, resolve_device
 from roughcontact.contact import solve_normal
 from roughcontact.errors import InputError
 from roughcontact.topography import Topography
@@ -47,7 +47,7 @@ def test_gpu_without_cupy_names_the_extra():
     with pytest.raises(InputError, match=r"roughcontact\[gpu\]") as error:
         solve_normal(_surface(), 1e9, mean_pressure=1e6, device="gpu")
     assert "CuPy" in error.value.problem
-    assert "--device" in error.value.fix_in("cli")
+    assert "--device" in error.value.text("cli")
 
 
 def test_single_precision_is_a_gpu_option():
@@ -57,21 +57,6 @@ def test_single_precision_is_a_gpu_option():
         check_storage("half", "gpu")
     with pytest.raises(InputError, match="GPU option"):
         solve_normal(_surface(), 1e9, mean_pressure=1e6, precision="single")
-
-
-def test_default_device_sets_and_restores_the_variable(monkeypatch):
-    monkeypatch.setenv(DEVICE_VARIABLE, "cpu")
-    with default_device("gpu"):
-        import os
-
-        assert os.environ[DEVICE_VARIABLE] == "gpu"
-    assert os.environ[DEVICE_VARIABLE] == "cpu"
-    monkeypatch.delenv(DEVICE_VARIABLE)
-    with default_device(None):
-        assert DEVICE_VARIABLE not in os.environ
-    with default_device("cpu"):
-        assert os.environ[DEVICE_VARIABLE] == "cpu"
-    assert DEVICE_VARIABLE not in os.environ
 
 
 def test_a_cpu_solve_imports_nothing_of_the_gpu():

@@ -78,11 +78,15 @@ class CaseInputs:
         Name -> Topography already read, for the file topographies.
     materials : dict
         Name -> Material.
+    device : str
+        Where the solvers that have a GPU path run (``[study] device``: ``"cpu"`` or ``"gpu"``);
+        handed to them as an argument (the normal contact engine), never through the environment.
     """
 
     specs: dict[str, Strict]
     files: dict[str, Topography]
     materials: dict[str, Material]
+    device: str = "cpu"
 
     def identity(self, name: str) -> str:
         """Return a text that is equal for two cases exactly when they build the same topography ``name``."""

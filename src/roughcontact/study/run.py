@@ -83,7 +83,6 @@ class Task:
     seeds: dict[str, int]
     worker_storage: str | None = None
     raise_errors: bool = False
-    device: str | None = None
 
 
 def _version() -> str:
@@ -129,7 +128,6 @@ def execute(task: Task) -> tuple[dict[str, Any], Any]:
     the last lines of the traceback), unless the task says ``raise_errors`` (a command's cases:
     the error reaches the user at once); interruptions (KeyboardInterrupt, SystemExit) propagate.
     """
-    from .._device import default_device
     from .kinds import get_kind
 
     record = failed_record(task, None)
@@ -138,8 +136,7 @@ def execute(task: Task) -> tuple[dict[str, Any], Any]:
     start = time.perf_counter()
     dataset = None
     try:
-        with default_device(task.device):
-            output = get_kind(task.kind).run(task.parameters, task.inputs)
+        output = get_kind(task.kind).run(task.parameters, task.inputs)
         record["scalars"] = json_ready(output.scalars)
         if output.warnings:
             record["warnings"] = list(output.warnings)
@@ -201,7 +198,7 @@ def make_task(
         for name, spec in case.topographies.items()
         if isinstance(spec, FileTopography)
     }
-    inputs = CaseInputs(dict(case.topographies), files, dict(case.materials))
+    inputs = CaseInputs(dict(case.topographies), files, dict(case.materials), study.device)
     axes_si, axes_units = _axes_si(case)
     return Task(
         study=study.name,
@@ -217,7 +214,6 @@ def make_task(
         seeds=case.seeds,
         worker_storage=worker_storage,
         raise_errors=raise_errors,
-        device=None if study.device == "cpu" else study.device,
     )
 
 
