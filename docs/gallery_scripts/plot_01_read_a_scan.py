@@ -23,10 +23,11 @@ from roughcontact.units import format_si
 # -------------
 # :func:`~roughcontact.topography.read_topography` converts sizes and heights to metres from the
 # units the file declares, and records those units in ``info``. A file without them would be
-# refused until ``size=`` and ``height_unit=`` are given.
+# refused until ``size=`` and ``height_unit=`` are given. It levels the scan as the commands do
+# (``detrend="plane"``); ``detrend="none"`` returns it as stored, to see what levelling removes.
 
 path = importlib.resources.files("roughcontact") / "data" / "top-1.top"
-raw = rc.read_topography(path)
+raw = rc.read_topography(path, detrend="none")
 print(raw)
 print(f"file format {raw.info['file_format']}, channel {raw.info['channel']!r}")
 print(f"units in the file: size in {raw.info['size_unit']}, heights in {raw.info['height_unit']}")
@@ -36,9 +37,9 @@ print(f"pixel {format_si(raw.spacing[0], 'm')}")
 # %%
 # Level it
 # --------
-# A scan is returned as stored. Its tilt is an artefact of mounting, and left in it would decide
-# where a flat touches, so it is removed first: ``"plane"`` is what the commands and study files
-# apply to every measured file.
+# Its tilt is an artefact of mounting, and left in it would decide where a flat touches, so it is
+# removed first: ``"plane"`` is what ``read_topography``, the commands and study files apply to
+# every measured file unless told otherwise (``rc.read_topography(path)`` is this ``scan``).
 
 scan = level(raw, "plane")
 plane = raw.heights - scan.heights  # the fitted plane (and mean) that levelling removed [m]

@@ -182,4 +182,3 @@ def flag(value, field: str) -> bool:
     if isinstance(value, bool | np.bool_):
         return bool(value)
     raise InputError(field, f"expected True or False, got {value!r}.", f"pass {field}=True or {field}=False.")
-

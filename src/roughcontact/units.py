@@ -310,8 +310,15 @@ def _refuse_bare(value: str | Real, expected: str, field: str) -> None:
 
 
 def length_unit_factor(unit: str, *, field: str = "unit") -> float:
-    """Return the factor that converts lengths in ``unit`` (e.g. ``"nm"``, ``"µm"``) to metres."""
-    factor, dimension = unit_factor(unit)
+    """Return the factor that converts lengths in ``unit`` (e.g. ``"nm"``, ``"µm"``) to metres.
+
+    A unit that cannot be read, or is not a length, is refused naming ``field`` (the option or key
+    that gave it).
+    """
+    try:
+        factor, dimension = unit_factor(unit)
+    except UnitError as error:
+        raise UnitError(field, error.problem, "give one of 'nm', 'um', 'mm', 'm'.") from None
     if dimension != DIMENSIONS["length"]:
         raise UnitError(field, f"{unit!r} is not a length unit.", "give one of 'nm', 'um', 'mm', 'm'.")
     return float(factor)

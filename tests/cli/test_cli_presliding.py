@@ -332,7 +332,7 @@ def test_the_readme_paper001_command_runs_to_a_report(capsys, tmp_path):
     for row in rows:  # the window of each case is stated: its pixels and how it was chosen
         assert row["window_choice"].startswith(f"auto: {row['window_pixels']} px (")
         assert 3 <= int(row["window_pixels"]) <= 128
-    assert "Solved windows, chosen per case (window = 'auto'): HDPE " in stdout
+    assert "Solved windows, chosen per case (--window auto): HDPE " in stdout
     spread = read_table(out / "tables" / "presliding_lateral_stiffness_spread.csv")
     assert len(spread) == 18
     for row in spread:
@@ -385,7 +385,7 @@ def test_a_case_that_fails_names_its_sample_replicate_and_seed(capsys, tmp_path)
     assert status == EXIT_INPUT_ERROR
     seed = realisation_seed(1, "hdpe", "HDPE", 0)
     assert f"--window: HDPE at 25 mN (sample HDPE, replicate 0, seed {seed} of topography 'hdpe'): " in err
-    assert "reaches the border of the solved window (8 x 8 px)" in err and "'auto'" in err
+    assert "reaches the border of the solved window (8 x 8 px)" in err and "--window auto" in err
 
 
 def test_realisations_of_a_measured_ball_are_refused(capsys, ball_file):

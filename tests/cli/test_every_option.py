@@ -68,6 +68,8 @@ BASELINES = {
         "mN",
     ],
     "nanoindent": [EXAMPLES / "paper001_indentation_hdpe.csv"],
+    "theories FILE": [TOP, "--material", "polysilicon"],
+    "theories": ["--material", "polysilicon"],
 }
 """A command line of each path of each model command that runs as typed (its first word is the
 command; the files are only named, the study is not built)."""
@@ -86,6 +88,7 @@ VALUES = {
     "channel": ["0"],
     "size": ["600 nm"],
     "height_unit": ["nm"],
+    "position_unit": ["um"],
     "max_filled": ["0.3"],
     "crop": ["0 nm", "300 nm"],
     "detrend": ["curvature"],
@@ -177,6 +180,17 @@ VALUES = {
     "fit_range": ["0.3", "0.9"],
     "rate_sign": ["printed"],
     "creep_fit": ["linear"],
+}
+VALUES |= {
+    "loads": ["0.01", "0.1"],
+    "pressures": ["5 MPa", "50 MPa"],
+    "gamma": ["0.45"],
+    "kappa_max_fraction": ["0.05"],
+    "hurst": ["0.6"],
+    "rms_slope": ["0.2"],
+    "short_cutoff": ["100 nm"],
+    "long_cutoff": ["1 um"],
+    "rolloff": ["0.5"],
 }
 VALUES |= {
     ("adhesion", "reading"): ["paper"],

@@ -554,7 +554,7 @@ def cases(shared: Path, tmp: Path) -> dict[str, Messy]:
             ],
             0,
             "never touch",
-            "positive max_approach",
+            "positive --max-approach",
             [
                 "adhesion",
                 top,
@@ -662,7 +662,7 @@ def test_there_are_at_least_forty_of_them():
             'library = "polysilicon"',
             "",
             "topographies.surface",
-            "detrend = 'mean'",
+            'detrend = "mean"',
             'file = "{top}"\nperiodic = true\ndetrend = "mean"',
             None,
         ),

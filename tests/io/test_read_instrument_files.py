@@ -35,8 +35,8 @@ READABLE = {
     # README gives the x range of the 9600 (non-uniform) positions; our size counts 9600 pixels
     "dektak-1.csv": ((9600,), (1499.8 * UM * 9600 / 9599,), "um", {}, 1e-3),
     "gwyddion-export-english.txt": ((3, 4), (12.34 * UM, 5.68 * UM), "m", {}, 1e-3),
-    # no units in the file: the user gives both, and they come back exactly
-    "xyz-1.txt": ((4, 4), (4 * UM, 4 * UM), "um", {"size": "4 um", "height_unit": "um"}, 1e-12),
+    # no units in the file: the user gives the positions' unit and the heights', and they come back exactly
+    "xyz-1.txt": ((4, 4), (4 * UM, 4 * UM), "um", {"position_unit": "um", "height_unit": "um"}, 1e-12),
     "afm-slippy.txt": ((512, 512), (5 * UM, 5 * UM), "nm", {"size": "5 um", "height_unit": "nm"}, 1e-12),
     # header: h=305 w=75, pixel size 3.69862e-7 m, heights in rad with a factor to m
     "matrix-4.txt.gz": ((75, 305), (75 * 0.369862 * UM, 305 * 0.369862 * UM), "m", {}, 1e-12),
@@ -77,7 +77,7 @@ def test_list_channels_agrees_with_read(shared_topographies, name):
     default = [c for c in channels if c.is_default]
     assert len(default) == 1
     assert default[0].shape == grid
-    if "size" not in options:
+    if "size" not in options and "position_unit" not in options:  # else the file has no size to list
         assert default[0].size == pytest.approx(size, rel=rel, abs=0)
 
 
@@ -91,9 +91,9 @@ def test_line_scans_are_1d(shared_topographies):
 
 
 def test_plausible_magnitudes(shared_topographies):
-    # README gives 226 nm and 3.15 nm: compare to half a unit in the last printed digit
-    di = read_topography(shared_topographies / "di-3.di")
-    top = read_topography(shared_topographies / "top-1.top")
+    # README gives 226 nm and 3.15 nm (the heights as stored, about their mean): half a unit in the last digit
+    di = read_topography(shared_topographies / "di-3.di", detrend="mean")
+    top = read_topography(shared_topographies / "top-1.top", detrend="mean")
     assert rms(di.heights) == pytest.approx(226 * NM, abs=0.5 * NM)
     assert rms(top.heights) == pytest.approx(3.15 * NM, abs=0.005 * NM)
 
@@ -101,7 +101,7 @@ def test_plausible_magnitudes(shared_topographies):
 def test_gzip_matrix_heights_are_the_matrix_times_its_factor(shared_topographies):
     text = gzip.decompress((shared_topographies / "matrix-4.txt.gz").read_bytes()).decode()
     matrix = np.loadtxt(text.splitlines()[4:])  # 305 rows (y) of 75 values (x) after a 4-line header
-    topography = read_topography(shared_topographies / "matrix-4.txt.gz")
+    topography = read_topography(shared_topographies / "matrix-4.txt.gz", detrend="none")
     # only float rounding separates the two products
     np.testing.assert_allclose(topography.heights, matrix.T * 2.91818e-8, rtol=1e-12)
 
@@ -183,9 +183,10 @@ def test_missing_size_says_how_to_give_it(shared_topographies):
     assert topography.info["size_from"] == "user"
 
 
-def test_unit_less_xyz_needs_size_and_unit(shared_topographies):
-    with pytest.raises(InputError, match="without a unit"):
+def test_unit_less_xyz_needs_the_unit_of_its_positions(shared_topographies):
+    with pytest.raises(InputError, match="without a unit") as caught:
         read_topography(shared_topographies / "xyz-1.txt", height_unit="um")
+    assert caught.value.field == "position_unit"
 
 
 def test_a_size_beside_the_files_own_is_refused_unless_overridden(shared_topographies):
@@ -194,13 +195,13 @@ def test_a_size_beside_the_files_own_is_refused_unless_overridden(shared_topogra
         read_topography(path, size=("20 um", 30e-6))
     assert caught.value.field == "size"
     assert "10 µm x 10 µm" in caught.value.problem and "20 µm x 30 µm" in caught.value.problem
-    assert "override_file_values=True" in caught.value.fix
-    assert "--override-file-values" in caught.value.fix_in("cli")
+    assert "override_file_values=True" in str(caught.value)
+    assert "--override-file-values" in caught.value.text("cli")
     assert read_topography(path, size="10 um").size == read_topography(path).size  # same value: no clash
-    topography = read_topography(path, size=("20 um", 30e-6), override_file_values=True)
+    topography = read_topography(path, size=("20 um", 30e-6), override_file_values=True, detrend="none")
     assert topography.size == (20e-6, 30e-6)
     assert topography.info["size_in_file"] == pytest.approx((10 * UM, 10 * UM), rel=1e-12, abs=0)
-    assert np.array_equal(topography.heights, read_topography(path).heights)
+    assert np.array_equal(topography.heights, read_topography(path, detrend="none").heights)
 
 
 def test_height_unit_must_agree_with_the_file(shared_topographies):
@@ -208,8 +209,10 @@ def test_height_unit_must_agree_with_the_file(shared_topographies):
     with pytest.raises(InputError, match="'nm'") as caught:
         read_topography(path, height_unit="um")
     assert caught.value.field == "height_unit" and "'um'" in caught.value.problem
-    overridden = read_topography(path, height_unit="um", override_file_values=True)
-    np.testing.assert_allclose(overridden.heights, read_topography(path).heights * 1000, rtol=1e-14)
+    overridden = read_topography(path, height_unit="um", override_file_values=True, detrend="none")
+    np.testing.assert_allclose(
+        overridden.heights, read_topography(path, detrend="none").heights * 1000, rtol=1e-14
+    )
     assert np.array_equal(read_topography(path, height_unit="nm").heights, read_topography(path).heights)
 
 
@@ -234,14 +237,17 @@ def test_undefined_points_are_refused_by_default(shared_topographies):
         read_topography(shared_topographies / "sur-2.sur")
     message = str(caught.value)
     assert "117" in message and "undefined" in message
-    assert "undefined='interpolate'" in message and "--fill-undefined" in message
+    assert "undefined='interpolate'" in message and "--fill-undefined" not in message  # Python's words
+    assert "--fill-undefined" in caught.value.text("cli") and "fill_undefined = true" in caught.value.text(
+        "study"
+    )
 
 
 def test_interpolated_undefined_points_keep_the_measured_ones(shared_topographies):
     import SurfaceTopography
 
     path = shared_topographies / "sur-2.sur"
-    topography = read_topography(path, undefined="interpolate")
+    topography = read_topography(path, undefined="interpolate", detrend="none")
     assert topography.info["undefined_points_filled"] == 117
     assert np.all(np.isfinite(topography.heights))
     measured = SurfaceTopography.open_topography(str(path)).topography().heights()  # masked, in mm
@@ -317,8 +323,12 @@ def test_unit_invariance(tmp_path, unit, factor):
     heights = np.random.default_rng(7).normal(size=(6, 5))
     _write_matrix(tmp_path / "in_unit.txt", heights)
     _write_matrix(tmp_path / "in_metres.txt", heights * factor)
-    in_unit = read_topography(tmp_path / "in_unit.txt", size=("3 um", "2.5 um"), height_unit=unit)
-    in_metres = read_topography(tmp_path / "in_metres.txt", size=(3e-6, 2.5e-6), height_unit="m")
+    in_unit = read_topography(
+        tmp_path / "in_unit.txt", size=("3 um", "2.5 um"), height_unit=unit, detrend="none"
+    )
+    in_metres = read_topography(
+        tmp_path / "in_metres.txt", size=(3e-6, 2.5e-6), height_unit="m", detrend="none"
+    )
     assert in_unit.size == in_metres.size == (3e-6, 2.5e-6)
     # the two differ by float rounding of (h * factor) versus (h) * factor only
     np.testing.assert_allclose(in_unit.heights, in_metres.heights, rtol=1e-14)

@@ -101,17 +101,19 @@ def _write(path, text):
 
 def test_comma_and_semicolon_matrices_read_like_the_blank_separated_one(tmp_path):
     plain = read_topography(
-        _write(tmp_path / "m.txt", "\n".join(lines())), size="9 um x 7 um", height_unit="nm"
+        _write(tmp_path / "m.txt", "\n".join(lines())), size="9 um x 7 um", height_unit="nm", detrend="none"
     )
     for name, text in [("m.csv", "\n".join(lines(","))), ("m.dat", "\n".join(lines(";", ",")))]:
-        other = read_topography(_write(tmp_path / name, text), size="9 um x 7 um", height_unit="nm")
+        other = read_topography(
+            _write(tmp_path / name, text), size="9 um x 7 um", height_unit="nm", detrend="none"
+        )
         np.testing.assert_array_equal(other.heights, plain.heights)
     np.testing.assert_allclose(plain.heights, np.round(HEIGHTS, 8).T * 1e-9, rtol=1e-15)  # rows are y
 
 
 def test_a_header_gives_size_and_unit_to_a_comma_separated_matrix(tmp_path):
     header = "# Width: 9 um\n# Height: 7 um\n# Value units: nm\n"
-    topography = read_topography(_write(tmp_path / "m.csv", header + "\n".join(lines(","))))
+    topography = read_topography(_write(tmp_path / "m.csv", header + "\n".join(lines(","))), detrend="none")
     assert topography.size == pytest.approx((9e-6, 7e-6), rel=1e-12)
     np.testing.assert_allclose(topography.heights, np.round(HEIGHTS, 8).T * 1e-9, rtol=1e-12)
 

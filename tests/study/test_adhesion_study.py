@@ -84,7 +84,7 @@ def test_a_rigid_flat_without_a_surface_energy_is_refused_naming_the_key(tmp_pat
     # known before anything runs: validation refuses it (issue 32)
     with pytest.raises(StudyError, match=r"\(cycle\)\.counter_surface_energy: no surface energy") as caught:
         _study(tmp_path, extra="")
-    assert "counter_surface_energy = '72 mJ/m^2'" in str(caught.value)
+    assert 'counter_surface_energy = "72 mJ/m^2"' in str(caught.value)
 
 
 @pytest.mark.parametrize(
@@ -92,7 +92,7 @@ def test_a_rigid_flat_without_a_surface_energy_is_refused_naming_the_key(tmp_pat
     [
         ('work_of_adhesion = "-50 mJ/m^2"', "work_of_adhesion must be positive"),
         ('work_of_adhesion = "50 mJ/m^2"\nstart = "2 nm"', "start must lie below max_approach"),
-        ('work_of_adhesion = "50 mJ/m^2"\nwinkler = true', "law = 'lennard_jones'"),
+        ('work_of_adhesion = "50 mJ/m^2"\nwinkler = true', 'law = "lennard_jones"'),
         ('work_of_adhesion = "50 mJ/m^2"\nlaw = "morse"', "law"),
         ('work_of_adhesion = "50"', "unit"),
     ],

@@ -286,7 +286,7 @@ def test_load_unload_refuses_map_loads_that_are_not_targets(tmp_path):
 
 def test_a_curve_needs_max_force_and_nominal_area_together():
     kind = get_kind("asperity")
-    with pytest.raises(ValueError, match="both max_force and nominal_area"):
+    with pytest.raises(ValueError, match="both «max_force» and «nominal_area»"):  # marked for each door
         kind.parameters.model_validate(
             {"m0": "0.002 um^2", "m2": 0.002, "m4": "0.017 1/um^2", "material": "SU-8", "max_force": "1 mN"}
         )

@@ -13,9 +13,9 @@ PACKAGE = "roughcontact"
 LAYERS = (
     {"errors", "units", "checks", "results", "display_html", "materials", "_json", "_files", "_deprecation",
      "_text_table", "_backend", "_device", "_gpu", "_fftw_wisdom", "_cache", "_lazy", "_version", "progress",
-     "spread", "references", "origin"},
+     "spread", "references", "origin", "messages"},
     {"topography", "elasticity", "analytic"},
-    {"contact", "asperity", "experiment"},
+    {"contact", "asperity", "experiment", "theory"},
     {"winkler_lj", "friction"},
     {"papers", "models", "plotting"},
     {"study"},
@@ -57,6 +57,32 @@ def imports_of(modules: dict[str, tuple[Path, bool]], top: str):
                 for alias in node.names:
                     if alias.name.split(".")[0] == top:
                         yield name, alias.name, alias.name, True, node.lineno
+            elif target := _imported_by_string(node, name, package):  # import_module("...") by a literal
+                if target.split(".")[0] == top:
+                    yield name, target, target.rsplit(".", 1)[-1], True, node.lineno
+
+
+def _imported_by_string(node: ast.AST, name: str, package: bool) -> str | None:
+    """The module an ``import_module("literal")`` call imports (relative to its package), else None.
+
+    An import written as a string runs as much up or down the floors as one written as a
+    statement; f-strings and names (a registry's lookups) are not literals and are left out.
+    """
+    if not (
+        isinstance(node, ast.Call)
+        and getattr(node.func, "id", getattr(node.func, "attr", None)) == "import_module"
+        and node.args
+        and isinstance(node.args[0], ast.Constant)
+        and isinstance(node.args[0].value, str)
+    ):
+        return None
+    text = node.args[0].value
+    if not text.startswith("."):
+        return text
+    level = len(text) - len(text.lstrip("."))
+    base = name.split(".") if package else name.split(".")[:-1]
+    base = base[: len(base) - level + 1]
+    return ".".join(base + ([text.lstrip(".")] if text.lstrip(".") else []))
 
 
 def private_imports(imports) -> list[str]:
@@ -209,3 +235,96 @@ def test_the_catch_all_rule_sees_one(tmp_path):
         "    def _inner(self, **options):\n        pass\n"
     )
     assert catch_alls(tmp_path, "fake") == ["fake.api:1 solve(**options)", "fake.api:6 Model.run(**options)"]
+
+
+SIDE_CHANNELS = {
+    "matplotlib.use": "switches the caller's plotting backend (a notebook's, an svg caller's)",
+    "logging.basicConfig": "configures the caller's logging (only the command line may: cli/__init__.py)",
+    "np.seterr": "changes how the caller's NumPy reports floating-point errors",
+    "numpy.seterr": "changes how the caller's NumPy reports floating-point errors",
+    "rcParams": "changes the caller's matplotlib defaults (use matplotlib.rc_context)",
+    "os.environ": "passes state through the process environment instead of an argument",
+}
+"""Calls and stores that change process-wide state a caller owns, with why each is refused."""
+
+ALLOWED_SIDE_CHANNELS = {
+    ("roughcontact.cli", "logging.basicConfig"),  # the command line is the program: it owns the logging
+    ("roughcontact._backend", "os.environ"),  # OMP_WAIT_POLICY for pyFFTW's loading only, restored after
+}
+
+
+_ENVIRONMENT_WRITES = (".setdefault", ".update", ".pop", ".clear", ".popitem")
+
+
+def side_channels(source: Path, top: str) -> list[str]:
+    """Every write of process-wide state in the package (see :data:`SIDE_CHANNELS`), not allowed."""
+    found = []
+    for name, (path, _) in modules_of(source, top).items():
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Call):
+                called = ast.unparse(node.func)
+                if called.startswith("os.environ.") and not called.endswith(_ENVIRONMENT_WRITES):
+                    continue  # reading the user's settings is no side channel
+            elif isinstance(node, ast.Assign | ast.AugAssign):
+                targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+                called = next((ast.unparse(t.value) for t in targets if isinstance(t, ast.Subscript)), None)
+                called = (
+                    called.removesuffix(".rcParams") + ".rcParams"
+                    if called and "rcParams" in called
+                    else called
+                )
+            else:
+                continue
+            for channel in SIDE_CHANNELS:
+                if called and (
+                    called == channel or called.endswith(f".{channel}") or called.startswith(f"{channel}.")
+                ):
+                    if (name, channel) not in ALLOWED_SIDE_CHANNELS:
+                        found.append(
+                            (node.lineno, f"{name}:{node.lineno} {called}: {SIDE_CHANNELS[channel]}")
+                        )
+    return [line for _, line in sorted(found)]
+
+
+def test_no_module_changes_process_state_a_caller_owns():
+    """No backend switch, logging set-up, NumPy error mode or environment variable as a side channel."""
+    assert side_channels(SOURCE, PACKAGE) == []
+
+
+def test_the_side_channel_rule_sees_them(tmp_path):
+    package = tmp_path / "fake"
+    package.mkdir()
+    (package / "__init__.py").write_text("")
+    (package / "figures.py").write_text(
+        "import matplotlib\nimport os\n\ndef draw():\n    matplotlib.use('Agg')\n"
+        "    os.environ['DEVICE'] = 'gpu'\n    os.environ.setdefault('X', '1')\n"
+    )
+    found = side_channels(tmp_path, "fake")
+    assert [line.split(":")[1].split()[0] for line in found] == ["5", "6", "7"]
+
+
+def test_a_study_hands_its_device_to_the_solver_as_an_argument(monkeypatch, tmp_path):
+    """The study's device reaches solve_normal as ``device=``, not through ROUGHCONTACT_DEVICE."""
+    import roughcontact.contact.normal as normal
+
+    solve_normal = normal.solve_normal
+    from roughcontact.study.answers import answer
+    from roughcontact.study.config import build_study
+
+    seen = []
+
+    def spy(*args, **kwargs):
+        seen.append((kwargs.get("device"), dict(__import__("os").environ).get("ROUGHCONTACT_DEVICE")))
+        return solve_normal(*args, **kwargs)
+
+    monkeypatch.setattr(normal, "solve_normal", spy)
+    monkeypatch.setattr("roughcontact.contact.solve_normal", spy)  # the name the study kind imports
+    document = {
+        "study": {"name": "device", "device": "cpu"},
+        "topographies": {"s": {"generate": "sphere", "shape": 16, "size": "1 um", "radius": "5 um"}},
+        "analysis": [
+            {"name": "n", "model": "normal", "topography": "s", "material": "SiO2", "force": "1 uN"}
+        ],
+    }
+    answer(build_study(document, folder=tmp_path, text="", source="device"))
+    assert seen == [("cpu", None)]

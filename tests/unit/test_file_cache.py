@@ -142,9 +142,9 @@ def test_a_record_without_the_channel_list_is_read_afresh(folder, tmp_path):
 def test_a_changed_file_is_read_again(folder, tmp_path):
     file = tmp_path / "matrix.txt"
     np.savetxt(file, np.arange(16.0).reshape(4, 4))
-    before = read_topography(file, size="1 um", height_unit="nm")
+    before = read_topography(file, size="1 um", height_unit="nm", detrend="none")  # a plane: keep it
     np.savetxt(file, 2 * np.arange(16.0).reshape(4, 4))
-    after = read_topography(file, size="1 um", height_unit="nm")
+    after = read_topography(file, size="1 um", height_unit="nm", detrend="none")
     np.testing.assert_allclose(after.heights, 2 * before.heights)
     assert len(copies(folder)) == 4
 
@@ -253,7 +253,7 @@ def test_a_refused_read_keeps_nothing(folder, shared_topographies):
     with pytest.raises(UnsupportedFormatError):
         read_scan(shared_topographies / "nonsense_txt_file.txt")
     assert copies(folder) == []
-    read_scan(shared_topographies / "xyz-1.txt", size="4 um", height_unit="um")
+    read_scan(shared_topographies / "xyz-1.txt", position_unit="um", height_unit="um")
     assert len(copies(folder)) == 2  # the same file, given what it lacks
 
 

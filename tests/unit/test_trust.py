@@ -15,6 +15,7 @@ from roughcontact.contact.trust import (
 )
 from roughcontact.errors import InputError
 from roughcontact.materials import get_material
+from roughcontact.messages import render
 from roughcontact.topography import Topography
 from roughcontact.topography.channels import classify_channel
 from roughcontact.topography.generate import self_affine
@@ -83,12 +84,13 @@ def test_warnings_say_the_share_and_the_fix():
         "speck_load_share": 0.2,
         "speck_area_share": 0.1,
     }
-    filled_warning, speck_warning = share_warnings(shares, surface, "periodic")
+    filled_warning, speck_warning = (render(w, "cli") for w in share_warnings(shares, surface, "periodic"))
     assert "40 % of the load" in filled_warning and "--exclude-filled" in filled_warning
     assert "20 % of the load" in speck_warning and "--remove-specks" in speck_warning
     assert share_warnings({"filled_load_share": 0.04, "filled_area_share": 0.04}, surface, "periodic") == []
     # concentrated at the edge (a punch edge): 13 % of the load on 3 % of the contact
     (edge,) = share_warnings({"edge_load_share": 0.13, "edge_area_share": 0.03}, _surface(), "free")
+    edge = render(edge, "cli")  # each door names the keys in its words (roughcontact.messages)
     assert "13 % of the load" in edge and "concentrated" in edge and "--boundary periodic" in edge
     # most of the load at the edge, whatever its pressure: decided beyond the scan
     (edge,) = share_warnings({"edge_load_share": 0.84, "edge_area_share": 0.67}, _surface(), "free")
@@ -135,7 +137,7 @@ def test_a_line_contact_speaks_per_length():
     assert scalars["contact_length"] == pytest.approx(result.contact_fraction * 1e-6)
     with pytest.raises(InputError) as caught:
         solve_normal(profile, POLY, mean_pressure=2e7, boundary="free")
-    assert "--boundary periodic" in caught.value.fix_in("cli")
+    assert "--boundary periodic" in caught.value.text("cli")
 
 
 def test_a_load_the_scan_cannot_carry_is_refused_before_solving():

@@ -1,10 +1,11 @@
 """Command line: ``roughcontact inspect | plot | contact | adhesion | friction | presliding | run | ...``.
 
 One module per command group: :mod:`.topography` (``inspect``, ``plot``), :mod:`.study` (``run``,
-``validate``, ``report``, ``models``, ``demo``, ``cite``), :mod:`.contact`, :mod:`.adhesion`,
-:mod:`.friction`, :mod:`.asperity`, :mod:`.presliding` (``presliding``, ``loop-analysis``) and
-:mod:`.indentation` (``nanoindent``). What they share is public in :mod:`.options` (options, a
-command as a study) and :mod:`.output` (running it and showing its results).
+``validate``, ``report``, ``models``, ``demo``, ``cite``), :mod:`.contact`, :mod:`.theories`,
+:mod:`.adhesion`, :mod:`.friction`, :mod:`.asperity`, :mod:`.presliding` (``presliding``,
+``loop-analysis``) and :mod:`.indentation` (``nanoindent``). What they share is public in
+:mod:`.options` (options, a command as a study) and :mod:`.output` (running it and showing its
+results).
 
 The edges of the program live here: unit strings from the user are converted once (through
 :mod:`roughcontact.units`, inside the study schemas), errors become one readable line naming the
@@ -21,7 +22,8 @@ from collections.abc import Collection, Sequence
 
 from .._version import __version__
 from ..errors import ConvergenceError, InputError
-from . import adhesion, asperity, contact, friction, indentation, presliding, study, topography
+from ..messages import Door
+from . import adhesion, asperity, contact, friction, indentation, presliding, study, theories, topography
 from .options import (
     EXIT_CASES_FAILED,
     EXIT_INPUT_ERROR,
@@ -30,6 +32,7 @@ from .options import (
     EXIT_NOT_CONVERGED,
     RecordedOptions,
     given_options,
+    option_strings,
 )
 
 __all__ = [
@@ -42,7 +45,7 @@ __all__ = [
     "main",
 ]
 
-GROUPS = (topography, contact, adhesion, friction, asperity, presliding, indentation, study)
+GROUPS = (topography, contact, theories, adhesion, friction, asperity, presliding, indentation, study)
 """The command groups, in the order ``roughcontact --help`` lists them."""
 
 
@@ -98,13 +101,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     parser = build_parser(built=[command] if (command := _command(argv)) else [])
     args = parser.parse_args(argv)
-    args = RecordedOptions(args, given_options(_subparser(parser, args.command), argv))
+    command_parser = _subparser(parser, args.command)
+    args = RecordedOptions(args, given_options(command_parser, argv), option_strings(command_parser))
     level = (logging.WARNING, logging.INFO, logging.DEBUG)[min(args.verbose, 2)]
     logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")
     try:
         return args.handler(args)
-    except InputError as error:
-        print(f"roughcontact: error: {error}", file=sys.stderr)
+    except InputError as error:  # named as this command's options where the error names keys
+        print(f"roughcontact: error: {error.text(Door.CLI, args.option_for)}", file=sys.stderr)
         return EXIT_INPUT_ERROR
     except ConvergenceError as error:
         print(f"roughcontact: error: {error}", file=sys.stderr)

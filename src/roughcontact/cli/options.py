@@ -11,13 +11,13 @@ each value, so a problem is reported in the user's own terms: the option and the
 from __future__ import annotations
 
 import argparse
-import re
 import sys
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
 from ..errors import InputError, UndefinedPointsError
+from ..messages import Door, render
 from ..topography.io import MAX_FILLED
 from ..topography.process import LEVELLING
 
@@ -47,9 +47,15 @@ class RecordedOptions:
         The options the user typed: destination -> the option string as typed (``--path``).
     """
 
-    def __init__(self, namespace: argparse.Namespace, given: Mapping[str, str]):
+    def __init__(
+        self,
+        namespace: argparse.Namespace,
+        given: Mapping[str, str],
+        options: Mapping[str, str] | None = None,
+    ):
         object.__setattr__(self, "_namespace", namespace)
         object.__setattr__(self, "_given", dict(given))
+        object.__setattr__(self, "_options", dict(options or {}))
         object.__setattr__(self, "_read", set())
         object.__setattr__(self, "_path", [])
 
@@ -72,6 +78,10 @@ class RecordedOptions:
         dests = None if options is None else frozenset(options)
         object.__getattribute__(self, "_path").append((reason, other, dests))
 
+    def option_for(self, dest: str) -> str | None:
+        """Return the option string of destination ``dest`` in this command (None if it has none)."""
+        return object.__getattribute__(self, "_options").get(dest)
+
     def unused_options(self) -> dict[str, str]:
         """Return the options typed but never read: destination -> the option as typed."""
         read = object.__getattribute__(self, "_read")
@@ -84,6 +94,18 @@ class RecordedOptions:
     def reasons_for(self, dest: str) -> list[tuple[str, str]]:
         """Return what decided the path for option ``dest`` and how to take the other (:meth:`taking`)."""
         return [(r, o) for r, o, d in object.__getattribute__(self, "_path") if d is None or dest in d]
+
+
+def option_strings(parser: argparse.ArgumentParser) -> dict[str, str]:
+    """Return each destination of ``parser``'s options and its first long option string (``--pressure``)."""
+    found = {}
+    for action in parser._actions:
+        if action.option_strings:
+            long = [text for text in action.option_strings if text.startswith("--")]
+            found.setdefault(action.dest, (long or action.option_strings)[0])
+        elif action.dest not in ("handler",):
+            found.setdefault(action.dest, action.dest.upper())
+    return found
 
 
 def given_options(parser: argparse.ArgumentParser, argv: Iterable[str]) -> dict[str, str]:
@@ -169,6 +191,7 @@ FILE_OPTIONS = (
     "treat_as_height",
     "size",
     "height_unit",
+    "position_unit",
     "override_file_values",
     "fill_undefined",
     "max_filled",
@@ -207,6 +230,11 @@ def file_options(*, required: bool = True, periodic: bool = True) -> argparse.Ar
         help="physical scan size where the file lacks it, e.g. '5 um' or '5 um x 10 um'",
     )
     group.add_argument("--height-unit", help="unit of the stored heights where the file lacks it, e.g. nm")
+    group.add_argument(
+        "--position-unit",
+        help="unit of the x (y) positions of a text file of points where its header lacks it, e.g. um "
+        "(the positions give the size: no --size beside them)",
+    )
     group.add_argument(
         "--override-file-values",
         action="store_true",
@@ -288,17 +316,25 @@ def new_command(
     return parser
 
 
-def levelling(args: argparse.Namespace) -> str:
-    """Return the levelling of FILE: ``--detrend``, else plane (mean for a ``--periodic`` surface).
+def levelling(args: argparse.Namespace, periodic: bool | None = None) -> str:
+    """Return the levelling of FILE: ``--detrend``, else plane (mean for a periodic surface).
+
+    ``periodic``: whether the surface as read is periodic (``--periodic``, or a file that says so);
+    default ``--periodic``. The default is :func:`~roughcontact.topography.process.default_levelling`'s,
+    as ``read_topography``'s and a study file's.
 
     Raises
     ------
     InputError
         ``--periodic`` with a levelling that would make the surface non-periodic.
     """
-    periodic = getattr(args, "periodic", False)
+    from ..topography.process import default_levelling
+
+    if periodic is None:
+        periodic = getattr(args, "periodic", False)
     if args.detrend is None:
-        return "mean" if periodic else "plane"
+        return default_levelling(periodic)
+    periodic = getattr(args, "periodic", False)
     if periodic and args.detrend not in ("none", "mean"):
         raise InputError(
             "--detrend",
@@ -330,7 +366,7 @@ def read_file(args: argparse.Namespace):
     from ..topography.process import crop, find_specks, level
     from ..units import quantity
 
-    mode = levelling(args)
+    levelling(args)  # a --detrend that --periodic refuses, before the file is read
     for part in args.size or ():  # a unit is required here, as in a study file ('--size 5' is not 5 m)
         quantity(part, "length", field="--size", require_unit=True)
     size = args.size if args.size is None or len(args.size) > 1 else args.size[0]
@@ -340,6 +376,7 @@ def read_file(args: argparse.Namespace):
             channel=args.channel,
             size=size,
             height_unit=args.height_unit,
+            position_unit=args.position_unit,
             periodic=getattr(args, "periodic", False),
             treat_as_height=args.treat_as_height,
             override_file_values=args.override_file_values,
@@ -352,7 +389,9 @@ def read_file(args: argparse.Namespace):
     except InputError as error:
         if error.field in ("crop", "x", "y"):
             raise InputError("--crop", error.problem, error.fix) from None
-        if "cli" in error.fixes or error.field in ("size", "height_unit", "channel"):
+        if error.field == str(args.file) and "cli" in error.fixes:  # the file itself, in the options' words
+            raise InputError(error.field, error.problem, error.fix_in("cli")) from None
+        if "cli" in error.fixes or error.field in ("size", "height_unit", "position_unit", "channel"):
             raise InputError(_flag(error.field), error.problem, error.fix_in("cli")) from None
         raise
     undefined = None
@@ -375,7 +414,7 @@ def read_file(args: argparse.Namespace):
             placeholder, scan.size, periodic=scan.periodic, info=scan.info, specks=find_specks(undefined)
         )
     try:
-        return level(topography, mode), undefined
+        return level(topography, levelling(args, topography.periodic)), undefined
     except InputError as error:
         raise InputError("--detrend", error.problem, error.fix) from None
 
@@ -522,6 +561,7 @@ class CommandStudy:
         self.flags: dict[tuple, str] = {}
         self.words: dict[str, str] = {}
         self.table_words: dict[tuple, dict[str, str]] = {}
+        self.options = None  # key -> the command's option of that name (RecordedOptions.option_for)
 
     # --- building the document ---------------------------------------------------------------
 
@@ -549,6 +589,7 @@ class CommandStudy:
         for key in (
             "size",
             "height_unit",
+            "position_unit",
             "channel",
             "fill_undefined",
             "max_filled",
@@ -563,7 +604,14 @@ class CommandStudy:
         self.name_flag((*where, "file"), "FILE" if file is None else str(file))
         self.flags[where] = "FILE" if file is None else str(file)
         # FILE's own options; the file's units (--size, --height-unit) and --detrend hold for every file
-        for key in ("channel", "height_unit", "max_filled") if file is None else ("height_unit",):
+        for key in (
+            ("channel", "height_unit", "position_unit", "max_filled")
+            if file is None
+            else (
+                "height_unit",
+                "position_unit",
+            )
+        ):
             if getattr(args, key, None) is not None:
                 self.set((*where, key), getattr(args, key), _flag(key))
         if getattr(args, "size", None) is not None:
@@ -733,48 +781,36 @@ class CommandStudy:
                 return self.flags[path[:end]]
         return None
 
-    def translate(self, text: str | None, path: tuple = ()) -> str | None:
-        """Say a study file's keys in ``text`` as this command's options (``film_thickness = '1 um'``).
+    def name_of(self, key: str, path: tuple = ()) -> str | None:
+        """Return the option that names ``key`` in this command's messages, None if it has none.
 
-        Keys with an underscore are replaced wherever they stand, the others only as ``key =``
-        or in a list of keys (``one of mean_pressure, force``), so that words of the prose stay.
-        ``path`` (a problem's place) adds the words of its table (a material's own options).
+        The option the user typed it as (or the command gives it); at ``path`` (a problem's place)
+        the words of its table first (a material's own options); else the command's option of
+        that name (:meth:`RecordedOptions.option_for`). None: the command has no option for the
+        key, and a message names it as the study key it is (:func:`roughcontact.messages.render`).
         """
-        if not text:
-            return text
-        words = dict(self.words)
         for end in range(len(path), 0, -1):
-            if path[:end] in self.table_words:
-                words |= self.table_words[path[:end]]
-                break
+            if path[:end] in self.table_words and key in self.table_words[path[:end]]:
+                return self.table_words[path[:end]][key]
+        if key in self.words:
+            return self.words[key]
+        return self.options(key) if self.options is not None else None
 
-        def listed(match: re.Match) -> str:
-            items = [words.get(item.strip(), item.strip()) for item in match.group(2).split(",")]
-            return match.group(1) + ", ".join(items)
-
-        text = re.sub(r"(one of |found )([\w]+(?:, [\w]+)+)", listed, text)
-        for key, flag in sorted(words.items(), key=lambda item: -len(item[0])):
-            text = re.sub(rf"\b{re.escape(key)}( = true|=True)\b", flag, text)
-            text = re.sub(rf"\b{re.escape(key)} = ", f"{flag} ", text)
-            if "_" in key:
-                text = re.sub(rf"(?<![-\w]){re.escape(key)}\b", flag, text)
-        return text
+    def render(self, text: str | None, path: tuple = ()) -> str | None:
+        """Return a message with its marked keys named as this command's options (``--pressure``)."""
+        return render(text, Door.CLI, lambda key: self.name_of(key, path))
 
     def explain(self, problems: Iterable) -> list[tuple[str, str, str | None]]:
         """Return (option, problem, fix) per problem, in the command's terms and the values as typed."""
         return [
             (
                 self.option_of(p.path) or p.field,
-                self.translate(p.problem, p.path),
-                getattr(p, "cli_fix", None) or self.translate(p.fix, p.path),
+                *p.said(Door.CLI, lambda key, path=p.path: self.name_of(key, path)),
             )
             for p in problems
         ]
 
     def input_error(self, error: InputError) -> InputError:
         """Return a model's refusal (named by its Python parameter) named by the option instead."""
-        flag = self.words.get(error.field)
-        if flag is None:
-            return error
-        fix = error.fixes.get("cli") or self.translate(error.fix)
-        return InputError(flag, self.translate(error.problem), fix)
+        field, problem, fix = error.rendered(Door.CLI, self.name_of)
+        return InputError(self.words.get(error.field, field), problem, fix)

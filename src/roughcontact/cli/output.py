@@ -35,14 +35,15 @@ def run_command(command: CommandStudy, args) -> int:
     if output is None:
         args.taking("without -o nothing is written", "add -o OUT", options=("dpi", "overwrite"))
     refuse_unused(args)  # every option the command's path did not read, before anything is computed
+    command.options = getattr(args, "option_for", None)
     study = command.build()
     for note in study.notes:
-        print(f"roughcontact: note: {command.translate(note)}", file=sys.stderr)
+        print(f"roughcontact: note: {command.render(note)}", file=sys.stderr)
     if not as_json:
         from ..study.report import preparation_line
 
         for name, prepared in study.prepared.items():
-            print(command.translate(preparation_line(name, prepared)))
+            print(command.render(preparation_line(name, prepared)))
     try:
         resume = output is not None and reusable(output, study, replace=replace)
         result = answer(
@@ -53,11 +54,11 @@ def run_command(command: CommandStudy, args) -> int:
     for note in [] if result.summary is None else result.summary.notes:
         print(f"roughcontact: note: {note}", file=sys.stderr)
     for _, line in result.warnings():  # on stderr, where a person sees them, also with --json
-        print(f"roughcontact: warning: {line}", file=sys.stderr)
+        print(f"roughcontact: warning: {command.render(line)}", file=sys.stderr)
     if as_json:
-        print(json.dumps(json_ready(result.document()), indent=2))
+        print(json.dumps(json_ready(result.document(command.render)), indent=2))
     else:
-        print("\n".join(result.text_lines()))
+        print("\n".join(result.text_lines(command.render)))
         _combined_notes(result)
         if result.report is not None:
             print(f"wrote {result.folder}: results.csv, cases/, tables/, figures/ and {result.report.name}")

@@ -14,6 +14,7 @@ import textwrap
 from pathlib import Path
 
 from ..errors import InputError
+from ..messages import Door, render
 from .options import (
     EXIT_CASES_FAILED,
     EXIT_INTERRUPTED,
@@ -48,7 +49,7 @@ def _describe(study) -> list[str]:
 
 def _notes(study) -> None:
     for note in study.notes:
-        print(f"roughcontact: note: {note}", file=sys.stderr)
+        print(f"roughcontact: note: {render(note, Door.STUDY)}", file=sys.stderr)
 
 
 def _validate(args: argparse.Namespace) -> int:
@@ -95,7 +96,7 @@ def run_and_report(
         )
         return EXIT_INTERRUPTED
     for analysis, line in result.warnings():
-        print(f"roughcontact: warning: {analysis}: {line}", file=sys.stderr)
+        print(f"roughcontact: warning: {analysis}: {render(line, Door.STUDY)}", file=sys.stderr)
     summary = result.summary
     for note in summary.notes:  # a lock taken over, stored cases not reused and why
         print(f"roughcontact: note: {note}", file=sys.stderr)
@@ -130,18 +131,22 @@ def _run(args: argparse.Namespace) -> int:
         _quiet_dask(args.verbose)
         worker_storage = args.worker_storage
     else:
-        args.taking("without --workers or --scheduler the cases run in this process", "add --workers N")
+        args.taking(
+            "without --workers or --scheduler the cases run in this process",
+            "add --workers N",
+            options=("worker_storage",),
+        )
         worker_storage = None
     options = {"progress": not args.no_progress and sys.stderr.isatty(), "resume": args.resume}
-    output = args.output
+    output, device = args.output, args.device
     refuse_unused(args)
     study = load_study(args.study)
-    if args.device is not None:  # the command line overrides [study] device
-        if args.device == "gpu":
+    if device is not None:  # the command line overrides [study] device
+        if device == "gpu":
             from .._device import resolve_device
 
             resolve_device("gpu")  # no GPU here: the user hears it now, not from every case
-        study = dataclasses.replace(study, device=args.device)
+        study = dataclasses.replace(study, device=device)
     _notes(study)
     print("\n".join(_describe(study)))
     return run_and_report(

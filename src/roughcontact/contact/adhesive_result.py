@@ -9,8 +9,10 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ..display_html import NotebookDisplay
+from ..messages import as_messages
 from ..topography import Topography
 from ..units import format_si
+from .area import corrected_contact_count
 from .interaction import INTERACTION_FRACTION, MaugisDugdale
 from .trust import area_resolution, contact_shares, share_warnings
 
@@ -82,6 +84,9 @@ class AdhesiveResult(NotebookDisplay):
     cohesive_zone : float
         (pi / 4) E* w / sigma0^2 [m], the cohesive-zone length the grid must resolve.
     parameters : dict
+    contact_area_corrected : ndarray or None
+        The contact area corrected for its pixelated perimeter [m^2] per step (maps; None for a
+        profile): :func:`roughcontact.contact.area.corrected_contact_count` of the touching pixels.
     """
 
     topography: Topography
@@ -103,6 +108,7 @@ class AdhesiveResult(NotebookDisplay):
     tolerance: float
     cohesive_zone: float
     parameters: dict = field(default_factory=dict)
+    contact_area_corrected: np.ndarray | None = None
 
     UNITS: ClassVar[dict[str, str]] = {
         "pull_off_force": "N",
@@ -114,6 +120,8 @@ class AdhesiveResult(NotebookDisplay):
         "dissipated_energy": "J",
         "max_contact_area": "m^2",
         "contact_area_at_pull_off": "m^2",
+        "max_contact_area_corrected": "m^2",
+        "contact_area_at_pull_off_corrected": "m^2",
         "interaction_area_at_pull_off": "m^2",
         "work_of_adhesion": "J/m^2",
         "interaction_length": "m",
@@ -165,6 +173,19 @@ class AdhesiveResult(NotebookDisplay):
             approach=np.array([s.approach for s in states]),
             force=force,
             contact_area=np.array([law.in_contact(s.gap).sum() * pixel_area for s in states]),
+            contact_area_corrected=(
+                np.array(
+                    [
+                        corrected_contact_count(
+                            law.in_contact(s.gap).reshape(shape), periodic=boundary == "periodic"
+                        )
+                        * pixel_area
+                        for s in states
+                    ]
+                )
+                if topography.dim == 2
+                else None
+            ),
             interaction_area=np.array(
                 [
                     np.count_nonzero(~law.in_contact(s.gap) & (law.traction(s.gap) <= threshold)) * pixel_area
@@ -258,6 +279,7 @@ class AdhesiveResult(NotebookDisplay):
         """Pixel size [m] (the side of a square pixel; the spacing of a profile)."""
         return float(np.sqrt(self.pixel_area)) if self.topography.dim == 2 else self.pixel_area
 
+    @as_messages
     def range_warnings(self) -> list[str]:
         """Why the answer may depend on the grid or the window.
 
@@ -279,7 +301,7 @@ class AdhesiveResult(NotebookDisplay):
                 f"the surfaces never touch: the programme's deepest approach, {deepest} from the first "
                 f"touch, leaves them apart, so there is no pull-off (the largest attraction along it, "
                 f"{attraction} at {format_si(self.approach[i], 'm')}, is not one). Give a positive "
-                "max_approach (command line --max-approach), e.g. a few interaction lengths."
+                "«max_approach», e.g. a few interaction lengths."
             ]
         warnings += share_warnings(self.shares, self.topography, self.boundary)
         measure, dim = self.pixel_area, self.topography.dim
@@ -322,7 +344,12 @@ class AdhesiveResult(NotebookDisplay):
         return any(bool(np.any(edge <= threshold)) for edge in edges)
 
     def scalars(self) -> dict[str, Any]:
-        """Return the headline numbers (SI), see ``UNITS``; a line contact's named per :data:`LINE_NAMES`."""
+        """Return the headline numbers (SI), see ``UNITS``; a line contact's named per :data:`LINE_NAMES`.
+
+        A map adds its contact areas corrected for their pixelated perimeter beside the raw pixel
+        counts (``max_contact_area_corrected``, ``contact_area_at_pull_off_corrected``;
+        :mod:`roughcontact.contact.area`).
+        """
         law = self.interaction
         pull_off_approach, pull_off = self._pull_off()
         i = self.map_steps["pull_off"]
@@ -342,6 +369,13 @@ class AdhesiveResult(NotebookDisplay):
             "dissipated_energy": self.dissipated_energy,
             "max_contact_area": float(self.contact_area.max()),
             "contact_area_at_pull_off": float(self.contact_area[i]),
+        }
+        if self.contact_area_corrected is not None:
+            scalars |= {
+                "max_contact_area_corrected": float(self.contact_area_corrected.max()),
+                "contact_area_at_pull_off_corrected": float(self.contact_area_corrected[i]),
+            }
+        scalars |= {
             "interaction_area_at_pull_off": float(self.interaction_area[i]),
             "cohesive_zone_length": self.cohesive_zone,
             "cohesive_zone_pixels": self.cohesive_zone / spacing,
@@ -381,6 +415,17 @@ class AdhesiveResult(NotebookDisplay):
                 "step",
                 self.contact_area,
                 {"units": "m^2" if self.topography.dim == 2 else "m"},
+            ),
+            **(
+                {}
+                if self.contact_area_corrected is None
+                else {
+                    "contact_area_corrected": (
+                        "step",
+                        self.contact_area_corrected,
+                        {"units": "m^2", "long_name": "contact area corrected for its pixelated perimeter"},
+                    )
+                }
             ),
             "interaction_area": (
                 "step",

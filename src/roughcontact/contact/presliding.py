@@ -282,7 +282,7 @@ def check_inside(pressure: np.ndarray, label: str) -> None:
             "window",
             f"{label}: the contact reaches the border of the solved window ({n} x {m} px), so the "
             "free-boundary answer would be cut off.",
-            "pass a larger window (pixels), window = 'auto' (chosen from the ball's heights and grown "
+            "pass a larger «window» (pixels), «window=auto» (chosen from the ball's heights and grown "
             "until it holds the contact), or a coarser scan.",
         )
 
@@ -544,6 +544,7 @@ class PreslidingResult(NotebookDisplay):
         "stroke": "m",
         "radius": "m",
         "contact_area": "m^2",
+        "contact_area_corrected": "m^2",
         "max_pressure": "Pa",
         "last_delta_x": "m",
         "last_delta_y": "m",
@@ -608,6 +609,7 @@ class PreslidingResult(NotebookDisplay):
             "friction_coefficient": self.friction_coefficient,
             "radius": self.radius,
             "contact_area": normal.contact_area,
+            "contact_area_corrected": normal.contact_area_corrected,  # for its pixelated perimeter
             "patches": normal.number_of_patches,
             "max_pressure": float(np.max(normal.pressure)),
         }

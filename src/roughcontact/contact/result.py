@@ -10,7 +10,10 @@ import numpy as np
 from scipy import ndimage
 
 from ..display_html import NotebookDisplay
+from ..messages import as_messages
+from ..results import levelling_of
 from ..topography import Topography
+from .area import corrected_contact_count, perimeter_switches
 from .trust import area_resolution, contact_shares, one_pixel_patches, patch_resolution, share_warnings
 
 
@@ -97,6 +100,7 @@ class NormalContactResult(NotebookDisplay):
         "mean_pressure": "Pa",
         "approach": "m",
         "contact_area": "m^2",
+        "contact_area_corrected": "m^2",
         "mean_gap": "m",
         "max_pressure": "Pa",
         "contact_modulus": "Pa",
@@ -104,7 +108,8 @@ class NormalContactResult(NotebookDisplay):
         "contact_length": "m",
     }
     """SI unit of each dimensional scalar of :meth:`scalars`. A line scan (plane-strain line contact)
-    reports ``force_per_length`` and ``contact_length`` instead of ``force`` and ``contact_area``."""
+    reports ``force_per_length`` and ``contact_length`` instead of ``force`` and ``contact_area``, and no
+    corrected area (:mod:`roughcontact.contact.area` corrects maps)."""
 
     def __post_init__(self):
         for name in ("pressure", "gap", "displacement"):
@@ -143,6 +148,31 @@ class NormalContactResult(NotebookDisplay):
     def contact_area(self) -> float:
         """Real contact area [m^2] (for a line scan: contact length [m])."""
         return float(np.count_nonzero(self.contact_mask) * self._pixel_measure)
+
+    @cached_property
+    def perimeter_switches(self) -> int:
+        """Contact/no-contact switches along the grid lines (across the period when periodic); maps only.
+
+        The perimeter of the contact in pixels, :func:`roughcontact.contact.area.perimeter_switches`.
+        """
+        return perimeter_switches(self.contact_mask, periodic=self.boundary == "periodic")
+
+    @property
+    def contact_fraction_corrected(self) -> float:
+        """Real over nominal contact area corrected for the pixelated perimeter [-] (maps only).
+
+        :math:`(N_a - c M)/N^2` of Yastrebov et al. (2017), :mod:`roughcontact.contact.area`: the raw
+        :attr:`contact_fraction` less ``c = (pi - 1 + ln 2)/24`` pixel per perimeter switch.
+        """
+        return (
+            corrected_contact_count(self.contact_mask, periodic=self.boundary == "periodic")
+            / self.pressure.size
+        )
+
+    @property
+    def contact_area_corrected(self) -> float:
+        """Real contact area corrected for the pixelated perimeter [m^2] (maps only, see above)."""
+        return self.contact_fraction_corrected * self.topography.area
 
     @cached_property
     def number_of_patches(self) -> int:
@@ -187,25 +217,47 @@ class NormalContactResult(NotebookDisplay):
     def scalars(self) -> dict[str, float]:
         """Return the scalar results as a flat dictionary (SI), the :attr:`shares` last.
 
+        A surface read from a file says how it was levelled: ``levelling`` (``"plane"``, ``"none"``,
+        ..., :func:`roughcontact.results.levelling_of`).
+
         A line contact (1D) says what its numbers are: ``force_per_length`` [N/m] and
-        ``contact_length`` [m] in place of ``force`` and ``contact_area``.
+        ``contact_length`` [m] in place of ``force`` and ``contact_area``. A map reports beside the
+        raw pixel count its area corrected for the pixelated perimeter, ``contact_fraction_corrected``
+        and ``contact_area_corrected``, and the ``perimeter_switches`` the correction rests on
+        (:mod:`roughcontact.contact.area`).
         """
         line = self.topography.dim == 1
-        return {
-            "force_per_length" if line else "force": self.force,
-            "mean_pressure": self.mean_pressure,
-            "approach": self.approach,
-            "contact_fraction": self.contact_fraction,
-            "contact_length" if line else "contact_area": self.contact_area,
-            "number_of_patches": self.number_of_patches,
-            "one_pixel_patches": self.one_pixel_patches,
-            "mean_gap": self.mean_gap,
-            "max_pressure": float(self.pressure.max()),
-            "iterations": int(self.iterations),
-            "residual": float(self.residual),
-            "contact_modulus": self.contact_modulus,
-        } | self.shares
+        return (
+            {
+                "force_per_length" if line else "force": self.force,
+                "mean_pressure": self.mean_pressure,
+                "approach": self.approach,
+                "contact_fraction": self.contact_fraction,
+                "contact_length" if line else "contact_area": self.contact_area,
+            }
+            | (
+                {}
+                if line
+                else {
+                    "contact_fraction_corrected": self.contact_fraction_corrected,
+                    "contact_area_corrected": self.contact_area_corrected,
+                    "perimeter_switches": self.perimeter_switches,
+                }
+            )
+            | {
+                "number_of_patches": self.number_of_patches,
+                "one_pixel_patches": self.one_pixel_patches,
+                "mean_gap": self.mean_gap,
+                "max_pressure": float(self.pressure.max()),
+                "iterations": int(self.iterations),
+                "residual": float(self.residual),
+                "contact_modulus": self.contact_modulus,
+            }
+            | levelling_of(self.topography)
+            | self.shares
+        )
 
+    @as_messages
     def range_warnings(self, *, slope_pressure: float = 0.1) -> list[str]:
         """Say where this solution leaves the range of the model that produced it (empty when it does not).
 
@@ -231,7 +283,7 @@ class NormalContactResult(NotebookDisplay):
         if self.hardness is None and peak > slope_pressure * self.contact_modulus:
             notes.append(
                 f"peak pressure {peak / self.contact_modulus:.2g} E* (over {slope_pressure:g} E*): "
-                "local slopes beyond the small-slope elastic theory; give a hardness for "
+                "local slopes beyond the small-slope elastic theory; give a «hardness» for "
                 "elastic-plastic contact, or treat the peak values as indicative only."
             )
         if self.contact_fraction >= 1.0:

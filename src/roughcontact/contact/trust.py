@@ -173,7 +173,7 @@ def share_warnings(shares: dict[str, float], topography, boundary: str) -> list[
             f"{100 * filled:.3g} % of the load ({100 * shares['filled_area_share']:.3g} % of the contact "
             f"area) rests on filled points, heights interpolated where the file has none ({count} of "
             f"{topography.heights.size} points): that part of the answer is invented. Keep them out of "
-            "contact (exclude_filled; command line --exclude-filled), or crop the undefined region away."
+            "contact («exclude_filled=true»), or crop the undefined region away."
         )
     specks = shares.get("speck_load_share", 0.0)
     if specks > INVENTED_SHARE:
@@ -181,8 +181,8 @@ def share_warnings(shares: dict[str, float], topography, boundary: str) -> list[
         warnings.append(
             f"{100 * specks:.3g} % of the load ({100 * shares['speck_area_share']:.3g} % of the contact "
             f"area) rests on specks, {count} measured points standing alone amid undefined ones (often "
-            "outliers that the filling turns into spikes). Remove them before filling (remove_specks; "
-            "command line --remove-specks); roughcontact inspect lists them."
+            "outliers that the filling turns into spikes). Remove them before filling "
+            "(«remove_specks=true»); roughcontact inspect lists them."
         )
     edge, on_edge = shares.get("edge_load_share", 0.0), shares.get("edge_area_share", 0.0)
     concentrated = edge > EDGE_SHARE and edge >= EDGE_EXCESS * on_edge
@@ -208,13 +208,12 @@ def share_warnings(shares: dict[str, float], topography, boundary: str) -> list[
         said += ": the contact is decided at the edge, by a surface that continues beyond the scan unseen."
     if excluded:
         fix = (
-            "Crop the scan to a region without undefined points (crop; command line --crop), or a lower load."
+            "Crop the scan to a region without undefined points («crop»), or a lower load."
         )
     else:
         fix = (
-            "Use a periodic boundary (boundary = 'periodic'; command line --boundary periodic) where the "
-            "surface may be repeated, a lower load or a larger scan; a scan bowed by the scanner needs "
-            "detrend = 'curvature' (--detrend curvature)."
+            "Use a periodic boundary («boundary=periodic») where the surface may be repeated, a lower "
+            "load or a larger scan; a scan bowed by the scanner needs «detrend=curvature»."
         )
     warnings.append(f"{said} {fix}")
     return warnings

@@ -58,6 +58,7 @@ from ..elasticity.halfspace import ElasticLayer
 from ..elasticity.stress import StressField, subsurface_stress
 from ..errors import ConvergenceError, InputError
 from ..materials import Material
+from ..messages import as_messages
 from ..progress import tracked
 from ..topography import Topography
 from ..units import format_si
@@ -268,6 +269,7 @@ class VolumePlasticResult(NotebookDisplay):
         heights = self.topography.heights
         return float(np.min(heights.max() - heights + self.residual_displacement[-1]))
 
+    @as_messages
     def range_warnings(self, *, small_strain: float = 0.05, depth_margin: float = 0.75) -> list[str]:
         """Say where this solution leaves the range of its model (empty when it does not).
 
@@ -539,7 +541,7 @@ def solve_elastic_plastic(
                 f"step {len(record['force']) + 1} ({kind} {format_si(target, unit)}); "
                 f"{len(record['force'])} step(s) had converged"
                 + (f", up to {format_si(max(record['force']), 'N')}." if record["force"] else "."),
-                f"give a deeper volume, e.g. depth = '{format_si(2 * depth, 'm')}' (and twice the layers to "
+                f"give a deeper volume, e.g. «depth={format_si(2 * depth, 'm')}» (and twice the «layers» to "
                 "keep the cells).",
             )
         strain = strain + g

@@ -27,6 +27,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError
+from ..messages import Door, render
 from .config import Study
 from .display import columns, missing_text, shown, text_table
 from .kind import CaseRecord
@@ -94,12 +95,14 @@ class StudyAnswer:
         """Return (analysis, warning) for every model-range and trust warning of the cases."""
         return [(analysis.name, line) for analysis in self.analyses for line in warning_lines(analysis)]
 
-    def text_lines(self) -> list[str]:
+    def text_lines(self, say=None) -> list[str]:
         """Return the answer as a command prints it: each analysis' summary and its tables.
 
         One case shows every scalar; several a table of the headline ones (engineering units,
-        :mod:`roughcontact.study.display`).
+        :mod:`roughcontact.study.display`). ``say`` renders the sentences' marked keys in a door's
+        words (a command passes its own; default Python's, for a notebook or a script).
         """
+        say = say or (lambda text: render(text, Door.PYTHON))
         tables, _ = self.tables
         lines: list[str] = []
         for analysis in self.analyses:
@@ -111,8 +114,8 @@ class StudyAnswer:
                     name = f"spread over {analysis.realisations} realisations (headline quantities)"
                 lines.append(f"  table {name}:")
                 lines += table_lines(rows, indent="    ", missing=analysis.kind.missing)
-                lines += [f"    note: {note}" for note in notes_of(rows)]
-            lines += [f"  {line}" for line in realisation_lines(analysis)]
+                lines += [f"    note: {say(note)}" for note in notes_of(rows)]
+            lines += [f"  {say(line)}" for line in realisation_lines(analysis)]
         return lines
 
     def _repr_html_(self) -> str:
@@ -120,13 +123,18 @@ class StudyAnswer:
         head = f"<p><strong>{html.escape(self.study.name)}</strong> ({html.escape(where)})</p>"
         return f"<div>{head}{''.join(analysis._repr_html_() for analysis in self.analyses)}</div>"
 
-    def document(self) -> dict[str, Any]:
-        """Return the answer as one JSON-ready document (``--json``): parameters, scalars, tables."""
+    def document(self, say=None) -> dict[str, Any]:
+        """Return the answer as one JSON-ready document (``--json``): parameters, scalars, tables.
+
+        ``say`` renders the cases' warnings in the door's words (a command passes its own,
+        :meth:`roughcontact.cli.options.CommandStudy.render`); default the study file's.
+        """
         tables, _ = self.tables
+        say = say or (lambda text: render(text, Door.STUDY))
         return {
             "command": self.study.name,
             "topographies": self.study.prepared,
-            "analyses": [analysis_document(analysis, tables) for analysis in self.analyses],
+            "analyses": [analysis_document(analysis, tables, say) for analysis in self.analyses],
             "output": None if self.folder is None else str(self.folder),
         }
 
@@ -240,7 +248,7 @@ def reusable(folder: str | Path, study: Study, *, replace: bool = False) -> bool
     return False
 
 
-def analysis_document(analysis, tables) -> dict[str, Any]:
+def analysis_document(analysis, tables, say=lambda text: text) -> dict[str, Any]:
     """Return an analysis as JSON-ready data: its cases' parameters, scalars and warnings, its tables."""
     return {
         "name": analysis.name,
@@ -253,7 +261,7 @@ def analysis_document(analysis, tables) -> dict[str, Any]:
                 "axes": record.data.get("axes") or {},
                 "parameters": record.parameters,
                 "scalars": record.scalars,
-                "warnings": record.data.get("warnings") or [],
+                "warnings": [say(line) for line in record.data.get("warnings") or []],
             }
             for record in analysis.records
             if record is not None

@@ -51,6 +51,7 @@ import difflib
 import hashlib
 import json
 import tomllib
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
@@ -63,7 +64,6 @@ from ..materials import MATERIALS, Material, get_material
 from ..spread import realisation_seed
 from ..topography import Topography
 from ..topography.io import channel_of
-from ..units import format_si
 from .kind import CaseParameters, Kind
 from .problems import Problem, Where, collect
 from .schema import (
@@ -267,7 +267,7 @@ def preparation(spec: FileTopography, topography: Topography) -> dict[str, Any]:
         "channel": channel_of(topography.info),
         "grid": list(topography.shape),
         "size_m": list(topography.size),
-        "detrend": spec.levelling,
+        "detrend": topography.info.get("detrend", spec.levelling),
         "undefined_points_filled": filled,
         "undefined_fraction_filled": filled / topography.heights.size,
         "filled_excluded_from_contact": bool(spec.exclude_filled and filled),
@@ -310,8 +310,7 @@ class KnownInputs:
             raise InputError(
                 "counter_topography",
                 error.problem,
-                "add resample = true to interpolate both onto a common grid, or bring the scans to one grid.",
-                fixes={"cli": "pass --resample to interpolate both onto a common grid."},
+                "add «resample=true» to interpolate both onto a common grid, or bring the scans to one grid.",
             ) from None
 
     def grid(self, name: str) -> tuple[tuple[int, ...], tuple[float, ...]] | None:
@@ -369,7 +368,7 @@ class _Builder:
             self.problem(
                 where,
                 error.problem,
-                "install roughcontact[gpu], or write device = 'cpu'.",
+                "install roughcontact[gpu], or «device=cpu».",
                 error.fix_in("cli"),
             )
 
@@ -413,52 +412,58 @@ class _Builder:
                 self.loaded[key] = self._read(spec, where)
             if self.loaded[key] is None:
                 return None
+        elif getattr(spec, "size", None) is not None:  # a generator's: the same check as a file's
+            from ..topography.generate import grid_of
+            from ..topography.plausible import size_doubt
+
+            doubt = size_doubt(grid_of(spec.shape, spec.size)[1], generated=True)
+            if doubt is not None:
+                self.notes.append(f"{where.label}: {doubt.said('marked')}")
         return spec
 
     def _read(self, spec: FileTopography, where: Where) -> Topography | None:
         from ..topography.io import read_topography
-        from ..topography.process import exclude_filled, level
+        from ..topography.plausible import PlausibilityWarning, doubts
+        from ..topography.process import exclude_filled
 
         try:
-            topography = read_topography(
-                spec.file,
-                channel=spec.channel,
-                size=spec.size,
-                height_unit=spec.height_unit,
-                crop=spec.crop,
-                undefined="interpolate" if spec.fill_undefined else "refuse",
-                max_filled=spec.max_filled,
-                remove_specks=spec.remove_specks,
-                periodic=spec.periodic,
-                treat_as_height=spec.treat_as_height,
-                override_file_values=spec.override_file_values,
-            )
+            with warnings.catch_warnings():  # said below as notes, in a study's words
+                warnings.simplefilter("ignore", PlausibilityWarning)
+                topography = read_topography(
+                    spec.file,
+                    channel=spec.channel,
+                    size=spec.size,
+                    height_unit=spec.height_unit,
+                    position_unit=spec.position_unit,
+                    crop=spec.crop,
+                    undefined="interpolate" if spec.fill_undefined else "refuse",
+                    max_filled=spec.max_filled,
+                    remove_specks=spec.remove_specks,
+                    periodic=spec.periodic,
+                    treat_as_height=spec.treat_as_height,
+                    override_file_values=spec.override_file_values,
+                    detrend=spec.detrend,
+                )
         except InputError as error:  # said in a study file's words
             fix = error.fix
             if isinstance(error, MissingMetadataError):
-                keys = ", ".join(f"{key} = {value!r}" for key, value in error.missing.items())
+                keys = ", ".join(f"«{key}={value}»" for key, value in error.missing.items())
                 notes = "".join(f"; {note}" for note in error.notes)
-                fix = f"give the real values, e.g. {keys} (a non-square scan: size = '5 um x 10 um'){notes}."
+                square = " (a non-square scan: «size=5 um x 10 um»)" if "size" in error.missing else ""
+                fix = f"give the real values, e.g. {keys}{square}{notes}."
             elif isinstance(error, UndefinedPointsError) and error.allowing is not None:
-                fix = f"if that is acceptable, allow it: max_filled = {error.allowing:g}; or crop them away."
+                fix = f"if that is acceptable, allow it: «max_filled={error.allowing:g}»; or crop them away."
             elif isinstance(error, UndefinedPointsError):
-                fix = "add fill_undefined = true to fill them by harmonic interpolation, or crop them away."
+                fix = "add «fill_undefined=true» to fill them by harmonic interpolation, or crop them away."
             else:
                 fix = error.fix_in("study")
-            named = ("size", "height_unit", "channel", "max_filled", "crop", "x", "y")
+            named = ("size", "height_unit", "position_unit", "channel", "max_filled", "crop", "x", "y")
             key = {"x": "crop", "y": "crop"}.get(error.field, error.field) if error.field in named else "file"
             place = Where(where.child(key).path, f"{where.label} ({error.field})")
             self.problem(place, error.problem, fix, error.fixes.get("cli"))
             return None
-        sides = [side for side in topography.size if not 1e-9 <= side <= 1.0]
-        if sides:
-            shown = " x ".join(format_si(side, "m") for side in topography.size)
-            self.notes.append(
-                f"{where.label}: the scan is {shown}, outside 1 nm to 1 m; check its size and "
-                "height unit (the file's metadata, or size and height_unit here)."
-            )
-        levelled = level(topography, spec.levelling)
-        return exclude_filled(levelled) if spec.exclude_filled else levelled
+        self.notes += [f"{where.label}: {doubt.said('marked')}" for doubt in doubts(topography)]
+        return exclude_filled(topography) if spec.exclude_filled else topography
 
     def _material(self, name: str, raw: dict) -> Material | None:
         where = Where(("materials", name), f"materials.{name}")
@@ -681,7 +686,16 @@ class _Builder:
 
     def _compare(self, kind: Kind, raw: Any, where: Where):
         spec = collect(self.problems, where, kind.compare, self._renamed(kind, where, raw))
-        return None if spec is None else self.with_files(spec, where)
+        spec = None if spec is None else self.with_files(spec, where)
+        if spec is not None and hasattr(spec, "check"):  # its files read now (their units, columns)
+            try:
+                spec.check()
+            except InputError as error:
+                self.problem(
+                    where.child(error.field), error.problem, error.fix_in("study"), error.fixes.get("cli")
+                )
+                return None
+        return spec
 
     def with_files(self, spec: Strict, where: Where) -> Strict | None:
         """Return ``spec`` with its file (Path) fields resolved by :meth:`file`; None if one is missing."""
@@ -725,14 +739,19 @@ class _Builder:
         if axis is None:
             return problem
         section, values = swept.get(axis, ("sweep", []))
-        fix = problem.fix or ""
+        said, fix = problem.marked
+        fix = fix or ""
         others = [v for v in values if v != axes[axis]]
         if others and (
             "kind" in problem.problem or "unit" in problem.problem or "expected" in problem.problem
         ):
             fix = f"{fix} (other values of this {section}: {others[0]!r})".strip()
         return Problem(
-            f"{where.label}.{section}.{axis}", problem.problem, fix or None, (*where.path, section, axis)
+            f"{where.label}.{section}.{axis}",
+            said,
+            fix or None,
+            (*where.path, section, axis),
+            problem.cli_fix,
         )
 
     def _case(
@@ -767,7 +786,9 @@ class _Builder:
             try:
                 kind.check(checked)
             except InputError as error:
-                self.problem(label.child(error.field), error.problem, error.fix)
+                self.problem(
+                    label.child(error.field), error.problem, error.fix_in("study"), error.fixes.get("cli")
+                )
                 return None
         found: dict[str, Strict] = {}
         for field_name in references(schema, "topography"):

@@ -24,6 +24,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
+from ..messages import marked
 from ..plotting.cases import axis_words, figure_caption, plotting_function
 from ..units import format_si
 from .schema import Strict
@@ -74,6 +75,10 @@ class CaseOutput:
     scalars: dict[str, Any]
     dataset: Any = None  # xarray.Dataset or None
     warnings: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        """Keep the warnings marked (:mod:`roughcontact.messages`): each door says them in its words."""
+        object.__setattr__(self, "warnings", tuple(marked(w) for w in self.warnings))
 
 
 _LOAD_KEYS = {"mean_pressure": "Pa", "force": "N", "normal_force": "N", "approach": "m", "max_force": "N"}

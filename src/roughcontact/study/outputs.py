@@ -373,11 +373,7 @@ def draw_figures(folder: str | Path, *, dpi: int = 150) -> tuple[list[Path], lis
         files = [folder / name for name in previous.get("files", [])]
         if previous.get("stamp") == stamp and all(path.is_file() for path in files):
             return files, list(previous.get("problems", []))
-    import matplotlib
-
-    matplotlib.use("Agg")
-
-    figures, problems = produce(analyses, "figure")
+    figures, problems = produce(analyses, "figure")  # Figure objects: saved without pyplot or a backend
     written = []
     for analysis, name, figure in figures:
         path = folder / "figures" / f"{analysis}_{name}.png"
@@ -454,7 +450,7 @@ def realisation_lines(analysis: StoredAnalysis) -> list[str]:
     if once:
         lines.append(
             f"Every number rests on one realisation of the generated surface(s) {', '.join(once)}: "
-            "another seed gives another answer. Add realisations = N (--realisations N) and leave their "
-            "seed out for the spread."
+            "another seed gives another answer. Add «realisations=N» and leave their seed out for the "
+            "spread."
         )
     return lines

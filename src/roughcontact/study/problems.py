@@ -16,6 +16,7 @@ from typing import Any
 from pydantic import BaseModel, ValidationError
 
 from ..errors import InputError
+from ..messages import Door, marked, render
 
 Path = tuple[str | int, ...]
 """Where a value sits in a study document: section, table or analysis index, key, ..."""
@@ -36,22 +37,23 @@ class Where:
 class Problem(tuple):
     """One problem of a study document: a ``(field, problem, fix)`` triple that knows its place.
 
-    It iterates, indexes and compares as the triple (two cases meeting the same problem of a shared
-    table report it once); ``path`` says where the value sits in the document.
+    It iterates, indexes and compares as the triple, in a study file's words (two cases meeting
+    the same problem of a shared table report it once); ``path`` says where the value sits in the
+    document, and the marked texts (:mod:`roughcontact.messages`) let another door say it in its
+    own words (:meth:`said`).
 
     Attributes
     ----------
     field : str
         The place as shown to the user.
     problem : str
-        What is wrong, with the value where it helps.
+        What is wrong, with the value where it helps (a study file's words).
     fix : str or None
-        How to fix it.
+        How to fix it (a study file's words).
     path : tuple
         Where the value sits in the document (``("materials", "film", "youngs_modulus")``).
     cli_fix : str or None
-        The fix in the command line's words, where a study file's words do not translate
-        (``leave --size out`` for ``remove size``).
+        The fix on the command line where it differs in substance from a study file's (marked).
     """
 
     path: Path
@@ -59,9 +61,10 @@ class Problem(tuple):
 
     def __new__(cls, field: str, problem: str, fix: str | None, path: Path = (), cli_fix: str | None = None):
         """Make the triple, with its ``path`` in the document."""
-        self = super().__new__(cls, (field, problem, fix))
+        self = super().__new__(cls, (field, render(problem, Door.STUDY), render(fix, Door.STUDY)))
         self.path = tuple(path)
-        self.cli_fix = cli_fix
+        self.cli_fix = None if cli_fix is None else marked(cli_fix)
+        self.marked = (marked(problem), None if fix is None else marked(fix))
         return self
 
     @property
@@ -78,6 +81,13 @@ class Problem(tuple):
     def fix(self) -> str | None:
         """How to fix it."""
         return self[2]
+
+    def said(self, door: Door | str, option_of=None) -> tuple[str, str | None]:
+        """Return (problem, fix) in the words of ``door`` (the command line's: ``option_of`` names keys)."""
+        problem, fix = self.marked
+        if Door(door) is Door.CLI and self.cli_fix is not None:
+            fix = self.cli_fix
+        return render(problem, door, option_of), render(fix, door, option_of)
 
 
 def _label(where: Where, loc: tuple) -> str:
@@ -108,9 +118,11 @@ def from_validation_error(
             value = value.get(context["field"]) if isinstance(value, dict) else None
             whole_table = value is None
         shown = "" if item["type"] == "missing" or whole_table else f" (got {value!r})"
-        fix = context.get("fix")
+        fix, cli_fix = context.get("fix"), None
         if item["type"] == "missing":
-            problem, fix = "is required but missing.", f"add {item['loc'][-1]} = ... to the table."
+            missing = item["loc"][-1]
+            problem, fix = "is required but missing.", f"add «{missing}=...» to the table."
+            cli_fix = f"add «{missing}=...»"
         elif item["type"] == "extra_forbidden":
             known = list(schema.model_fields) if schema is not None else []
             close = difflib.get_close_matches(str(item["loc"][-1]), known, n=1)
@@ -132,7 +144,9 @@ def from_validation_error(
         else:
             problem = item["msg"].removeprefix("Value error, ").rstrip(".") + "."
             fix = fix or _generic_fix(item["type"], context)
-        problems.append(Problem(_label(where, item["loc"]), problem + shown, fix, _path(where, item["loc"])))
+        problems.append(
+            Problem(_label(where, item["loc"]), problem + shown, fix, _path(where, item["loc"]), cli_fix)
+        )
     return _one_per_typo(problems)
 
 

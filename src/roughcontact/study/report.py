@@ -13,6 +13,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
+from ..messages import Door, render
 from ..references import Reference
 from ..topography.io import channel_words
 from ..topography.process import LEVELLING
@@ -177,16 +178,16 @@ def _analysis_section(folder: Path, analysis: StoredAnalysis, rows: list[dict]) 
         if path.stem == f"{analysis.name}_spread":
             table = footnoted(table)  # a cut interval's note once, under the table
         parts.append(_table(table, missing=dict(analysis.kind.missing)))
-        parts += [f'<p class="note">{html.escape(note)}</p>' for note in notes_of(table)]
+        parts += [f'<p class="note">{html.escape(render(note, Door.STUDY))}</p>' for note in notes_of(table)]
     for name in analysis.figures:
         path = folder / "figures" / f"{analysis.name}_{name}.png"
         if path.exists():
             parts.append(_image(path, figure_caption(analysis.kind.figures[name])))
-    parts += [f"<p>{html.escape(line)}</p>" for line in realisation_lines(analysis)]
+    parts += [f"<p>{html.escape(render(line, Door.STUDY))}</p>" for line in realisation_lines(analysis)]
     warnings = warning_lines(analysis)
     if warnings:
         parts.append("<h3>Outside the model's range</h3><ul>")
-        parts += [f'<li class="pending">{html.escape(line)}</li>' for line in warnings]
+        parts += [f'<li class="pending">{html.escape(render(line, Door.STUDY))}</li>' for line in warnings]
         parts.append("</ul>")
     failed = [r for r in analysis.records if r is not None and r["status"] == "failed"]
     if failed:

@@ -173,10 +173,12 @@ class FileTopography(Strict):
     """An instrument file read through :func:`roughcontact.topography.io.read_topography`.
 
     ``file`` is relative to the study file. ``size`` and ``height_unit`` are needed only where the
-    file lacks them; ``detrend`` removes a background after reading (one of ``none``, ``mean``,
-    ``plane``, ``curvature``, ``sphere``: :func:`roughcontact.topography.process.level`). A measured
-    scan is levelled with ``plane`` unless the study says otherwise (its tilt would decide where
-    contact happens); a generated surface is used as made.
+    file lacks them (a text file of points gives its size by its positions: ``position_unit`` where
+    its header does not give their unit, never ``size``); ``detrend`` removes a background after
+    reading (one of ``none``, ``mean``, ``plane``, ``curvature``, ``sphere``:
+    :func:`roughcontact.topography.process.level`). A measured scan is levelled with ``plane``
+    unless the study says otherwise (its tilt would decide where contact happens); a generated
+    surface is used as made.
     """
 
     file: Path
@@ -185,6 +187,8 @@ class FileTopography(Strict):
     """Read a channel whose name says it holds no heights (phase, amplitude, ...) as heights."""
     size: LengthPerAxis | None = None
     height_unit: str | None = None
+    position_unit: str | None = None
+    """Unit of a text file's x (y) positions where its header gives none (the positions give the size)."""
     override_file_values: bool = False
     """Use size and height_unit where the file stores other values (else such a clash is refused)."""
     crop: list[Length] | None = None
@@ -205,10 +209,10 @@ class FileTopography(Strict):
         if self.periodic and self.detrend not in (None, "none", "mean"):
             raise PydanticCustomError(
                 "quantity",
-                "detrend = {detrend} removes a background from a periodic surface, which would not repeat",
+                "«detrend={detrend}» removes a background from a periodic surface, which would not repeat",
                 {
-                    "detrend": repr(self.detrend),
-                    "fix": "use detrend = 'mean' (or 'none'), or leave periodic out",
+                    "detrend": self.detrend,
+                    "fix": "use «detrend=mean» (or «detrend=none»), or leave «periodic» out",
                 },
             )
         return self
@@ -383,17 +387,17 @@ class Paper000Scan(Strict):
         if (self.ra is None) == (self.sample is None):
             raise PydanticCustomError(
                 "quantity",
-                "give the scan's ra or paper 000's sample, exactly one",
-                {"fix": "e.g. sample = 'Ra 1.45 nm', or ra = '1.45 nm'"},
+                "give the scan's «ra» or paper 000's «sample», exactly one",
+                {"fix": "e.g. «sample=Ra 1.45 nm», or «ra=1.45 nm»"},
             )
         if self.sample is not None and self.sample not in PAPER000_SAMPLES:
             raise PydanticCustomError(
                 "quantity",
                 "sample {sample!r} is not one of paper 000's",
-                {"sample": self.sample, "fix": f"sample is one of {list(PAPER000_SAMPLES)}"},
+                {"sample": self.sample, "fix": f"«sample» is one of {list(PAPER000_SAMPLES)}"},
             )
         if self.ra is not None and not self.ra > 0:
-            raise PydanticCustomError("quantity", "ra must be positive", {"fix": "e.g. ra = '1.45 nm'"})
+            raise PydanticCustomError("quantity", "«ra» must be positive", {"fix": "e.g. «ra=1.45 nm»"})
         return self
 
     @property
@@ -513,8 +517,8 @@ class MaterialSpec(Strict):
         if self.library is None and (self.youngs_modulus is None or self.poissons_ratio is None):
             raise PydanticCustomError(
                 "material",
-                "a material needs library = NAME, or youngs_modulus and poissons_ratio",
-                {"fix": "e.g. youngs_modulus = '70 GPa' and poissons_ratio = 0.17"},
+                "a material needs «library=NAME», or «youngs_modulus» and «poissons_ratio»",
+                {"fix": "e.g. «youngs_modulus=70 GPa» and «poissons_ratio=0.17»"},
             )
         return self
 

@@ -29,6 +29,7 @@ import io
 import math
 import os
 import shlex
+import warnings
 import zlib
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
@@ -40,6 +41,8 @@ from typing import Any
 import numpy as np
 
 from .._files import existing_file, first_line
+from .._text_table import split_cells, split_header
+from ..checks import flag as boolean
 from ..checks import positive
 from ..errors import (
     InputError,
@@ -52,9 +55,10 @@ from ..units import format_si, length_unit_factor, quantity
 from .channels import ChannelKind, classify_channel
 from .file_cache import ConvertedCopy
 from .native import channel_name, is_native_file, read_native
+from .plausible import PlausibilityWarning, doubts
+from .process import check_levelling, crop_window, default_levelling, fill_undefined, find_specks, level
 from .process import crop as crop_topography
-from .process import crop_window, fill_undefined, find_specks
-from .surface import Topography
+from .surface import LARGEST, Topography, largest_point
 from .text import TextFormatError, TextTable, decode_text, parse_table
 
 __all__ = ["ChannelInfo", "channel_of", "channel_words", "list_channels", "read_topography"]
@@ -62,10 +66,11 @@ __all__ = ["ChannelInfo", "channel_of", "channel_words", "list_channels", "read_
 _GZIP_MAGIC = b"\x1f\x8b"
 _UNDEFINED_CHOICES = ("refuse", "interpolate")
 
-READER_VERSION = 1
+READER_VERSION = 2
 """Version of what :func:`read_scan` makes of an instrument file: raise it when the same file would
 read otherwise (other heights, size, info), so that converted copies of older reads are not used
-(:mod:`roughcontact.topography.file_cache`)."""
+(:mod:`roughcontact.topography.file_cache`). 2: a text file of positions takes the units of its
+header cells (``X_(microns)``, ``x in µm``)."""
 
 MAX_FILLED = 0.05
 """Largest fraction of a file's points that filling undefined points may invent without being told more."""
@@ -165,9 +170,11 @@ def list_channels(path: PathLike) -> list[ChannelInfo]:
     found = copy.load("channels")
     if found is not None:
         return [ChannelInfo(**channel) for channel in found[0]["channels"]]
-    with _open_reader(path) as reader:
+    with _open_reader(path) as (reader, positions):
         default = reader.default_channel.index
-        channels = [_channel_info(channel, channel.index == default) for channel in reader.channels]
+        channels = [
+            _channel_info(channel, channel.index == default, positions) for channel in reader.channels
+        ]
     copy.store({"channels": tuple(asdict(channel) for channel in channels)})
     return channels
 
@@ -178,6 +185,7 @@ def read_topography(
     channel: int | str | None = None,
     size: SizeLike | None = None,
     height_unit: str | None = None,
+    position_unit: str | None = None,
     crop: CropLike | None = None,
     undefined: str = "refuse",
     max_filled: float = MAX_FILLED,
@@ -185,14 +193,21 @@ def read_topography(
     periodic: bool = False,
     treat_as_height: bool = False,
     override_file_values: bool = False,
+    detrend: str | None = None,
 ) -> Topography:
-    """Read one channel of a topography file into a :class:`Topography` in SI units.
+    """Read one channel of a topography file into a :class:`Topography` in SI units, levelled.
 
     Sizes and heights are converted to metres from the units the file declares:
     ``heights [m] = stored value * factor(unit)`` with factor("nm") = 1e-9 etc. A non-uniform
     line scan (x positions not equally spaced, e.g. a profilometer export with rounded
     positions) is interpolated linearly onto n equally spaced points spanning the same x range,
     so its size is ``n / (n - 1)`` times that range (recorded in ``info['history']``).
+
+    A text file of points (x z or x y z columns) gives its own size: n points at their spacing
+    make n times the spacing (not the range, n - 1 spacings). The unit of its positions comes from
+    the file (a header cell ``x [um]``, ``X_(microns)``, ``x in µm``, or Gwyddion's ``# Lateral
+    units``) or, where the file gives none, from ``position_unit``; a ``size`` beside the
+    positions is refused (the positions are the file's own word).
 
     Parameters
     ----------
@@ -207,10 +222,16 @@ def read_topography(
         Physical scan size: metres as a float, or a string with a unit (``"10 um"``); one value
         (square map or a profile) or one per axis (``("10 um", "20 um")``). Required when the
         file has no size; when the file has one, a different size is refused unless
-        ``override_file_values`` (then ``info['size_in_file']`` keeps the file's).
+        ``override_file_values`` (then ``info['size_in_file']`` keeps the file's). Refused for a
+        text file of positions: they give the size (see ``position_unit``).
     height_unit : str, optional
         Unit of the stored heights (``"nm"``, ``"um"``, ...). Required when the file declares
         none; a unit other than the file's is refused unless ``override_file_values``.
+    position_unit : str, optional
+        Unit of the x (and y) positions of a text file of points (x z or x y z columns), where
+        its header gives none (``"um"``); the size is then n times their spacing in that unit. A
+        unit other than the file's is refused unless ``override_file_values``; refused for a
+        file that holds no positions (a height matrix, an instrument's grid).
     crop : tuple, optional
         Read only a window: ``((x0, x1), (y0, y1))`` (``(x0, x1)`` for a profile), metres as
         floats or strings with a unit (``("0 mm", "20 mm")``), half-open as in
@@ -239,6 +260,14 @@ def read_topography(
     override_file_values : bool
         Use ``size`` and ``height_unit`` where the file stores other values (a file whose
         metadata are known to be wrong); without it such a clash is refused, showing both.
+    detrend : {"none", "mean", "plane", "curvature", "sphere"}, optional
+        The background removed after reading (:func:`~roughcontact.topography.process.level`),
+        as the commands' ``--detrend`` and a study file's ``detrend``; default, as there,
+        ``"plane"`` (``"mean"`` for a surface read as periodic,
+        :func:`~roughcontact.topography.process.default_levelling`): the tilt of a measured scan
+        is an artefact of mounting, and left in it decides where a flat touches. ``"none"`` keeps
+        the heights as the file holds them. Recorded in ``info['detrend']``; the results of the
+        solvers show it (``levelling``).
 
     Returns
     -------
@@ -246,7 +275,7 @@ def read_topography(
         Heights [m] and size [m]. ``info`` (JSON-ready) holds ``source``, ``name``,
         ``file_format``, ``channel``, ``data_source`` (SurfaceTopography's channel id),
         ``height_unit`` and ``size_unit`` as in the file, ``instrument`` and
-        ``acquisition_time`` where the file gives them, and ``history``.
+        ``acquisition_time`` where the file gives them, ``detrend`` and ``history``.
 
     Raises
     ------
@@ -255,33 +284,55 @@ def read_topography(
     InputError
         Unknown channel, a channel that holds no heights, size or height unit missing from
         both the file and the arguments, a height unit that contradicts the file, undefined
-        points with ``undefined="refuse"``.
+        points with ``undefined="refuse"``, a height beyond 1e100 m (its sums overflow; named
+        with its point), an unknown ``detrend`` or one that would make a periodic surface
+        non-periodic.
+
+    Warns
+    -----
+    PlausibilityWarning
+        (a ``UserWarning``) once for each implausible number of the surface read: a size outside
+        1 nm to 1 m, heights spanning more than 1 m or less than 1 pm, a flat surface
+        (:mod:`roughcontact.topography.plausible`; the commands print the same sentence as a
+        note). The surface is returned all the same; ``warnings.simplefilter("error",
+        PlausibilityWarning)`` makes it an error.
 
     Examples
     --------
     >>> read_topography("afm.txt", size="5 um", height_unit="nm")  # doctest: +SKIP
+    >>> read_topography("scan.di", detrend="none")  # the heights as the file holds them  # doctest: +SKIP
     """
     if undefined not in _UNDEFINED_CHOICES:
         raise InputError("undefined", f"unknown choice {undefined!r}.", "choose 'refuse' or 'interpolate'.")
     if positive(max_filled, "max_filled", example="0.3", allow_zero=True) > 1:
         raise InputError(
-            "max_filled", f"{max_filled!r} is not a fraction from 0 to 1.", "e.g. max_filled=0.3."
+            "max_filled", f"{max_filled:g} is not a fraction from 0 to 1.", "e.g. max_filled=0.3."
         )
+    periodic = boolean(periodic, "periodic")
+    if detrend is not None:
+        check_levelling(detrend, periodic)
     scan = read_scan(
         path,
         channel=channel,
         size=size,
         height_unit=height_unit,
+        position_unit=position_unit,
         periodic=periodic,
         treat_as_height=treat_as_height,
         override_file_values=override_file_values,
     )
     window = None if crop is None else crop_metres(crop, len(scan.size))
     if isinstance(scan, Topography):
-        return scan if window is None else crop_topography(scan, *window)
-    if window is not None:
-        scan = scan.cropped(*window)
-    return scan.topography(undefined=undefined, max_filled=max_filled, remove_specks=remove_specks)
+        topography = scan if window is None else crop_topography(scan, *window)
+    else:
+        if window is not None:
+            scan = scan.cropped(*window)
+        topography = scan.topography(undefined=undefined, max_filled=max_filled, remove_specks=remove_specks)
+    topography = level(topography, detrend or default_levelling(topography.periodic))
+    name = topography.info.get("name") or Path(path).name
+    for doubt in doubts(topography):
+        warnings.warn(PlausibilityWarning(f"{name}: {doubt.said('python')}", doubt), stacklevel=2)
+    return topography
 
 
 @dataclass(frozen=True)
@@ -363,6 +414,7 @@ def read_scan(
     channel: int | str | None = None,
     size: SizeLike | None = None,
     height_unit: str | None = None,
+    position_unit: str | None = None,
     periodic: bool = False,
     treat_as_height: bool = False,
     override_file_values: bool = False,
@@ -377,11 +429,14 @@ def read_scan(
     path = existing_file(path, empty_fix=_REREAD_FIX)
     if is_native_file(path):
         topography = read_native(path, channel=channel)
+        if position_unit is not None:
+            raise _no_positions(path, "a roughcontact height grid with its size")
         return _with_options(topography, path, size, height_unit, periodic, override_file_values)
     options = {
         "channel": channel,
         "size": size,
         "height_unit": height_unit,
+        "position_unit": position_unit,
         "periodic": periodic,
         "treat_as_height": treat_as_height,
         "override_file_values": override_file_values,
@@ -390,10 +445,41 @@ def read_scan(
     found = copy.load("size", "periodic", "info")
     if found is not None:
         record, heights = found
-        return Scan(heights, record["size"], record["periodic"], record["info"], path)
-    scan = _read_instrument_file(path, **options)
+        return _computable(Scan(heights, record["size"], record["periodic"], record["info"], path))
+    scan = _computable(_read_instrument_file(path, **options))
     copy.store({"size": scan.size, "periodic": scan.periodic, "info": scan.info}, scan.heights)
     return scan
+
+
+def _computable(scan: Scan) -> Scan:
+    """Return ``scan`` after refusing a height beyond :data:`~.surface.LARGEST` (its sums overflow).
+
+    Said with the file, the point (index and position) and the value as the file holds it, so that
+    the user can find it; such a value is a typo or an instrument's marker of a missing point.
+    """
+    huge = largest_point(scan.heights)
+    if huge is None:
+        return scan
+    index, value = huge
+    spacing = [side / n for side, n in zip(scan.size, scan.heights.shape, strict=True)]
+    where = ", ".join(
+        f"{axis} = {format_si(i * step, 'm')}" for axis, i, step in zip("xy", index, spacing, strict=False)
+    )
+    unit = scan.info.get("height_unit")
+    factor = _length_factor(unit)
+    stored = f"{value / factor:.3g} {unit} in the file, " if factor else ""
+    point = ", ".join(str(i) for i in index)
+    problem = (
+        f"the height at {where} (grid point {point}) is {stored}{value:.3g} m, beyond "
+        f"{LARGEST:.0e} m: no surface is that high, and the sums of squares of such heights overflow."
+    )
+    said = "correct that value in the file (a typo, or the instrument's marker of a missing point: "
+    fixes = {
+        "python": said + "write it as NaN and read with undefined='interpolate'), or crop it away.",
+        "study": said + "write it as NaN and add fill_undefined = true), or crop it away.",
+        "cli": said + "write it as NaN and add --fill-undefined), or crop it away with --crop.",
+    }
+    raise InputError(str(scan.path), problem, fixes["python"], fixes=fixes)
 
 
 def _read_instrument_file(
@@ -402,16 +488,24 @@ def _read_instrument_file(
     channel: int | str | None,
     size: SizeLike | None,
     height_unit: str | None,
+    position_unit: str | None,
     periodic: bool,
     treat_as_height: bool,
     override_file_values: bool,
 ) -> Scan:
     """Read one channel of an instrument file with SurfaceTopography (:func:`read_scan`'s options)."""
-    with _open_reader(path) as reader:
+    with _open_reader(path) as (reader, positions):
         selected = _select_channel(reader, channel, path)
-        file_size_unit, file_height_unit = _file_units(selected)
+        file_size_unit, file_height_unit = _file_units(selected, positions)
         _check_height_channel(selected, reader, treat_as_height)
-        _require_metadata(path, reader, selected, (file_size_unit, file_height_unit), size, height_unit)
+        if positions is None and position_unit is not None:
+            raise _no_positions(path, "a grid of heights, not x (y) z points")
+        size_unit = file_size_unit
+        if positions is not None:
+            size_unit = _position_unit(path, positions, position_unit, override_file_values)
+            if size is not None:
+                raise _size_beside_positions(path, selected, positions, size_unit)
+        _require_metadata(path, reader, selected, (size_unit, file_height_unit), size, height_unit, positions)
         user_size = None if size is None else _user_size(size, selected.dim)
         height_factor = _height_factor(path, file_height_unit, height_unit, override_file_values)
         dummy_size = None if selected.physical_sizes is not None else tuple(map(float, selected.nb_grid_pts))
@@ -422,8 +516,14 @@ def _read_instrument_file(
             path, reader, selected, measured.info, (file_size_unit, file_height_unit), height_unit
         )
     heights = heights * height_factor
-    file_size = _size_in_metres(extent, file_size_unit) if selected.physical_sizes is not None else None
+    file_size = _size_in_metres(extent, size_unit) if selected.physical_sizes is not None else None
     info["size_from"] = "file" if user_size is None else "user"
+    if positions is not None:
+        info["size_from"] = "positions"
+        info["position_unit"] = size_unit
+        info["position_unit_from"] = (
+            "file" if positions.unit is not None and not override_file_values else "user"
+        )
     if user_size is None:
         physical_size = file_size
     else:
@@ -570,7 +670,7 @@ def _checked_text_reader(path: Path, text: str, reader, tried: str):
             str(path), f"is not a clean table of numbers: {error} {tried}", fix
         ) from error
     if reader is not None and reader.format() not in _SIZE_ONLY_READERS and _grid_agrees(reader, table):
-        return reader
+        return reader, table
     if reader is not None:
         reader.close()
     reader = SurfaceTopography.open_topography(io.BytesIO(table.normalised().encode()))
@@ -583,7 +683,7 @@ def _checked_text_reader(path: Path, text: str, reader, tried: str):
             f"but SurfaceTopography reads {found} from it.",
             "write the heights as a matrix (one line per y, one value per x) or as x z / x y z columns.",
         )
-    return reader
+    return reader, table
 
 
 def _opened(path: Path, source: io.BytesIO | str):
@@ -591,7 +691,8 @@ def _opened(path: Path, source: io.BytesIO | str):
 
     A text file read by a reader that guesses its layout (plain-text matrices, x-y-z columns) must
     be the clean table :func:`.text.parse_table` finds; a file recognised by its size alone (NASA
-    SRTM) is taken only when it is binary and named ``.hgt``.
+    SRTM) is taken only when it is binary and named ``.hgt``. Returns the reader and that table
+    (None for a file read otherwise).
     """
     import SurfaceTopography
     from SurfaceTopography.Exceptions import CannotDetectFileFormat
@@ -620,33 +721,200 @@ def _opened(path: Path, source: io.BytesIO | str):
             "named .hgt.",
             _REREAD_FIX,
         )
-    return reader
+    return reader, None
 
 
 @contextmanager
 def _open_reader(path: Path):
     """Open ``path`` (decompressing gzip) with SurfaceTopography; close the reader afterwards.
 
-    Failures inside the ``with`` block that uses the reader are reported as in
+    Yields the reader and, for a text file of points, its position columns (:func:`_positions`;
+    None otherwise). Failures inside the ``with`` block that uses the reader are reported as in
     :func:`_reader_errors`, since any access to the reader may parse more of the file.
     """
     source = _decompressed(path)
     with _reader_errors(path):
-        reader = _opened(path, source)
+        reader, table = _opened(path, source)
         try:
-            yield reader
+            yield reader, _positions(path, reader, table)
         finally:
             reader.close()
 
 
-def _file_units(channel) -> tuple[str | None, str | None]:
+@dataclass(frozen=True)
+class _Positions:
+    """The position columns of a text file of points (x z or x y z), as its header names them.
+
+    Attributes
+    ----------
+    cells : tuple of str
+        The header cells of the x (and y) columns as written (empty without a header line).
+    unit : str or None
+        Their length unit as the file gives it: SurfaceTopography's (``# Lateral units``), else
+        the header cells' (``x [um]``, ``X_(microns)``, ``x in µm``); None where it gives none.
+    height_unit : str or None
+        The unit of the heights as the file gives it (the same way; None where it gives none).
+    """
+
+    cells: tuple[str, ...]
+    unit: str | None
+    height_unit: str | None
+
+    @property
+    def written(self) -> str:
+        """Where the file says the positions' unit, for the messages."""
+        cells = " and ".join(repr(cell) for cell in self.cells)
+        return f"its header cell{'s' if len(self.cells) > 1 else ''} {cells}" if cells else "its header"
+
+
+def _positions(path: Path, reader, table: TextTable | None) -> _Positions | None:
+    """Return the position columns of a text file of points read by SurfaceTopography's x-y-z reader.
+
+    None for any other file. The header cells are those of the last header line (not a comment)
+    when it has one cell per column; with three columns of which SurfaceTopography took the first
+    for an index (a line scan), the positions are the second.
+
+    Raises
+    ------
+    InputError
+        A header cell of the positions whose unit is not a length, or x and y cells of two units.
+    """
+    if reader.format() != "xyz" or not reader.channels:
+        return None
+    channel = reader.channels[0]
+    width = None if table is None else table.shape[1]
+    lines = [] if table is None else [line for line in table.header if line.strip()]
+    last = lines[-1] if lines and not lines[-1].lstrip().startswith(("#", "%", "//", "\\", "!")) else None
+    cells = [] if last is None else split_cells(last, table.separator)
+    if len(cells) != width:
+        cells = []
+    roles = {2: ((0,), 1), 3: ((1,), 2) if channel.dim == 1 else ((0, 1), 2)}.get(width, ((), None))
+    x_cells = tuple(cells[i] for i in roles[0]) if cells else ()
+    units = [split_header(cell)[1] for cell in x_cells]
+    for cell, unit in zip(x_cells, units, strict=True):
+        if unit is not None and _length_factor(unit) is None:
+            raise InputError(
+                "position_unit",
+                f"the header cell {cell!r} of {path.name} gives [{unit}], not a length (positions are).",
+                f"correct the header cell to the unit of the positions, e.g. '{split_header(cell)[0]} [um]'.",
+            )
+    if len(set(units)) > 1:
+        given = " and ".join(f"[{unit}]" if unit else "no unit" for unit in units)
+        raise InputError(
+            "position_unit",
+            f"the header cells {x_cells[0]!r} and {x_cells[1]!r} of {path.name} give {given}: a grid of "
+            "points has one unit.",
+            "write the x and y positions in one unit.",
+        )
+    file_size_unit, file_height_unit = _file_units(channel)
+    height_cell = cells[roles[1]] if cells and roles[1] is not None else None
+    return _Positions(
+        x_cells,
+        file_size_unit or (units[0] if units else None),
+        file_height_unit or (None if height_cell is None else split_header(height_cell)[1]),
+    )
+
+
+def _grid_words(channel, unit: str | None) -> tuple[str, str]:
+    """Say the grid of a file's positions and the size they make, in their unit: (words, size).
+
+    ``("8 points 38.61 nm apart: a size of 8 x 38.61 nm = 308.9 nm", "308.9 nm")``. The size is
+    the number of points times their spacing, n spacings (not the range, n - 1). Without a unit
+    the numbers are said as the file holds them.
+    """
+    counts = [int(n) for n in channel.nb_grid_pts]
+    extent = _grid_extent(channel)
+    factor = _length_factor(unit)
+
+    def said(values) -> str:
+        if factor is None:
+            return " x ".join(f"{v:.4g}" for v in values)
+        return " x ".join(format_si(v * factor, "m") for v in values)
+
+    spacing = [e / n for e, n in zip(extent, counts, strict=True)]
+    size = said(extent)
+    product = f"{counts[0]} x {said(spacing)} = {size}" if len(counts) == 1 else size
+    unnamed = "" if factor is not None else " in a unit the file does not name"
+    points = " x ".join(map(str, counts))
+    return f"{points} points {said(spacing)} apart: a size of {product}{unnamed}", size
+
+
+def _position_unit(path: Path, positions: _Positions, given: str | None, override: bool) -> str | None:
+    """Return the unit of a file's positions: the file's, or ``given`` where the file has none.
+
+    A ``given`` unit other than the file's is refused (naming the header cell) unless ``override``.
+    """
+    if given is not None:
+        given_factor = length_unit_factor(given, field="position_unit")
+    if given is None or positions.unit is None:
+        return given if positions.unit is None else positions.unit
+    if math.isclose(given_factor, _length_factor(positions.unit) or math.nan, rel_tol=1e-12):
+        return positions.unit
+    if override:
+        return given
+    raise _clash(
+        "position_unit",
+        f"{path.name} gives its positions in {positions.unit!r} ({positions.written}), but position unit "
+        f"{given!r} was given.",
+        f"the file's {positions.unit!r}",
+        f"{given!r}",
+    )
+
+
+def _size_beside_positions(path: Path, channel, positions: _Positions, unit: str | None) -> InputError:
+    """Return the refusal of a size given beside a file's own positions (they give the size)."""
+    grid, size = _grid_words(channel, unit)
+    if unit is not None:
+        problem = (
+            f"{path.name} gives its own positions in {unit} ({positions.written}), {grid}; a size beside "
+            "them is refused."
+        )
+        then = f"the positions give the size, {size}."
+        fixes = {
+            "python": f"leave size out: {then}",
+            "study": f"remove size: {then}",
+            "cli": f"leave --size out: {then}",
+        }
+    else:
+        problem = (
+            f"{path.name} gives its own positions without a unit, {grid}; a size beside them is refused "
+            "(they need a unit, not a size)."
+        )
+        then = f"(if they are micrometres, the size is then {_grid_words(channel, 'um')[1]})."
+        fixes = {
+            "python": f'leave size out and give the positions\' unit: position_unit="um" {then}',
+            "study": f'remove size and give the positions\' unit: position_unit = "um" {then}',
+            "cli": f"leave --size out and give the positions' unit: --position-unit um {then}",
+        }
+    return InputError("size", problem, fixes["python"], fixes=fixes)
+
+
+def _no_positions(path: Path, holds: str) -> InputError:
+    """Return the refusal of a position unit for a file that holds no positions."""
+    then = "its size comes from the file, or from {} where the file gives none."
+    return InputError(
+        "position_unit",
+        f"{path.name} holds {holds}: a position unit is the unit of a text file's x (y) position columns.",
+        f"leave position_unit out: {then.format('size')}",
+        fixes={
+            "study": f"remove position_unit: {then.format('size')}",
+            "cli": f"leave --position-unit out: {then.format('--size')}",
+        },
+    )
+
+
+def _file_units(channel, positions: _Positions | None = None) -> tuple[str | None, str | None]:
     """Return (size unit, height unit) of a SurfaceTopography channel as written in the file.
 
     Some readers (Bruker .di) give ``unit = (lateral unit, data unit)`` for non-height channels.
+    For a text file of points, the units its header cells give where SurfaceTopography found none
+    (:func:`_positions`).
     """
     unit, data_unit = channel.unit, channel.data_unit
     size_unit = unit[0] if isinstance(unit, tuple) else unit
     height_unit = data_unit[1] if isinstance(data_unit, tuple) else data_unit
+    if positions is not None:
+        return size_unit or positions.unit, height_unit or positions.height_unit
     return size_unit, height_unit
 
 
@@ -685,8 +953,8 @@ def _kind(channel) -> ChannelKind:
     )
 
 
-def _channel_info(channel, is_default: bool) -> ChannelInfo:
-    size_unit, height_unit = _file_units(channel)
+def _channel_info(channel, is_default: bool, positions: _Positions | None = None) -> ChannelInfo:
+    size_unit, height_unit = _file_units(channel, positions)
     size = None if channel.physical_sizes is None else _size_in_metres(_grid_extent(channel), size_unit)
     kind = _kind(channel)
     return ChannelInfo(
@@ -790,16 +1058,36 @@ def _require_metadata(
     file_units: tuple[str | None, str | None],
     size: SizeLike | None,
     height_unit: str | None,
+    positions: _Positions | None = None,
 ) -> None:
-    """Raise one InputError listing everything the file lacks and the user did not give."""
+    """Raise one InputError listing everything the file lacks and the user did not give.
+
+    ``file_units`` are the units to read the file in (a file of points: its positions' unit, the
+    file's or the one given); its size hint is the size the file implies, n points at their spacing.
+    """
     file_size_unit, file_height_unit = file_units
     size_known = channel.physical_sizes is not None and _length_factor(file_size_unit) is not None
     missing, notes = [], []
-    if size is None and not size_known:
+    if positions is not None and not size_known:
+        grid, _ = _grid_words(channel, None)
+        axes = "x and y" if channel.dim == 2 else "x"
+        missing.append(
+            (
+                "position_unit",
+                f"{axes} positions without a unit ({grid})",
+                'position_unit="um"',
+                "--position-unit um",
+                "um",
+            )
+        )
+        notes.append(f"positions in um make a size of {_grid_words(channel, 'um')[1]}")
+    elif size is None and not size_known:
         in_file = (
             ""
             if channel.physical_sizes is None
-            else (f" (it gives {' x '.join(f'{float(s):g}' for s in channel.physical_sizes)} without a unit)")
+            else (
+                f" (it gives {' x '.join(f'{float(s):.4g}' for s in _grid_extent(channel))} without a unit)"
+            )
         )
         missing.append(("size", f"no physical scan size{in_file}", 'size="5 um"', '--size "5 um"', "5 um"))
         if channel.dim == 2:
@@ -905,18 +1193,17 @@ def _handle_undefined(
             str(path),
             f"{count} of {heights.size} points ({100 * fraction:.3g} %) are undefined (missing in the "
             "measurement).",
-            "pass undefined='interpolate' (command line: --fill-undefined) to fill them by "
-            "harmonic interpolation from their neighbours, or crop them away.",
+            "pass «undefined=interpolate» to fill them by harmonic interpolation from their "
+            "neighbours, or crop them away.",
             count,
-        )
+        )  # a study file and a command line fill them with fill_undefined (UndefinedPointsError's fixes)
     if fraction > max_filled:
         allowing = max_filled_allowing(fraction)
         raise UndefinedPointsError(
             "max_filled",
             f"{path.name}: {100 * fraction:.3g} % of the points are undefined, more than the "
             f"{100 * max_filled:.3g} % that are filled without asking; filling invents that much surface.",
-            f"if that is acceptable, allow it: max_filled={allowing:g} (command line: --max-filled "
-            f"{allowing:g}); or crop the undefined region away.",
+            f"if that is acceptable, allow it: «max_filled={allowing:g}»; or crop the undefined region away.",
             count,
             allowing,
         )

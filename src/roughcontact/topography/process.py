@@ -290,11 +290,7 @@ def check_levelling(mode: str, periodic: bool) -> str:
         raise InputError(
             "detrend",
             f"{mode} removes a background from a periodic surface, which then no longer repeats.",
-            "use detrend='mean' (or 'none') for a periodic surface, or read it with periodic=False.",
-            fixes={
-                "cli": "use --detrend mean (or none) for a periodic surface, or leave --periodic out.",
-                "study": "use detrend = 'mean' (or 'none') for a periodic surface, or leave periodic out.",
-            },
+            "use «detrend=mean» (or «detrend=none») for a periodic surface, or leave «periodic» out.",
         )
     return mode
 

@@ -10,6 +10,7 @@ import numpy as np
 from ..contact.adhesive_result import AdhesiveResult
 from ..contact.trust import contact_shares, share_warnings
 from ..display_html import NotebookDisplay
+from ..messages import as_messages
 from ..topography import Topography
 
 
@@ -182,6 +183,7 @@ class WinklerLJResult(NotebookDisplay):
         """
         return contact_shares(self.stress, self.topography, "periodic")
 
+    @as_messages
     def range_warnings(self) -> list[str]:
         """Say when the load rests on filled points or specks (:func:`~.contact.trust.share_warnings`)."""
         return share_warnings(self.shares, self.topography, "periodic")

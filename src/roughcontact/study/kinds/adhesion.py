@@ -127,20 +127,20 @@ class AdhesionParameters(CaseParameters):
         if not self.first_approach < self.max_approach:
             raise PydanticCustomError(
                 "quantity",
-                "start must lie below max_approach (the flat approaches, then withdraws)",
-                {"fix": "e.g. start = '-5 nm', max_approach = '3 nm'", "field": "start"},
+                "«start» must lie below «max_approach» (the flat approaches, then withdraws)",
+                {"fix": "e.g. «start=-5 nm», «max_approach=3 nm»", "field": "start"},
             )
         if self.substrate is not None and self.film_thickness is None:
             raise PydanticCustomError(
-                "quantity", "a substrate needs film_thickness", {"fix": "add film_thickness = '50 nm'"}
+                "quantity", "a substrate needs «film_thickness»", {"fix": "add «film_thickness=50 nm»"}
             )
         for name in ("work_of_adhesion", "surface_energy", "counter_surface_energy"):
             value = getattr(self, name)
             if value is not None and not (value > 0 or (value == 0 and name != "work_of_adhesion")):
                 raise PydanticCustomError(
                     "quantity",
-                    "{name} must be positive (an energy per area that the surfaces gain by touching)",
-                    {"name": name, "fix": f"e.g. {name} = '72 mJ/m^2'", "field": name},
+                    "«{name}» must be positive (an energy per area that the surfaces gain by touching)",
+                    {"name": name, "fix": f"e.g. «{name}=72 mJ/m^2»", "field": name},
                 )
         if self.winkler:
             problems = {
@@ -152,11 +152,11 @@ class AdhesionParameters(CaseParameters):
             if wrong:
                 raise PydanticCustomError(
                     "quantity",
-                    "winkler = true compares with paper 000's springs: it needs law = 'lennard_jones', "
+                    "«winkler=true» compares with paper 000's springs: it needs «law=lennard_jones», "
                     "dgamma from the surface energies and a half-space (found {found})",
                     {
-                        "found": ", ".join(wrong),
-                        "fix": "remove them or set winkler = false",
+                        "found": ", ".join(f"«{name}»" for name in wrong),
+                        "fix": "leave them out, or «winkler» out",
                         "field": wrong[0],
                     },
                 )
@@ -194,7 +194,7 @@ def work_of_adhesion(parameters: AdhesionParameters, material, counter_body) -> 
             raise InputError(
                 key,
                 f"no surface energy to combine ({whose}).",
-                f"give {key} = '72 mJ/m^2', or work_of_adhesion = '100 mJ/m^2' directly.",
+                f"give «{key}=72 mJ/m^2», or «work_of_adhesion=100 mJ/m^2» directly.",
             )
         energies.append(value)
     return combined(*energies, reading=parameters.combining_rule or "girifalco_good")

@@ -140,14 +140,16 @@ class AsperityKeys(CaseParameters):
     def _consistent(self) -> AsperityKeys:
         moments = [k for k in ("m0", "m2", "m4") if getattr(self, k) is not None]
         if (self.topography is None) == (not moments) or (moments and len(moments) != 3):
-            found = ", ".join((["topography"] if self.topography is not None else []) + moments) or "none"
+            found = (
+                ", ".join(f"«{k}»" for k in (["topography"] if self.topography is not None else []) + moments)
+                or "none"
+            )
             raise PydanticCustomError(
                 "quantity",
-                "give exactly one of topography or the three moments m0, m2, m4 (found {found})",
+                "give exactly one of «topography» or the three moments «m0», «m2», «m4» (found {found})",
                 {
                     "found": found,
-                    "fix": "e.g. topography = 'scan', or m0 = '0.00213 um^2', m2 = 0.0023, "
-                    "m4 = '0.0171 1/um^2'",
+                    "fix": "e.g. «topography=scan», or «m0=0.00213 um^2», «m2=0.0023», «m4=0.0171 1/um^2»",
                 },
             )
         if moments:
@@ -158,27 +160,27 @@ class AsperityKeys(CaseParameters):
                 mccool_parameters(m0=self.m0, m2=self.m2, m4=self.m4)
             except InputError as error:
                 raise PydanticCustomError(
-                    "quantity", "m0, m2, m4: {detail}", {"detail": error.problem, "fix": error.fix}
+                    "quantity", "«m0», «m2», «m4»: {detail}", {"detail": error.problem, "fix": error.fix}
                 ) from None
         if (self.max_force is None) != (self.nominal_area is None):
             raise PydanticCustomError(
                 "quantity",
-                "a load-unload curve needs both max_force and nominal_area",
-                {"fix": "e.g. max_force = '1000 uN' and nominal_area = '625 um^2' (25 um x 25 um)"},
+                "a load-unload curve needs both «max_force» and «nominal_area»",
+                {"fix": "e.g. «max_force=1000 uN» and «nominal_area=625 um^2» (25 um x 25 um)"},
             )
         if self.reference_force is not None and (
             self.max_force is None or not 0 < self.reference_force < self.max_force
         ):
             raise PydanticCustomError(
                 "quantity",
-                "reference_force must lie between 0 and max_force",
-                {"fix": "e.g. reference_force = '25 uN' with max_force = '1000 uN'"},
+                "«reference_force» must lie between 0 and «max_force»",
+                {"fix": "e.g. «reference_force=25 uN» with «max_force=1000 uN»"},
             )
         if self.distribution == "measured" and self.topography is None:
             raise PydanticCustomError(
                 "quantity",
-                "distribution = 'measured' takes the summit heights of a surface",
-                {"fix": "give topography = NAME, or use distribution = 'gaussian'"},
+                "«distribution=measured» takes the summit heights of a surface",
+                {"fix": "give a surface («topography»), or use «distribution=gaussian»"},
             )
         return self
 
@@ -186,13 +188,19 @@ class AsperityKeys(CaseParameters):
 class MeasuredCurve(Strict):
     """``[analysis.compare]``: a measured load-interference curve drawn with the models' curves.
 
-    ``measured_curve`` is a CSV file of rows ``interference_m,force_N`` (SI; a header line is
-    allowed, units in it are converted), read by
-    :func:`roughcontact.experiment.load_curve.read_load_curve`; its zero of interference should
-    follow the analyses' (paper 002: zero at 25 uN).
+    ``measured_curve`` is a CSV file of interference and load rows below a header line that gives
+    their units (``interference [nm],load [uN]``, or ``interference_m,force_N``), read by
+    :func:`roughcontact.experiment.load_curve.read_load_curve` when the study is validated; its
+    zero of interference should follow the analyses' (paper 002: zero at 25 uN).
     """
 
     measured_curve: Path
+
+    def check(self) -> None:
+        """Read the curve at validation time: a file without units fails before the cases run."""
+        from ...experiment.load_curve import read_load_curve
+
+        read_load_curve(self.measured_curve)
 
 
 def _moments(parameters: AsperityKeys, inputs) -> tuple[dict[str, float], object]:

@@ -218,28 +218,28 @@ class FrictionParameters(CaseParameters):
                 "quantity",
                 "{names} must be positive and finite",
                 {
-                    "names": ", ".join(bad),
-                    "fix": "e.g. " + ", ".join(f"{name} = '{_EXAMPLES[name]}'" for name in bad),
+                    "names": ", ".join(f"«{name}»" for name in bad),
+                    "fix": "e.g. " + ", ".join(f"«{name}={_EXAMPLES[name]}»" for name in bad),
                     "field": bad[0],
                 },
             )
         if self.hold_time < 0 or (self.relaxed_modulus is not None and not self.relaxed_modulus > 0):
             raise PydanticCustomError(
                 "quantity",
-                "hold_time must be >= 0 and relaxed_modulus > 0",
-                {"fix": "e.g. relaxed_modulus = '80 GPa', hold_time = '30 s'"},
+                "«hold_time» must be 0 or more and «relaxed_modulus» positive",
+                {"fix": "e.g. «relaxed_modulus=80 GPa», «hold_time=30 s»"},
             )
         if self.gap_model == "bem" and self.crossover:
             raise PydanticCustomError(
                 "quantity",
-                "crossover is not searched with gap_model = 'bem' (a boundary-element solve per load)",
-                {"fix": "remove crossover, or use gap_model = 'winkler'", "field": "crossover"},
+                "«crossover» is not searched with «gap_model=bem» (a boundary-element solve per load)",
+                {"fix": "leave «crossover» out, or use «gap_model=winkler»", "field": "crossover"},
             )
         if self.hold_time > 0 and self.relaxed_modulus is None:
             raise PydanticCustomError(
                 "quantity",
-                "a hold_time needs relaxed_modulus (the surface's body is elastic otherwise)",
-                {"fix": "add relaxed_modulus = '80 GPa' (and relaxation_time), or remove hold_time"},
+                "a «hold_time» needs «relaxed_modulus» (the surface's body is elastic otherwise)",
+                {"fix": "add «relaxed_modulus=80 GPa» (and «relaxation_time»), or leave «hold_time» out"},
             )
         return self
 

@@ -155,35 +155,39 @@ class LoadUnloadParameters(CaseParameters):
     def _consistent(self) -> LoadUnloadParameters:
         if not self.max_force > 0:
             raise PydanticCustomError(
-                "quantity", "max_force must be positive", {"fix": "e.g. max_force = '1000 uN'"}
+                "quantity", "«max_force» must be positive", {"fix": "e.g. «max_force=1000 uN»"}
             )
         if not 0 <= self.reference_force < self.max_force:
             raise PydanticCustomError(
                 "quantity",
-                "reference_force must be >= 0 and below max_force",
-                {"fix": "e.g. reference_force = '25 uN' with max_force = '1000 uN'"},
+                "«reference_force» must be 0 or more and below «max_force»",
+                {"fix": "e.g. «reference_force=25 uN» with «max_force=1000 uN»"},
             )
         if (self.substrate is None) != (self.film_thickness is None):
             raise PydanticCustomError(
                 "quantity",
-                "a film needs both substrate and film_thickness (without them the body is a half-space)",
-                {"fix": "e.g. substrate = 'silicon wafer' and film_thickness = '6.3 um'"},
+                "a film needs both «substrate» and «film_thickness» (without them the body is a half-space)",
+                {"fix": "e.g. «substrate=silicon wafer» and «film_thickness=6.3 um»"},
             )
         if self.film_thickness is not None and not self.film_thickness > 0:
-            raise PydanticCustomError("quantity", "film_thickness must be positive", {"fix": "e.g. '6.3 um'"})
+            raise PydanticCustomError(
+                "quantity", "«film_thickness» must be positive", {"fix": "e.g. «film_thickness=6.3 um»"}
+            )
         if not self.stress_depth >= 0:
-            raise PydanticCustomError("quantity", "stress_depth must be >= 0", {"fix": "e.g. 0 or '0.5 um'"})
+            raise PydanticCustomError(
+                "quantity", "«stress_depth» must be 0 or more", {"fix": "e.g. «stress_depth=0.5 um»"}
+            )
         if self.von_mises_loads is not None:
             loading, _ = load_targets(self.max_force, self.reference_force, self.load_steps)
             missing = [f for f in self.von_mises_loads if not np.isclose(loading, f, rtol=1e-9, atol=0).any()]
             if missing:
                 raise PydanticCustomError(
                     "quantity",
-                    "von_mises_loads {missing} uN are not among the load targets {targets} uN",
+                    "«von_mises_loads» {missing} uN are not among the load targets {targets} uN",
                     {
                         "missing": [float(f"{f * 1e6:.6g}") for f in missing],
                         "targets": [float(f"{f * 1e6:.6g}") for f in loading],
-                        "fix": "choose among the targets (k / load_steps x max_force, reference_force)",
+                        "fix": "choose among the targets (k / «load_steps» x «max_force», «reference_force»)",
                     },
                 )
         return self

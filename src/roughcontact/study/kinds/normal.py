@@ -64,20 +64,21 @@ class NormalParameters(CaseParameters):
         if len(given) != 1:
             raise PydanticCustomError(
                 "quantity",
-                "give exactly one of mean_pressure, force, approach (found {found})",
-                {"found": ", ".join(given) or "none", "fix": "e.g. mean_pressure = '20 MPa'"},
+                "give exactly one of «mean_pressure», «force», «approach» (found {found})",
+                {"found": ", ".join(f"«{k}»" for k in given) or "none", "fix": "e.g. «mean_pressure=20 MPa»"},
             )
         if self.substrate is not None and self.film_thickness is None:
             raise PydanticCustomError(
-                "quantity", "a substrate needs film_thickness", {"fix": "add film_thickness = '50 nm'"}
+                "quantity", "a substrate needs «film_thickness»", {"fix": "add «film_thickness=50 nm»"}
             )
         return self
 
 
 def check_inputs(parameters: NormalParameters, known) -> None:
-    """Refuse at validation a free line contact and a load the scan cannot carry.
+    """Refuse at validation a free line contact, a load the scan cannot carry, an approach it cannot reach.
 
-    See :func:`~roughcontact.contact.normal.check_line_boundary` and ``check_carried``.
+    See :func:`~roughcontact.contact.normal.check_line_boundary`, ``check_carried`` and (for a file's
+    surface, read at validation) ``check_periodic_approach``.
     """
     from ...contact.normal import check_carried, check_line_boundary
     from ...materials import contact_modulus
@@ -95,6 +96,15 @@ def check_inputs(parameters: NormalParameters, known) -> None:
     pressure = value / nominal if name == "force" else value
     modulus = contact_modulus(known.material(parameters.material), known.material(parameters.counter_body))
     check_carried(name, value, pressure, size, modulus, parameters.hardness)
+    spec = known.specs.get(parameters.topography)
+    surface = known.loaded.get(spec.model_dump_json()) if hasattr(spec, "file") else None
+    if name == "approach" and parameters.hardness is None and surface is not None:  # a file, read already
+        from ...contact.normal import check_periodic_approach, resolve_boundary
+        from ...topography.plausible import is_flat
+
+        if resolve_boundary(surface, parameters.boundary) == "periodic":
+            heights = surface.heights
+            check_periodic_approach(value, 0.0 if is_flat(heights) else float(heights.max() - heights.mean()))
 
 
 def run(parameters: NormalParameters, inputs) -> CaseOutput:
@@ -122,6 +132,7 @@ def run(parameters: NormalParameters, inputs) -> CaseOutput:
         hardness=parameters.hardness,
         boundary=parameters.boundary,
         tolerance=parameters.tolerance,
+        device=inputs.device,
     )
     scalars = result.scalars()
     # stored: pressure and gap (with the result's scalars as attributes); displacement and heights

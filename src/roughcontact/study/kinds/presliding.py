@@ -188,10 +188,10 @@ class PreslidingParameters(CaseParameters):
             given = "both" if self.stroke is not None else "neither"
             raise PydanticCustomError(
                 "quantity",
-                "give the stroke of paper 001's programme or your own path, exactly one (found {given})",
+                "give the «stroke» of paper 001's programme or your own «path», exactly one (found {given})",
                 {
                     "given": given,
-                    "fix": "e.g. stroke = '2.8 um', or path = 'programme.csv'",
+                    "fix": "e.g. «stroke=2.8 um», or «path=programme.csv»",
                     "field": "stroke",
                 },
             )
@@ -209,8 +209,8 @@ def _paper001_keys(given: Mapping[str, Any]) -> dict[str, Any]:
     except InputError:
         raise PydanticCustomError(
             "quantity",
-            "paper001 = true needs the ball (HDPE or POM), found {ball}",
-            {"ball": repr(ball), "fix": "give sample = 'HDPE' (or 'POM'), or material = 'HDPE'"},
+            "«paper001=true» needs the ball (HDPE or POM), found {ball}",
+            {"ball": repr(ball), "fix": "give «sample=HDPE» (or POM), or «material=HDPE»"},
         ) from None
     try:
         force = quantity(given.get("normal_force"), "force")
@@ -296,7 +296,7 @@ def check(parameters: PreslidingParameters) -> None:
             "remove normal_force, or the path's normal column.",
         )
     if not combined and parameters.normal_force is None:
-        raise InputError("normal_force", "missing.", "e.g. normal_force = '25 mN' (paper 001 Table 1).")
+        raise InputError("normal_force", "missing.", "e.g. «normal_force=25 mN» (paper 001 Table 1).")
 
 
 def _case_words(parameters: PreslidingParameters, inputs, label: str) -> str:
@@ -366,7 +366,7 @@ def _solved(parameters: PreslidingParameters, inputs, programme: dict, label: st
             warnings.append(
                 f"points of the ball outside the given {parameters.window} px window lie within the approach "
                 f"({depth * 1e6:.3g} um below the highest point) and may touch: the window's answer is not "
-                "proven to hold the whole contact. window = 'auto' chooses one that holds them."
+                "proven to hold the whole contact. «window=auto» chooses one that holds them."
             )
     return result, scan, choice, warnings
 
@@ -501,7 +501,7 @@ def _window_notes(records) -> list[str]:
         for sample, p in chosen.items()
     )
     return [
-        f"Solved windows, chosen per case (window = 'auto'): {spans}. Each holds every point of the "
+        f"Solved windows, chosen per case («window=auto»): {spans}. Each holds every point of the "
         "ball within the case's approach of its highest point, so nothing outside it can touch "
         "(window_choice in results.csv says how each was found)."
     ]
