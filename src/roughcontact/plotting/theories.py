@@ -69,10 +69,13 @@ class Sweep:
         return len(self.cases)
 
     def values(self, name: str) -> np.ndarray:
-        """Return the scalar ``name`` of every case, realisations by loads (NaN where missing)."""
+        """Return the scalar ``name`` of every case, realisations by loads (NaN where missing or left out)."""
         return np.array(
             [
-                [math.nan if case is None else float(case.scalars.get(name, math.nan)) for case in row]
+                [
+                    math.nan if case is None or case.scalars.get(name) is None else float(case.scalars[name])
+                    for case in row
+                ]
                 for row in self.cases
             ]
         )
@@ -201,7 +204,9 @@ def _realisations_words(sweep: Sweep) -> str:
 
 def _title(sweep: Sweep, what: str) -> str:
     window = "" if sweep.gap_compared else ", free window"
-    label = f"{sweep.label}: " if sweep.label else ""
+    origins = {case.scalars.get("surface_origin") for row in sweep.cases for case in row if case is not None}
+    origin = " ({})".format(", ".join(sorted(o for o in origins if o))) if origins - {None} else ""
+    label = f"{sweep.label}{origin}: " if sweep.label or origin else ""
     return f"{label}{what}{window}\n({_realisations_words(sweep)})"
 
 

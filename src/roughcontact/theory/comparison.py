@@ -612,6 +612,15 @@ def compare_theories(
     except InputError as error:
         gw_fraction = gw_gap = np.full(pressures.shape, math.nan)
         notes.append(f"Greenwood-Williamson not evaluated: {error.problem}")
+    below = np.asarray(gw_gap) < 0
+    if below.any():  # the summits' flat below the mean plane: its separation means nothing there
+        gw_gap = np.where(below, math.nan, gw_gap)
+        first = float(pressures[below].min() / (modulus * g))
+        notes.append(
+            f"Greenwood-Williamson's flat passes below the mean plane from p0/(E* g) = {first:.3g} on: its "
+            "mean separation is beyond the model's range there (non-interacting summits of a fixed "
+            "population) and is left out."
+        )
     zeta = np.geomspace(1.0, max(spectrum.highest / spectrum.lowest, 1.0), magnifications)
     return TheoryComparison(
         topography=topography,

@@ -127,7 +127,22 @@ def run(parameters: TheoriesParameters, inputs) -> CaseOutput:
         "persson_fraction_magnified",
         "reduced_pressure",
     ]
-    return CaseOutput(result.scalars(), result.to_xarray()[keep], tuple(result.range_warnings()))
+    scalars = result.scalars() | {"surface_origin": surface_origin(parameters.topography, inputs)}
+    return CaseOutput(scalars, result.to_xarray()[keep], tuple(result.range_warnings()))
+
+
+def surface_origin(name: str, inputs) -> str:
+    """Say where a case's surface comes from: ``measured`` (a file, or combined with one) or ``synthetic``."""
+    from ..schema import Combined, FileTopography
+
+    spec = inputs.specs[name]
+    if isinstance(spec, FileTopography):
+        return "measured"
+    if isinstance(spec, Combined) and any(
+        surface_origin(part, inputs) == "measured" for part in spec.combine
+    ):
+        return "measured"
+    return "synthetic"
 
 
 # --- tables ----------------------------------------------------------------------------------------
@@ -281,7 +296,7 @@ KIND = Kind(
         "area_load_slope": (0.0, math.inf),
         "area_load_slope_raw": (0.0, math.inf),
         "rms_gradient": (0.0, math.inf),
-        "gw_mean_gap": None,  # GW's flat passes below the mean plane at large load
+        "gw_mean_gap": (0.0, math.inf),  # left out where GW's flat passes below the mean plane
         "bgt_fraction": (0.0, math.inf),  # its small-load law is not capped at 1
         "gw_fraction": (0.0, math.inf),
     },
