@@ -75,7 +75,7 @@ __all__ = [
 
 
 def hertz_contact_radius(normal_force: float, radius: float, contact_modulus: float) -> float:
-    r"""Hertz contact radius, paper 001 eq. 11 (Johnson eq. 4.22) [m].
+    r"""Hertz contact radius, paper 001 equation 11 (Johnson equation 4.22) [m].
 
     .. math:: a^3 = \frac{3 F_0 R}{4 E_s}, \qquad \frac{1}{E_s} = \sum \frac{1 - \nu_i^2}{E_i}
 
@@ -133,7 +133,7 @@ def _as_output(array: np.ndarray, like) -> float | np.ndarray:
 
 @renamed(mu="friction_coefficient")
 def stick_radius(force, friction_coefficient: float, normal_force: float, contact_radius: float):
-    r"""Radius of the stick disc, c = a (1 - |Q|/(mu P))^(1/3) [m] (Johnson eq. 7.39).
+    r"""Radius of the stick disc, c = a (1 - |Q|/(mu P))^(1/3) [m] (Johnson equation 7.39).
 
     Parameters
     ----------
@@ -157,7 +157,7 @@ def stick_radius(force, friction_coefficient: float, normal_force: float, contac
 
 @renamed(mu="friction_coefficient")
 def shear_traction(r, force, friction_coefficient: float, normal_force: float, contact_radius: float):
-    r"""Cattaneo-Mindlin shear traction q(r) [Pa] (Johnson eqs. 7.36-7.39), in the sense of Q.
+    r"""Cattaneo-Mindlin shear traction q(r) [Pa] (Johnson equations 7.36-7.39), in the sense of Q.
 
     .. math::
 
@@ -221,7 +221,7 @@ def sliding_displacement(
 def tangential_displacement(
     force, friction_coefficient: float, normal_force: float, contact_radius: float, shear_modulus: float
 ):
-    r"""Monotonic (virgin) tangential displacement delta(Q) [m] (Mindlin 1949; Johnson eq. 7.42).
+    r"""Monotonic (virgin) tangential displacement delta(Q) [m] (Mindlin 1949; Johnson equation 7.42).
 
     .. math:: \delta(Q) = \frac{3\mu P}{16 a G^*}\left[1 - \left(1 - \frac{Q}{\mu P}\right)^{2/3}\right]
 

@@ -1,4 +1,4 @@
-r"""Mesh convergence of the island compression (paper 002 Fig. 6), said in full.
+r"""Mesh convergence of the island compression (paper 002 figure 6), said in full.
 
 Paper 002 refines its FEM mesh and shows the error of :math:`\omega_{max}` against the finest mesh
 falling monotonically. Here a mesh study is cases of the same island on several grids (a generator
@@ -232,7 +232,7 @@ def _numeric(value: Any) -> bool:
 def mesh_convergence(
     cases: Iterable[Any], quantities: Mapping[str, str] = QUANTITIES
 ) -> list[QuantityConvergence] | None:
-    """Return each quantity against the grid (paper 002 Fig. 6): values, changes, orders (module notes).
+    """Return each quantity against the grid (paper 002 figure 6): values, changes, orders (module notes).
 
     Parameters
     ----------

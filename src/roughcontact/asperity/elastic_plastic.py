@@ -77,7 +77,7 @@ def _out(values: np.ndarray, like):
 
 
 def contact_pressure_factor(poissons_ratio: float) -> float:
-    r"""Maximum-contact-pressure factor K of Chang, Etsion and Bogy (paper 002 eq. 8) [-].
+    r"""Maximum-contact-pressure factor K of Chang, Etsion and Bogy (paper 002 equation 8) [-].
 
     .. math:: K = 0.454 + 0.41\,\nu
 
@@ -110,7 +110,7 @@ def contact_pressure_factor(poissons_ratio: float) -> float:
 def critical_interference(
     *, hardness: float, poissons_ratio: float, contact_modulus: float, radius: float
 ) -> float:
-    r"""Critical interference at the onset of plastic yield (Chang-Etsion-Bogy; paper 002 eq. 6) [m].
+    r"""Critical interference at the onset of plastic yield (Chang-Etsion-Bogy; paper 002 equation 6) [m].
 
     .. math:: \omega_c = \left(\frac{\pi K H}{2 E'}\right)^2 R, \qquad K = 0.454 + 0.41\,\nu
 
@@ -176,7 +176,7 @@ def critical_load(*, hardness: float, poissons_ratio: float, contact_modulus: fl
 
 
 def plasticity_index(summit_height_std: float, critical_interference: float) -> float:
-    r"""Plasticity index of Chang, Etsion and Bogy in the form of paper 002 eq. 9 [-].
+    r"""Plasticity index of Chang, Etsion and Bogy in the form of paper 002 equation 9 [-].
 
     .. math:: \psi = \sqrt{\sigma_s / \omega_c}
 
@@ -367,7 +367,7 @@ def jackson_green_load(
 
 
 def paper002_eq10_load(w_star, *, critical_load: float, reading: str = "sound"):
-    r"""Return the load of one asperity by the loading law of paper 002, eq. 10 [N].
+    r"""Return the load of one asperity by the loading law of paper 002, equation 10 [N].
 
     ``reading="sound"`` (default) reads the trailing "+ 1" as part of the normalised load, so the law
     is continuous with Hertz at omega_c:
@@ -417,7 +417,7 @@ def paper002_eq10_load(w_star, *, critical_load: float, reading: str = "sound"):
 
 
 def unloading_exponent(max_w_star):
-    r"""Exponent of the unloading law (paper 002 eq. 11; Etsion, Kligerman and Kadin 2005) [-].
+    r"""Exponent of the unloading law (paper 002 equation 11; Etsion, Kligerman and Kadin 2005) [-].
 
     .. math:: n = 1.5\,(\omega^*_{max})^{-0.0331}
 
@@ -470,7 +470,7 @@ def residual_interference_ratio(max_w_star):
 
 @renamed(max_load="max_force")
 def unloading_load(interference, *, max_interference: float, max_force: float, critical_interference: float):
-    r"""Load of an asperity unloaded from omega_max (paper 002 eq. 11) [N].
+    r"""Load of an asperity unloaded from omega_max (paper 002 equation 11) [N].
 
     .. math:: W = W_{max}\left(\frac{\omega - \omega_{res}}{\omega_{max} - \omega_{res}}\right)^{n},
               \quad \omega_{res} \le \omega \le \omega_{max}

@@ -1,4 +1,4 @@
-"""The asperity parameters of a surface and a pair of materials, in one record (paper 002 eqs. 4-9)."""
+"""The asperity parameters of a surface and a pair of materials, in one record (paper 002 equations 4-9)."""
 
 from __future__ import annotations
 
@@ -86,7 +86,7 @@ class AsperityParameters(NotebookDisplay):
 
 
 def printed_contact_modulus(a: Material, b: Material | None = None) -> float:
-    r"""E' of paper 002 eq. 7 as printed, with (1 - nu) where Hertz has (1 - nu^2) [Pa].
+    r"""E' of paper 002 equation 7 as printed, with (1 - nu) where Hertz has (1 - nu^2) [Pa].
 
     .. math:: \frac{1}{E'} = \frac{1 - \nu_1}{E_1} + \frac{1 - \nu_2}{E_2}
 

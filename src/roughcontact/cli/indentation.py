@@ -1,4 +1,4 @@
-"""The ``nanoindent`` command: sample modulus and hardness from a load-displacement CSV (paper 001 eqs. 5-8).
+"""The ``nanoindent`` command: sample modulus and hardness from a load-depth CSV (paper 001 equations 5-8).
 
 A view of the study model ``nanoindentation`` (:mod:`roughcontact.study.kinds.nanoindentation`).
 """

@@ -155,7 +155,7 @@ class Exponential(_Law):
 
 @dataclass(frozen=True)
 class LennardJones(_Law):
-    r"""Lennard-Jones 9-3 law of paper 000 eq. 7, with the gap counted from the equilibrium distance.
+    r"""Lennard-Jones 9-3 law of paper 000 equation 7, with the gap counted from the equilibrium distance.
 
     .. math:: \phi(g) = -\frac{8w}{3}\left[\frac{\varepsilon^2}{2l^2}
               - \frac{\varepsilon^8}{8l^8}\right], \qquad l = g + \varepsilon,

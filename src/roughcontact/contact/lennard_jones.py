@@ -1,4 +1,4 @@
-r"""The Lennard-Jones (n = 2, m = 8) surface force law between two half-spaces (paper 000, eqs. 5-7, 14, 16).
+r"""The Lennard-Jones (n = 2, m = 8) force law of two half-spaces (paper 000, equations 5-7, 14, 16).
 
 The interaction energy per unit area of two flat half-spaces at distance l that follows from a
 pairwise 6-12 Lennard-Jones potential is w(l) = -A / l^2 + B / l^8 (paper 000, eq. 5 with n = 2 and
@@ -45,7 +45,7 @@ DUGDALE_RANGE_RATIO = 1.0 + 1.0 / PEAK_STRESS_FACTOR
 
 
 def dugdale_range(epsilon: float) -> float:
-    r"""Largest bond distance of the Dugdale zone equivalent to eq. 7 [m].
+    r"""Largest bond distance of the Dugdale zone equivalent to equation 7 [m].
 
     Maugis (1992) replaces a force law by a constant stress sigma0 acting from the equilibrium
     distance over a further separation h0, with the same work of adhesion, sigma0 h0 = dgamma; with
@@ -71,7 +71,7 @@ def dugdale_range(epsilon: float) -> float:
 
 
 def stress_scale(work_of_adhesion: float, epsilon: float) -> float:
-    """Prefactor 8 dgamma / (3 eps) of eq. 7 [Pa].
+    """Prefactor 8 dgamma / (3 eps) of equation 7 [Pa].
 
     Parameters
     ----------
@@ -89,7 +89,7 @@ def stress_scale(work_of_adhesion: float, epsilon: float) -> float:
 
 
 def attractive_stress(distance, work_of_adhesion: float, epsilon: float) -> np.ndarray:
-    r"""Attractive stress f(l) of eq. 7 [Pa]; positive attracts, negative repels.
+    r"""Attractive stress f(l) of equation 7 [Pa]; positive attracts, negative repels.
 
     Parameters
     ----------
@@ -115,7 +115,7 @@ def attractive_stress(distance, work_of_adhesion: float, epsilon: float) -> np.n
 
 
 def separation_energy(distance, work_of_adhesion: float, epsilon: float) -> np.ndarray:
-    r"""Energy per area to separate the surfaces from l to infinity, eq. 14 [J/m^2].
+    r"""Energy per area to separate the surfaces from l to infinity, equation 14 [J/m^2].
 
     .. math:: e(l) = \frac{8\Delta\gamma}{3}
               \left(\frac{\varepsilon^2}{2l^2} - \frac{\varepsilon^8}{8l^8}\right)
@@ -147,7 +147,7 @@ def separation_energy(distance, work_of_adhesion: float, epsilon: float) -> np.n
 
 
 def repulsive_distance(pressure, work_of_adhesion: float, epsilon: float) -> np.ndarray:
-    r"""Distance l_im <= epsilon at which the repulsion of eq. 7 balances a compressive stress [m].
+    r"""Distance l_im <= epsilon at which the repulsion of equation 7 balances a compressive stress [m].
 
     Solves f(l) = -p on the repulsive branch, i.e. x^9 - x^3 = p / (8 dgamma / 3 eps) with
     x = eps / l >= 1, by the fixed point x <- (p' + x^3)^(1/9) (a contraction with rate

@@ -41,7 +41,7 @@ def _branch(steps: int, spacing: str) -> np.ndarray:
 def stroke_path(
     stroke: float, *, cycles: int = 4, steps_per_stroke: int = 25, spacing: str = "uniform"
 ) -> np.ndarray:
-    """Paper 001 Fig. 6: from 0 to ``stroke`` and back to 0, ``cycles`` times.
+    """Paper 001 figure 6: from 0 to ``stroke`` and back to 0, ``cycles`` times.
 
     Parameters
     ----------

@@ -63,7 +63,7 @@ NORMALISATIONS = MINDLIN_READINGS
 
 @dataclass(frozen=True)
 class MindlinReference:
-    """Mindlin's smooth ball (paper 001 eqs. 10-12) for one ball, load and friction coefficient.
+    """Mindlin's smooth ball (paper 001 equations 10-12) for one ball, load and friction coefficient.
 
     Attributes
     ----------
@@ -88,18 +88,18 @@ class MindlinReference:
 
     @property
     def sliding_distance(self) -> float:
-        """delta_0 = 3 mu F0 / (16 a G) [m] (eq. 10)."""
+        """delta_0 = 3 mu F0 / (16 a G) [m] (equation 10)."""
         return sliding_displacement(
             self.friction_coefficient, self.normal_force, self.contact_radius, self.shear_modulus
         )
 
     @property
     def initial_stiffness(self) -> float:
-        """K_L at F_x = 0: 8 a G [N/m] (eq. 12)."""
+        """K_L at F_x = 0: 8 a G [N/m] (equation 12)."""
         return 8.0 * self.contact_radius * self.shear_modulus
 
     def force(self, displacement):
-        """F_x(delta_x), eq. 10 [N] (saturated at mu F0 beyond delta_0)."""
+        """F_x(delta_x), equation 10 [N] (saturated at mu F0 beyond delta_0)."""
         return tangential_force(
             displacement,
             self.friction_coefficient,
@@ -109,13 +109,13 @@ class MindlinReference:
         )
 
     def displacement(self, force):
-        """delta_x(F_x), inverse of eq. 10 [m]."""
+        """delta_x(F_x), inverse of equation 10 [m]."""
         return tangential_displacement(
             force, self.friction_coefficient, self.normal_force, self.contact_radius, self.shear_modulus
         )
 
     def lateral_stiffness(self, force):
-        """K_L = 8 a G (1 - F_x / (mu F0))^(1/3), eq. 12 [N/m], at tangential force F_x [N]."""
+        """K_L = 8 a G (1 - F_x / (mu F0))^(1/3), equation 12 [N/m], at tangential force F_x [N]."""
         return lateral_stiffness(
             force, self.friction_coefficient, self.normal_force, self.contact_radius, self.shear_modulus
         )
@@ -133,7 +133,7 @@ class MindlinReference:
         return self.initial_stiffness * np.cbrt(1.0 - f)
 
     def lateral_stiffness_at_displacement(self, displacement):
-        """K_L = 3 mu F0 / (2 delta_0) (1 - delta_x / delta_0)^(1/2), eq. 12 [N/m]."""
+        """K_L = 3 mu F0 / (2 delta_0) (1 - delta_x / delta_0)^(1/2), equation 12 [N/m]."""
         delta0 = self.sliding_distance
         x = np.minimum(np.abs(finite_array(displacement, "displacement")) / delta0, 1.0)
         stiffness = 1.5 * self.friction_coefficient * self.normal_force / delta0 * np.sqrt(1.0 - x)
@@ -149,7 +149,7 @@ def mindlin_reference(
     counter_body: Material | None = None,
     normalisation: str = "johnson",
 ) -> MindlinReference:
-    r"""Mindlin's smooth-ball reference (paper 001 eqs. 10-12) for a ball of ``radius`` on a flat.
+    r"""Mindlin's smooth-ball reference (paper 001 equations 10-12) for a ball of ``radius`` on a flat.
 
     Eq. 11 gives a^3 = 3 F0 R / (4 E_s) with 1/E_s = sum (1 - nu^2)/E. Eqs. 10 and 12 give
     delta_0 = 3 mu F0 / (16 a G) and K_L = 8 a G (1 - F_x/(mu F0))^(1/3), where G is
@@ -218,7 +218,7 @@ READING_WORDS = {
 
 
 def mindlin_ratios(stiffness, mindlin: Mapping[str, Any]) -> dict[str, Spread]:
-    """Return the spread of K_L / K_L,Mindlin over realisations, in each reading of eq. 12.
+    """Return the spread of K_L / K_L,Mindlin over realisations, in each reading of equation 12.
 
     Parameters
     ----------
@@ -246,7 +246,7 @@ def mindlin_ratios(stiffness, mindlin: Mapping[str, Any]) -> dict[str, Spread]:
 
 
 def rough_vs_smooth(ratios: Mapping[str, Spread]) -> dict[str, Verdict]:
-    """Judge where one rough ball's K_L lies against Mindlin's smooth ball, in each reading of eq. 12.
+    """Judge where one rough ball's K_L lies against Mindlin's smooth ball, in each reading of equation 12.
 
     Paper 001's claim (the rough ball is laterally softer than Mindlin's smooth one) is about one
     ball. The ratios of :func:`mindlin_ratios` over realisations (balls drawn with the same
@@ -260,7 +260,7 @@ def rough_vs_smooth(ratios: Mapping[str, Spread]) -> dict[str, Verdict]:
 
 
 def verdict_words(verdicts: Mapping[str, Verdict], reading: str) -> str:
-    """Return a reading's verdict word, saying so where eq. 12's printed factor 4 decides it.
+    """Return a reading's verdict word, saying so where equation 12's printed factor 4 decides it.
 
     The printed reading's K_L is exactly 4x Johnson's (:func:`mindlin_reference`). Where its
     verdict differs from Johnson's for the same ball and point, the roughness does not decide it:
@@ -966,7 +966,7 @@ def presliding(
 
 
 def effective_shear_modulus_paper001(a: Material, b: Material | None = None) -> float:
-    r"""Effective shear modulus G_s as defined in paper 001 (below eq. 10) [Pa].
+    r"""Effective shear modulus G_s as defined in paper 001 (below equation 10) [Pa].
 
     .. math:: \frac{1}{G_s} = \sum_i \frac{(2 - \nu_i)(1 + \nu_i)}{2 E_i}
               = \sum_i \frac{2 - \nu_i}{4 G_i}

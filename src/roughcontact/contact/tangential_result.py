@@ -70,7 +70,7 @@ class TangentialState:
 
     @property
     def slip(self) -> np.ndarray:
-        """Contact points that slip in this step (``|q|`` = mu p, eq. 3)."""
+        """Contact points that slip in this step (``|q|`` = mu p, equation 3)."""
         return self.contact & ~self.stick
 
     @property
@@ -80,7 +80,7 @@ class TangentialState:
 
     @property
     def normalised_shear(self) -> np.ndarray:
-        """sqrt(q_x^2 + q_y^2) / (mu p): < 1 in stick, 1 in slip, NaN outside the contact (Figs. 11-12)."""
+        """sqrt(q_x^2 + q_y^2) / (mu p): < 1 in stick, 1 in slip, NaN outside the contact (figures 11-12)."""
         out = np.full(self.pressure.shape, np.nan)
         contact = self.contact
         out[contact] = np.hypot(self.shear_x, self.shear_y)[contact] / (
@@ -91,7 +91,7 @@ class TangentialState:
 
 @dataclass(frozen=True)
 class TangentialPathResult(NotebookDisplay):
-    """A frictional loading programme (paper 001 Figs. 6, 10-14; combined normal and tangential steps).
+    """A frictional loading programme (paper 001 figures 6, 10-14; combined normal and tangential steps).
 
     Attributes
     ----------

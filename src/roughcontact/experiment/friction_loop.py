@@ -337,13 +337,13 @@ def loop_energy(displacement, force) -> float:
 
 
 def eq9_force(x, c1: float, c2: float, n: float):
-    """Paper 001 eq. 9 force form, c1 (1 - (1 - c2 x)^n), saturated at c1 for c2 x >= 1."""
+    """Paper 001 equation 9 force form, c1 (1 - (1 - c2 x)^n), saturated at c1 for c2 x >= 1."""
     base = np.clip(1.0 - c2 * np.asarray(x, dtype=float), 0.0, None)
     return c1 * (1.0 - base**n)
 
 
 def eq9_stiffness(x, c1: float, c2: float, n: float):
-    """Paper 001 eq. 9, K_L = c1 c2 n (1 - c2 x)^(n - 1) (0 beyond x = 1/c2) [N/m]."""
+    """Paper 001 equation 9, K_L = c1 c2 n (1 - c2 x)^(n - 1) (0 beyond x = 1/c2) [N/m]."""
     base = np.clip(1.0 - c2 * np.asarray(x, dtype=float), 0.0, None)
     return c1 * c2 * n * base ** (n - 1.0)
 
@@ -399,7 +399,7 @@ class BranchAnalysis:
     point_stiffness: np.ndarray
 
     def stiffness(self, distance):
-        """K_L [N/m] from eq. 9 at ``distance`` [m] from the reversal."""
+        """K_L [N/m] from equation 9 at ``distance`` [m] from the reversal."""
         return eq9_stiffness(distance, self.c1, self.c2, self.n)
 
 
@@ -498,7 +498,7 @@ class LoopAnalysis(NotebookDisplay):
         return out
 
     def to_xarray(self):
-        """Return the record, its last loop and the eq. 9 fits of its two branches as an ``xarray.Dataset``.
+        """Return the record, its last loop and its two branches' equation 9 fits as an ``xarray.Dataset``.
 
         ``displacement`` and ``force`` on ``sample`` (the whole record, with ``in_last_loop``),
         ``fit_displacement`` and ``fit_force`` on ``fit`` (each branch's eq. 9 curve from its
@@ -651,7 +651,7 @@ def analyse_loop(
     plateau_tolerance: float = 0.001,
     plateau_tail: float = 0.2,
 ) -> LoopAnalysis:
-    """Analyse the last loop of a friction record: stroke, mu, eq. 9 fit, K_L at A, B, C, energy.
+    """Analyse the last loop of a friction record: stroke, mu, equation 9 fit, K_L at A, B, C, energy.
 
     The rules are in the module docstring.
 

@@ -1,4 +1,4 @@
-"""A measured load-interference curve (paper 002 Fig. 7's experiment), read from a text table.
+"""A measured load-interference curve (paper 002 figure 7's experiment), read from a text table.
 
 Paper 002 compresses its SU-8 island with a flat nanoindenter tip and compares the measured load
 against interference with the statistical (KKE) and deterministic (BEM) models. A study sets such

@@ -143,7 +143,7 @@ class ComparisonRow:
 
 
 def comparison() -> list[ComparisonRow]:
-    """Recompute section IV of paper 002 from its printed moments and Table I, in both readings of eq. 7.
+    """Recompute section IV of paper 002 from its printed moments and Table I, in both readings of equation 7.
 
     The last row is the plasticity index for a 10 nm rough tip: the paper's 2.06 follows from adding
     the roughnesses linearly (sigma_s + 10 nm); the "standard" column adds them in quadrature (the
@@ -353,7 +353,7 @@ def island_pressures(count: int = 5) -> np.ndarray:
 
 
 def island_top_moments(island: Topography, *, edge: float = 0.2e-6) -> dict[str, float]:
-    """Return the spectral moments (eqs. 1-3) and bandwidth of a stand-in island's top, beside the paper's.
+    """Return the spectral moments (equations 1-3) and bandwidth of a stand-in island's top and the paper's.
 
     The top is the window of the island (heights above half the film thickness) less ``edge`` [m]
     on each side (the step of the side walls). Keys ``top_m0``, ``top_m2``, ``top_m4``,
@@ -407,7 +407,7 @@ def compress_island(
     depth: float | None = None,
     layers: int = 16,
 ) -> LoadUnloadResult:
-    """Load paper 002's island to ``max_force`` with a rigid flat punch and unload it (Figs. 7-9).
+    """Load paper 002's island to ``max_force`` with a rigid flat punch and unload it (figures 7-9).
 
     Paper 002's scenario on :func:`roughcontact.contact.load_unload.load_unload`: force control at
     the paper's loads (0, 100, ..., 1000 uN and 25 uN, unloading back through them), interference zero at

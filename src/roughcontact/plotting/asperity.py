@@ -1,4 +1,4 @@
-"""Figures of the asperity models and the island compression (paper 002 Figs. 7-9)."""
+"""Figures of the asperity models and the island compression (paper 002 figures 7-9)."""
 
 from __future__ import annotations
 
@@ -28,7 +28,7 @@ def plot_load_interference(
     measured: dict | None = None,
     notes: Sequence[str] = (),
 ):
-    """Draw load (uN) against omega / omega_c for each curve, loading solid, unloading dashed (Fig. 7).
+    """Draw load (uN) against omega / omega_c for each curve, loading solid, unloading dashed (figure 7).
 
     Parameters
     ----------
@@ -99,7 +99,7 @@ def plot_area_load(curves: dict[str, dict], ax: Axes | None = None):
 
 
 def plot_von_mises_maps(compression, indices: list[int], *, depth: float = 0.0) -> tuple[Figure, np.ndarray]:
-    """Draw von Mises maps of an island compression at the chosen steps (Figs. 8-9), one panel each.
+    """Draw von Mises maps of an island compression at the chosen steps (figures 8-9), one panel each.
 
     Parameters
     ----------
@@ -148,7 +148,7 @@ def common_omega_c(cases) -> float | None:
 def draw_load_interference(
     curves: dict[str, dict], omega_c: float | None, measured: dict | None, notes: Sequence[str] = ()
 ):
-    """Paper 002 Fig. 7: load against omega / omega_c (or against omega in nm where omega_c is not shared).
+    """Paper 002 figure 7: load against omega / omega_c (or against omega in nm where omega_c is not shared).
 
     Uses :func:`roughcontact.plotting.asperity.plot_load_interference`, which draws at most five
     curves; callers pass at most five. ``notes`` end the legend.
@@ -185,7 +185,7 @@ def _labelled_curves(cases) -> dict[str, dict]:
     "(dashed), with the measured curve of [analysis.compare] where given (paper 002 Fig. 7)."
 )
 def asperity_load_interference_figure(cases, measured=None):
-    """Draw paper 002's Fig. 7 for cases of the ``asperity`` model (up to five), beside a ``measured`` curve.
+    """Draw paper 002's figure 7 for up to five cases of the ``asperity`` model, beside a ``measured`` curve.
 
     ``measured`` is a dict with ``approach`` [m] and ``force`` [N]
     (:func:`~roughcontact.experiment.load_curve.read_load_curve`). None without a stored curve.
@@ -260,7 +260,7 @@ def verdict_note(statistical_case, group, label: str = "") -> str | None:
     "for the mean (confidence interval), and whether KKE over-predicts at each level."
 )
 def island_load_interference_figure(cases, statistical=None, measured=None):
-    """Draw paper 002's Fig. 7 for cases of the ``load_unload`` model, beside the statistical curves.
+    """Draw paper 002's figure 7 for cases of the ``load_unload`` model, beside the statistical curves.
 
     ``statistical`` maps an analysis name to cases of the ``asperity`` model (their curves are
     drawn, up to two); ``measured`` as for :func:`asperity_load_interference_figure`. The legend
@@ -273,7 +273,9 @@ def island_load_interference_figure(cases, statistical=None, measured=None):
     for label, group in own:
         curve = _mean_curve([c for c in map(curve_of, group) if c is not None])
         if curve is not None:
-            model = f"BEM island ({group[0].parameters.get('plasticity', 'surface')} plasticity)"
+            origin = group[0].scalars.get("surface_origin")
+            island = f"{origin} island" if origin else "island"
+            model = f"BEM, {island} ({group[0].parameters.get('plasticity', 'surface')} plasticity)"
             if len(own) > 1 and label:
                 model += f", {label}"
             if len(group) > 1:
@@ -300,7 +302,7 @@ _QUANTITY_AXES = {
     "Richardson extrapolation where there is one."
 )
 def mesh_convergence_figure(cases):
-    """Draw paper 002's Fig. 6: one panel per quantity of the mesh study, None for one grid.
+    """Draw paper 002's figure 6: one panel per quantity of the mesh study, None for one grid.
 
     The quantities and their numbers are :func:`roughcontact.asperity.convergence.mesh_convergence`'s.
     """
@@ -424,7 +426,7 @@ def _first_case_panels(cases, name: str, *, height: float):
     "colour scale (paper 002 Figs. 8-9); a panel at zero load says so."
 )
 def island_von_mises_figure(cases):
-    """Draw paper 002's Figs. 8-9: the stored von Mises maps of the first case, loading then unloading."""
+    """Draw paper 002's figures 8-9: the stored von Mises maps of the first case, loading then unloading."""
     from .layout import colour_scale
     from .study import map_axes
 

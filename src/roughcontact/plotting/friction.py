@@ -1,4 +1,4 @@
-"""Figures of the Winkler-Lennard-Jones friction model and of its validation (paper 000, Figs. 8-9).
+"""Figures of the Winkler-Lennard-Jones friction model and of its validation (paper 000, figures 8-9).
 
 ``plot_*`` draw one sweep or comparison on optional axes; ``*_figure`` draw a study's figure from
 the cases of the ``friction`` model (:mod:`roughcontact.plotting.cases`).
@@ -65,7 +65,7 @@ def box_words(data) -> str:
 
 
 def plot_mu_boxes(comparison, ax: Axes | None = None):
-    """Draw box plots of simulated and compared mu per sample (paper 000, Fig. 9); returns ``(fig, ax)``.
+    """Draw box plots of simulated and compared mu per sample (paper 000, figure 9); returns ``(fig, ax)``.
 
     The compared values are labelled by their origin (measured, reconstructed from reported
     statistics, synthetic) and "by construction" where they were built from this model.
@@ -111,7 +111,7 @@ def _compared_label(comparison) -> str:
 
 
 def plot_mu_means(comparison, ax: Axes | None = None):
-    """Draw the mean mu per sample with one standard deviation, simulated beside compared (Fig. 8).
+    """Draw the mean mu per sample with one standard deviation, simulated beside compared (figure 8).
 
     Takes and returns what :func:`plot_mu_boxes` does: a ``Comparison`` and optional axes;
     ``(fig, ax)``.

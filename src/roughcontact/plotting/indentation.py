@@ -1,4 +1,4 @@
-"""Figure of a nanoindentation analysis: load-depth curve, unloading fit, tangent (paper 001 Fig. 7)."""
+"""Figure of a nanoindentation analysis: load-depth curve, unloading fit, tangent (paper 001 figure 7)."""
 
 from __future__ import annotations
 
@@ -110,7 +110,7 @@ def plot_indentation_record(data, scalars: dict, *, ax: Axes | None = None, titl
     "of unloading, whose slope is the contact stiffness S_e (paper 001 Fig. 7)."
 )
 def indentation_figure(cases):
-    """Draw each curve (up to four) with its fitted unloading law and the tangent S_e (paper 001 Fig. 7)."""
+    """Draw each curve (up to four) with its fitted unloading law and the tangent S_e (paper 001 figure 7)."""
 
     def draw(case, data, ax):
         source = case.parameters.get("curve")

@@ -79,7 +79,7 @@ def plot_hysteresis_loops(
     ax: Axes | None = None,
     title: str | None = None,
 ) -> Figure:
-    """Draw friction hysteresis loops, friction force vs tangential displacement (Figs. 13-14).
+    """Draw friction hysteresis loops, friction force vs tangential displacement (figures 13-14).
 
     Simulated loops are thick solid lines, compared ones (measured, or synthetic: their labels say
     which) thin dashed lines; the paper overlays the loops it measured at five spots on the wafer
@@ -162,7 +162,7 @@ def plot_stick_slip_maps(
     columns: int = 3,
     cmap: str = "viridis",
 ) -> Figure:
-    """Draw maps of the normalised shear sqrt(qx^2 + qy^2)/(mu p) (paper 001 Figs. 11-12).
+    """Draw maps of the normalised shear sqrt(qx^2 + qy^2)/(mu p) (paper 001 figures 11-12).
 
     The colour scale is fixed to 0..1 (a perceptually uniform map, so equal steps of stick read
     as equal steps of colour; the paper's rainbow is ``cmap="jet"``): values below 1 stick, 1 is
@@ -247,7 +247,7 @@ def plot_pressure_maps(
     zoom: tuple[float, float, float, float],
     cmap: str = "magma",
 ) -> Figure:
-    """Draw contact pressure maps, the whole field beside a zoomed-in view (paper 001 Figs. 8-9).
+    """Draw contact pressure maps, the whole field beside a zoomed-in view (paper 001 figures 8-9).
 
     One row per map: left the whole computed field with the zoomed box drawn on it, right the
     box. Every panel shares one colour scale, from 0 to the 99.5th percentile of the nonzero
@@ -316,7 +316,7 @@ def plot_displacement_path(
     positions: Mapping[str, np.ndarray] | None = None,
     ax: Axes | None = None,
 ) -> Figure:
-    """Draw the tangential displacement programme against the step (paper 001 Fig. 6).
+    """Draw the tangential displacement programme against the step (paper 001 figure 6).
 
     A combined programme's normal force (``normal_force``, when it varies) is drawn on a second
     axis on the right.
@@ -395,7 +395,7 @@ def plot_lateral_stiffness(
     ax: Axes | None = None,
     title: str | None = None,
 ) -> Figure:
-    """Draw the lateral stiffness at points A, B, C vs normal load (paper 001 Fig. 15).
+    """Draw the lateral stiffness at points A, B, C vs normal load (paper 001 figure 15).
 
     Simulated values are markers, measured ones solid lines, Mindlin's dashed lines, one colour
     per point (A red, B blue, C black). Mindlin curves may be given for both normalisations of
@@ -524,7 +524,7 @@ def plot_loop_analysis(
     ax: Axes | None = None,
     record: str = "case",
 ):
-    """Draw the analysis of a friction loop: the case, its last loop, both eq. 9 fits, the points (Fig. 10).
+    """Draw a friction loop's analysis: the case, its last loop, both equation 9 fits, the points (figure 10).
 
     Parameters
     ----------
@@ -594,7 +594,7 @@ def plot_loop_analysis(
     "(paper 001 Fig. 10)."
 )
 def loop_analysis_figure(cases):
-    """Draw each case (grey), its last loop, the eq. 9 fits and the points with their K_L (Fig. 10).
+    """Draw each case (grey), its last loop, the equation 9 fits and the points with their K_L (figure 10).
 
     Cases of the ``loop_analysis`` model (or :class:`~roughcontact.experiment.friction_loop.LoopAnalysis`
     results through :func:`~roughcontact.plotting.cases.as_cases`), one panel each, up to four. A
@@ -680,7 +680,7 @@ def _realisations_by_load(cases) -> list[list]:
     "says; paper 001 Figs. 13-14)."
 )
 def loops_figure(cases, measured: MeasuredLoop | None = None, title: str = ""):
-    """Draw the friction loops of every case, one panel per sample, with a compared loop (Figs. 13-14).
+    """Draw the friction loops of every case, one panel per sample, with a compared loop (figures 13-14).
 
     ``title`` names a panel of cases without a sample.
     """
@@ -750,7 +750,7 @@ def _mean_loop(
     "steps), zoomed to the contact: 1 slips, below 1 sticks (paper 001 Figs. 11-12)."
 )
 def stick_slip_figure(cases):
-    """Draw normalised shear maps of up to three cases: A, B, C of the last loop, or kept steps (Figs. 11-12).
+    """Draw the normalised shear of up to three cases: A, B, C of the last loop or kept steps (figures 11-12).
 
     One row per case; NaN (outside the contact) blank, zoomed to the contacts.
     """
@@ -803,7 +803,7 @@ def _zoom(masks) -> tuple[float, float, float, float] | None:
 
 
 def shear_maps(panels, columns: int):
-    """Draw stored normalised shear maps, zoomed to the contacts (paper 001 Figs. 11-12).
+    """Draw stored normalised shear maps, zoomed to the contacts (paper 001 figures 11-12).
 
     ``panels``: (title, map on (x, y), x, y) per panel, the coordinates [m] at pixel centres; NaN
     (outside the contact) is blank. The zoom is the box of every finite pixel, widened by 10 %.
@@ -832,7 +832,7 @@ def _case_name(case) -> str:
     "the zoom on the contact with its outline (right), on one colour scale (paper 001 Figs. 8-9)."
 )
 def pressure_figure(cases):
-    """Draw the contact pressure of up to three cases, whole field and zoom on the contact (Figs. 8-9)."""
+    """Draw the contact pressure of up to three cases, whole field and zoom on the contact (figures 8-9)."""
     chosen = evenly_chosen(_by_force(with_fields(cases)), 3)
     if not chosen:
         return None
@@ -857,7 +857,7 @@ def pressure_figure(cases):
     "force is dashed on the right axis."
 )
 def path_figure(cases):
-    """Draw the tangential displacement programme, step by step, with the last loop (Fig. 6).
+    """Draw the tangential displacement programme, step by step, with the last loop (figure 6).
 
     Cases that share one programme draw one line; the points A, B, C of the first case are marked.
     The realisations of a case share its programme (the step control may insert other steps in
@@ -1004,7 +1004,7 @@ def _verdict_line(at_load) -> str:
     "interval of one ball (thin lines), and the verdict of one ball against Mindlin in the title."
 )
 def lateral_stiffness_figure(cases, measured: MeasuredLoop | None = None, title: str = ""):
-    """Draw K_L at A, B, C against F0 with Mindlin in both readings, one panel per sample (Fig. 15).
+    """Draw K_L at A, B, C against F0 with Mindlin in both readings, one panel per sample (figure 15).
 
     Over realisations, each load shows the mean with its 95 % interval (capped bars) and the 95 %
     prediction interval of one ball (thin lines); the panel's title sums up one ball's verdict

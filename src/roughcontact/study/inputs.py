@@ -88,6 +88,18 @@ class CaseInputs:
     materials: dict[str, Material]
     device: str = "cpu"
 
+    def origin(self, name: str) -> str:
+        """Say where topography ``name`` comes from: ``measured`` (a file, or combined with one) or ``synthetic``.
+
+        Every label of a result on it carries the word (a generated stand-in is never "the island").
+        """
+        spec = self.specs[name]
+        if isinstance(spec, FileTopography):
+            return "measured"
+        if isinstance(spec, Combined) and any(self.origin(part) == "measured" for part in spec.combine):
+            return "measured"
+        return "synthetic"
+
     def identity(self, name: str) -> str:
         """Return a text that is equal for two cases exactly when they build the same topography ``name``."""
         spec = self.specs[name]

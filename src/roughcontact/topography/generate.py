@@ -782,7 +782,7 @@ def matched_moments(
     modes: str = "wavevector",
     coarse: str = "refuse",
 ) -> Topography:
-    r"""Make a self-affine map whose expected spectral moments m0, m2, m4 are given (paper 002 eqs. 1-3).
+    r"""Make a self-affine map whose expected spectral moments m0, m2, m4 are given (paper 002 equations 1-3).
 
     The PSD is isotropic, a flat roll-off plateau below :math:`q_L`, a power law of the Hurst
     exponent ``hurst`` above it, and a hard cutoff at :math:`q_s` (:func:`self_affine` with

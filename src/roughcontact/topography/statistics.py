@@ -349,7 +349,7 @@ def profile_parameters(topography: Topography) -> dict[str, float]:
 
 @dataclass(frozen=True)
 class SpectralMoments:
-    """Spectral moments of a surface (paper 002 eqs. 1-3), SI.
+    """Spectral moments of a surface (paper 002 equations 1-3), SI.
 
     Attributes
     ----------
@@ -367,7 +367,7 @@ class SpectralMoments:
 
 
 def spectral_moments(topography: Topography, *, derivative: str = "forward") -> SpectralMoments:
-    r"""Zeroth, second and fourth spectral moments, exactly as paper 002 eqs. 1-3.
+    r"""Zeroth, second and fourth spectral moments, exactly as paper 002 equations 1-3.
 
     .. math::
 
@@ -434,7 +434,7 @@ class McCoolParameters:
 
 
 def mccool_parameters(*, m0: float, m2: float, m4: float) -> McCoolParameters:
-    r"""McCool's asperity parameters from the spectral moments (paper 002 eqs. 4-5).
+    r"""McCool's asperity parameters from the spectral moments (paper 002 equations 4-5).
 
     .. math::
 

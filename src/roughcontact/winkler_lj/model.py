@@ -120,7 +120,7 @@ def _within_half_sphere(surface: Topography, tip: Topography | None, radius: flo
 def work_of_adhesion(
     surface_energy_1: float, surface_energy_2: float, *, reading: str = "girifalco_good"
 ) -> float:
-    r"""Work of adhesion dgamma of two surfaces [J/m^2] (paper 000, below eq. 7).
+    r"""Work of adhesion dgamma of two surfaces [J/m^2] (paper 000, below equation 7).
 
     ``"girifalco_good"`` (default): dgamma = 2 sqrt(gamma1 gamma2), the dispersive
     (Berthelot / Girifalco-Good) estimate of gamma1 + gamma2 - gamma12, which gives 2 gamma for two
@@ -176,7 +176,7 @@ class WinklerLJModel:
     # --- constants --------------------------------------------------------------------------
     @property
     def spring_stiffness(self) -> float:
-        """E / (k h): stress per unit compression of a spring (eq. 3) [Pa/m]."""
+        """E / (k h): stress per unit compression of a spring (equation 3) [Pa/m]."""
         return self.contact_modulus / (self.winkler_factor * self.layer_thickness)
 
     @property
@@ -242,7 +242,7 @@ class WinklerLJModel:
         return self.spring_stiffness * compression, float(self._attraction(gap).sum())
 
     def net_normal_force(self, approach: float) -> float:
-        """Return the normal force that eq. 2 balances at an apex overlap ``approach`` [m], N(approach).
+        """Return the normal force that equation 2 balances at an apex overlap ``approach`` [m], N(approach).
 
         Parameters
         ----------
@@ -343,7 +343,7 @@ class WinklerLJModel:
         return np.sqrt(2.0 * work / (height * self._shear_compliance(cuboid_height)))
 
     def solve(self, normal_force: float) -> WinklerLJResult:
-        """Solve eq. 2 for the separation at ``normal_force`` and return the friction (eqs. 8-17).
+        """Solve equation 2 for the separation at ``normal_force`` and return the friction (equations 8-17).
 
         With ``gap_model="bem"`` eq. 2 is replaced by the adhesive boundary-element solution
         (:func:`bem_state_at_load`: the elastic half-space under the same composite surface, E*
@@ -588,7 +588,7 @@ class WinklerLJModel:
         return approach - self.epsilon + self._wall
 
     def normal_curve(self, approach: Sequence[float]) -> WinklerNormalCurve:
-        """Return the normal force, contact and interaction areas of eq. 2 over a programme of approaches.
+        """Return the normal force, contact and interaction areas (equation 2) over a programme of approaches.
 
         The approach is that of :func:`roughcontact.contact.solve_adhesive`: from the first touch
         of the undeformed composite surface (the highest spring at l = epsilon), so both models

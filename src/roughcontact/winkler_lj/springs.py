@@ -1,4 +1,4 @@
-"""The constants of paper 000's Winkler springs: the composite modulus (eq. 1) and the factor k (eq. 4).
+"""Paper 000's Winkler springs: their composite modulus (equation 1) and factor k (equation 4).
 
 Each spring of the layer carries P = E / (k h) dz (eq. 3); E is the composite modulus of the two
 surfaces (:func:`composite_modulus`, the Hertz E* with the paper's plain-number signature) and k
@@ -18,7 +18,7 @@ from ..materials import Material, contact_modulus
 def composite_modulus(
     youngs_modulus_1: float, poissons_ratio_1: float, youngs_modulus_2: float, poissons_ratio_2: float
 ) -> float:
-    r"""Composite Young's modulus of paper 000, eq. 1 [Pa]: the Hertz E* with plain numbers.
+    r"""Composite Young's modulus of paper 000, equation 1 [Pa]: the Hertz E* with plain numbers.
 
     .. math:: E = \left(\frac{1 - \nu_1^2}{E_1} + \frac{1 - \nu_2^2}{E_2}\right)^{-1}
 
@@ -67,7 +67,7 @@ _WINKLER_READINGS = ("paper000_eq4_printed", "uniaxial_strain")
 def winkler_factor(
     poissons_ratio_1: float, poissons_ratio_2: float, *, reading: str = "paper000_eq4_printed"
 ) -> float:
-    r"""Factor k of the Winkler springs of paper 000 (eq. 3: P = E / (k h) dz) [-].
+    r"""Factor k of the Winkler springs of paper 000 (equation 3: P = E / (k h) dz) [-].
 
     ``"paper000_eq4_printed"`` (default, the paper's formula, with s = sqrt(nu1 nu2)):
 

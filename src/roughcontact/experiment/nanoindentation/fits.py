@@ -183,7 +183,7 @@ class CreepFit:
 def fit_creep(
     time: np.ndarray, depth: np.ndarray, method: str = "tang_ngan", *, window: float = 0.2
 ) -> CreepFit:
-    """Creep rate at the end of the hold (the d_dot of paper 001 eq. 5).
+    """Creep rate at the end of the hold (the d_dot of paper 001 equation 5).
 
     Parameters
     ----------

@@ -105,7 +105,7 @@ def berkovich_area(contact_depth: float) -> float:
 
 @dataclass(frozen=True)
 class IndentationResult(NotebookDisplay):
-    """Oliver-Pharr analysis with the viscous correction (paper 001 eqs. 5-8), SI units.
+    """Oliver-Pharr analysis with the viscous correction (paper 001 equations 5-8), SI units.
 
     Attributes
     ----------

@@ -215,7 +215,7 @@ def _moments(parameters: AsperityKeys, inputs) -> tuple[dict[str, float], object
 
 
 def run(parameters: AsperityKeys, inputs) -> CaseOutput:
-    """Asperity parameters (eqs. 4-9) and, with ``max_force``, the KKE load-unload curve."""
+    """Asperity parameters (equations 4-9) and, with ``max_force``, the KKE load-unload curve."""
     from ...asperity import statistical_load_unload
     from ...asperity.greenwood_williamson import summits_of
     from ...asperity.parameters import asperity_parameters

@@ -405,7 +405,7 @@ def _cropped(result) -> Any:
 
 
 def run(parameters: FrictionParameters, inputs) -> CaseOutput:
-    """Solve one case: the separation from eq. 2 at ``normal_force``, then friction and mu (eqs. 8-17)."""
+    """Solve one case: the separation at ``normal_force`` (equation 2), friction and mu (equations 8-17)."""
     model = build_model(parameters, inputs)
     result = model.solve(parameters.normal_force)
     constants = model.parameters()

@@ -276,6 +276,7 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
             for i in sorted({*chosen, peak_index})
         }
     scalars = compression.scalars() | {"max_von_mises_at_peak": float(maps[peak_index].max())}
+    scalars["surface_origin"] = inputs.origin(parameters.topography)
     scalars |= {
         "grid_points": int(surface.heights.size),
         "pixel_size": float(surface.size[0] / surface.shape[0]),

@@ -135,7 +135,7 @@ def check(parameters: NanoindentationParameters) -> None:
 
 
 def run(parameters: NanoindentationParameters, inputs) -> CaseOutput:
-    """Analyse the record: Oliver-Pharr with the hold-creep correction (eqs. 5-8), and the hardness."""
+    """Analyse the record: Oliver-Pharr with the hold-creep correction (equations 5-8), and the hardness."""
     from ...experiment.nanoindentation import oliver_pharr
 
     result = oliver_pharr(

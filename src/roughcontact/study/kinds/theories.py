@@ -127,7 +127,7 @@ def run(parameters: TheoriesParameters, inputs) -> CaseOutput:
         "persson_fraction_magnified",
         "reduced_pressure",
     ]
-    scalars = result.scalars() | {"surface_origin": surface_origin(parameters.topography, inputs)}
+    scalars = result.scalars() | {"surface_origin": inputs.origin(parameters.topography)}
     return CaseOutput(scalars, result.to_xarray()[keep], tuple(result.range_warnings()))
 
 
