@@ -89,7 +89,7 @@ class CaseInputs:
     device: str = "cpu"
 
     def origin(self, name: str) -> str:
-        """Say where topography ``name`` comes from: ``measured`` (a file, or combined with one) or ``synthetic``.
+        """Say where topography ``name`` comes from: ``measured`` (a file, or with one), else ``synthetic``.
 
         Every label of a result on it carries the word (a generated stand-in is never "the island").
         """

@@ -131,20 +131,6 @@ def run(parameters: TheoriesParameters, inputs) -> CaseOutput:
     return CaseOutput(scalars, result.to_xarray()[keep], tuple(result.range_warnings()))
 
 
-def surface_origin(name: str, inputs) -> str:
-    """Say where a case's surface comes from: ``measured`` (a file, or combined with one) or ``synthetic``."""
-    from ..schema import Combined, FileTopography
-
-    spec = inputs.specs[name]
-    if isinstance(spec, FileTopography):
-        return "measured"
-    if isinstance(spec, Combined) and any(
-        surface_origin(part, inputs) == "measured" for part in spec.combine
-    ):
-        return "measured"
-    return "synthetic"
-
-
 # --- tables ----------------------------------------------------------------------------------------
 
 INTERVAL_NOTE = (
