@@ -154,7 +154,8 @@ def test_realisations_of_a_fixed_seed_are_refused(tmp_path):
 
 
 def test_cases_are_grouped_by_all_but_their_realisation():
-    from roughcontact.plotting.cases import ResultCase, realisations_of
+    from roughcontact.cases import realisations_of
+    from roughcontact.plotting.cases import ResultCase
 
     cases = [
         ResultCase(f"force 10 uN, replicate {r}", {}, None, {"force": 1e-5, "replicate": r}) for r in range(3)
@@ -249,7 +250,7 @@ def test_measured_spots_of_one_sample_are_its_realisations(tmp_path):
 def test_cases_on_different_grids_are_not_realisations_of_one_another():
     # a mesh study sweeps a topography key: the cases' parameters name the surface only, the grid
     # is in their swept values; merging them drew paper002_mesh.toml's 6 grids x 3 draws as "18 realisations"
-    from roughcontact.plotting.cases import realisations_of
+    from roughcontact.cases import realisations_of
     from roughcontact.study.kind import CaseRecord
 
     def record(shape, replicate):

@@ -13,7 +13,7 @@ PACKAGE = "roughcontact"
 LAYERS = (
     {"errors", "units", "checks", "results", "display_html", "materials", "_json", "_files", "_deprecation",
      "_text_table", "_backend", "_device", "_gpu", "_fftw_wisdom", "_cache", "_lazy", "_version", "progress",
-     "spread", "references", "origin", "messages"},
+     "spread", "references", "origin", "messages", "cases"},
     {"topography", "elasticity", "analytic"},
     {"contact", "asperity", "experiment", "theory"},
     {"winkler_lj", "friction"},

@@ -34,6 +34,8 @@ def test_old_and_new_spelling_together_is_an_error():
         ("roughcontact.experiment", "paper000_simulation", "roughcontact.papers.paper000"),
         ("roughcontact.papers.paper001", "presliding", "roughcontact.contact.presliding"),
         ("roughcontact.experiment.compare", "simulate_mu", "roughcontact.papers.paper000"),
+        ("roughcontact.plotting.cases", "realisations_of", "roughcontact.cases"),  # study logic, no drawing
+        ("roughcontact.plotting.cases", "at_load", "roughcontact.cases"),
     ],
 )
 def test_a_moved_name_is_found_at_its_old_place_with_a_warning(old, name, new):

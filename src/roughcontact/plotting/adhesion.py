@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..cases import box_around, evenly_chosen, with_fields
 from ..contact.adhesive_result import LINE_NAMES
-from .cases import box_around, caption, evenly_chosen, with_fields
+from .cases import caption
 
 
 def _scale(values, unit: str) -> tuple[float, str]:

@@ -10,8 +10,9 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
+from ..cases import branch_points, evenly_chosen, grouped, realisations_of, with_fields
 from ..units import format_si, unit_factor
-from .cases import branch_points, caption, evenly_chosen, grouped, realisations_of, with_fields
+from .cases import caption
 from .contact import plot_von_mises
 from .layout import axes_for, legend
 

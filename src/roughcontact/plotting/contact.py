@@ -10,8 +10,9 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
+from ..cases import branch_points, evenly_chosen, grouped, realisations_of, scalar_series, with_fields
 from ..units import format_si, prefixed_scale
-from .cases import branch_points, caption, evenly_chosen, grouped, realisations_of, scalar_series, with_fields
+from .cases import caption
 from .layout import axes_for, legend
 from .study import map_length_scale
 

@@ -9,8 +9,9 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.axes import Axes
 
+from ..cases import at_load, axis_words, grouped, loads_of, setting_of
 from ..units import format_si, prefixed_scale
-from .cases import at_load, axis_words, caption, grouped, loads_of, setting_of
+from .cases import caption
 from .layout import axes_for, legend
 
 BOX_FROM = 5

@@ -31,6 +31,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
 
+from ..cases import evenly_chosen, grouped, realisations_of, with_fields
 from ..contact.presliding import MINDLIN_READINGS as READINGS
 from ..contact.presliding import POINT_NAMES as POINTS
 from ..contact.presliding import mindlin_ratios, rough_vs_smooth, verdict_words
@@ -38,7 +39,7 @@ from ..errors import InputError
 from ..origin import MEASURED, DataOrigin
 from ..spread import spread
 from ..units import format_si, prefixed_scale, unit_factor
-from .cases import caption, evenly_chosen, grouped, panel_per_case, realisations_of, with_fields
+from .cases import caption, panel_per_case
 from .layout import axes_for, colour_scale, empty_grey, legend, shared_colorbar
 
 # fixed, as in paper 001 Figs. 13-15; K_L's mN/µm is also what the tables write (units.prefixed_scale)
@@ -670,7 +671,7 @@ def _by_force(cases) -> list:
 
 
 def _realisations_by_load(cases) -> list[list]:
-    """Return the realisations of each case (:func:`~.cases.realisations_of`), in load order."""
+    """Return the realisations of each case (:func:`~roughcontact.cases.realisations_of`), in load order."""
     return sorted(realisations_of(cases).values(), key=lambda group: _number(group[0], "normal_force"))
 
 

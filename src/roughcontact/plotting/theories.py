@@ -21,9 +21,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..cases import setting_of
 from ..spread import spread
 from ..units import prefixed_scale
-from .cases import caption, setting_of
+from .cases import caption
 
 __all__ = [
     "Sweep",

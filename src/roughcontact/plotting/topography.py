@@ -11,11 +11,12 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
+from ..cases import evenly_chosen
 from ..topography import Topography
 from ..topography.process import find_specks
 from ..topography.statistics import psd_1d, psd_radial
 from ..units import format_si, prefixed_scale
-from .cases import caption, evenly_chosen
+from .cases import caption
 from .layout import CLIP_PERCENTILES, axes_for, colour_scale, shared_colorbar
 
 

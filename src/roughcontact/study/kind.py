@@ -24,8 +24,9 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
+from ..cases import axis_words
 from ..messages import marked
-from ..plotting.cases import axis_words, figure_caption, plotting_function
+from ..plotting.cases import figure_caption, plotting_function
 from ..units import format_si
 from .schema import Strict
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ..plotting.cases import axis_words
+from ..cases import axis_words
 from ..units import format_si
 
 
@@ -105,7 +105,7 @@ def _realisations(analysis) -> str:
     realisations read ``6 settings, each on 5 realisations (one case per realisation)``, never "30
     cases each on 5 realisations". Settings of an unfinished study may have fewer; the words say so.
     """
-    from ..plotting.cases import realisations_of
+    from ..cases import realisations_of
 
     sizes = [len(group) for group in realisations_of(analysis.finished).values()]
     if not sizes:

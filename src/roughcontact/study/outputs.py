@@ -213,7 +213,7 @@ def spread_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
     """One row per group of realisations and scalar: its spread over the realisations (SI).
 
     A group is the cases whose parameters differ only in their realisation (``replicate``:
-    :func:`roughcontact.plotting.cases.realisations_of`), so measured spots of one sample (files
+    :func:`roughcontact.cases.realisations_of`), so measured spots of one sample (files
     zipped with ``replicate``) are its realisations too; a row names the group by its sample and
     the swept values its cases share. Each numeric scalar of the group's finished cases is
     summarised by :func:`roughcontact.spread.spread` (n, mean, std, 95 % interval of the mean,
@@ -225,7 +225,7 @@ def spread_rows(analysis: StoredAnalysis) -> list[dict[str, Any]]:
     to its solver's tolerance, or a material constant) does not depend on the draw and is left
     out. Empty for an analysis of one realisation.
     """
-    from ..plotting.cases import realisations_of
+    from ..cases import realisations_of
     from ..spread import spread
 
     if analysis.realisations < 2:

@@ -1,13 +1,13 @@
 """Helpers the study kinds' run functions share: grid coordinates of a dataset, boxes around fields.
 
 Choosing and grouping cases for figures and tables, and the box around a field
-(:func:`~roughcontact.plotting.cases.box_around`, also used to crop stored fields), are in
-:mod:`roughcontact.plotting.cases`.
+(:func:`~roughcontact.cases.box_around`, also used to crop stored fields), are in
+:mod:`roughcontact.cases`.
 """
 
 from __future__ import annotations
 
-from ...plotting.cases import box_around
+from ...cases import box_around
 
 __all__ = ["box_around", "grid"]
 

@@ -93,9 +93,9 @@ import numpy as np
 from pydantic import Field, field_validator, model_serializer, model_validator
 from pydantic_core import PydanticCustomError
 
+from ...cases import at_load, by_sample, grouped, loads_of
 from ...errors import InputError
 from ...papers import paper000
-from ...plotting.cases import at_load, by_sample, grouped, loads_of
 from ...topography import statistics
 from ...winkler_lj import WinklerLJResult
 from ..kind import CaseOutput, CaseParameters, CaseRecord, FigureContext, Kind, figure, fill_from_paper
@@ -715,7 +715,7 @@ def _claims_table(records, context):
     claims each reading keeps and whether any keeps them all. None for other analyses, or with one
     scan per reading.
     """
-    from ...plotting.cases import at_load
+    from ...cases import at_load
 
     bodies = (paper000.MATERIAL, paper000.TIP_MATERIAL)
     chosen = [

@@ -67,8 +67,8 @@ import numpy as np
 from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
+from ...cases import evenly_chosen
 from ...contact.load_unload import LoadUnloadResult
-from ...plotting.cases import evenly_chosen
 from ...units import format_si
 from ..kind import CaseOutput, CaseParameters, Kind, figure, fill_from_paper
 from ..schema import Force, Length, MaterialName, Pressure, TopographyName
@@ -406,8 +406,8 @@ def _against_statistical(records, context):
     asperity analysis.
     """
     from ...asperity.comparison import LEVELS, against_realisations
+    from ...cases import realisations_of
     from ...papers.paper002 import STATISTICAL_WORDS
-    from ...plotting.cases import realisations_of
     from ..store import Table
 
     statistical = [(name, case) for name, cases in _statistical(records, context).items() for case in cases]

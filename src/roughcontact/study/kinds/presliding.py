@@ -550,8 +550,8 @@ def _lateral_stiffness_spread_table(records, context):
     notes (CSV, report, terminal) say what the intervals are and sum up the verdicts per sample.
     None without realisations.
     """
+    from ...cases import realisations_of
     from ...contact.presliding import READING_WORDS, mindlin_ratios, rough_vs_smooth, verdict_words
-    from ...plotting.cases import realisations_of
     from ...spread import spread
     from ..store import Table
 
