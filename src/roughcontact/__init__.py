@@ -21,14 +21,12 @@ The names of the common jobs, all in SI units (m, Pa, N, J/m^2)::
   :class:`UnsupportedFormatError`, :class:`ConvergenceError`.
 
 Everything else is in the subpackages, each with its own ``__all__``. Importing the package is
-cheap and has no side effects: the names are loaded when first used.
+cheap: the names are loaded when first used, from the homes its type stub ``__init__.pyi`` gives
+them (the one list of the public names, :mod:`roughcontact._lazy`).
 """
 
-from ._lazy import lazy_names
-from ._version import __version__
+from ._lazy import attach_stub
 from .display_html import draw_thumbnails_with
-from .errors import ConvergenceError, InputError, UnitError, UnsupportedFormatError
-from .units import quantity
 
 
 def _thumbnail(name: str, result) -> bytes:
@@ -40,62 +38,4 @@ def _thumbnail(name: str, result) -> bytes:
 
 draw_thumbnails_with(_thumbnail)  # the figures are a floor above display_html: registered from here
 
-_HOMES = {
-    "generate": "roughcontact.topography",
-    "Topography": "roughcontact.topography",
-    "read_topography": "roughcontact.topography",
-    "save_topography": "roughcontact.topography",
-    "load_topography": "roughcontact.topography",
-    "spectral_moments": "roughcontact.topography",
-    "Material": "roughcontact.materials",
-    "get_material": "roughcontact.materials",
-    "contact_modulus": "roughcontact.materials",
-    "solve_normal": "roughcontact.contact",
-    "solve_tangential": "roughcontact.contact",
-    "solve_frictional": "roughcontact.contact",
-    "solve_adhesive": "roughcontact.contact",
-    "load_unload": "roughcontact.contact",
-    "solve_winkler_lj": "roughcontact.winkler_lj",
-    "statistical_load_unload": "roughcontact.asperity",
-    "presliding": "roughcontact.contact",
-    "analyse_loop": "roughcontact.experiment.friction_loop",
-    "oliver_pharr": "roughcontact.experiment.nanoindentation",
-    "load_study": "roughcontact.study",
-    "run_study": "roughcontact.study",
-    "answer": "roughcontact.study",
-}
-"""Public name -> the module that defines it, or holds it as a submodule (imported on first use)."""
-
-__all__ = [
-    "ConvergenceError",
-    "InputError",
-    "Material",
-    "Topography",
-    "UnitError",
-    "UnsupportedFormatError",
-    "__version__",
-    "analyse_loop",
-    "answer",
-    "contact_modulus",
-    "generate",
-    "get_material",
-    "load_study",
-    "load_topography",
-    "load_unload",
-    "oliver_pharr",
-    "presliding",
-    "quantity",
-    "read_topography",
-    "run_study",
-    "save_topography",
-    "solve_adhesive",
-    "solve_normal",
-    "solve_tangential",
-    "solve_frictional",
-    "solve_winkler_lj",
-    "spectral_moments",
-    "statistical_load_unload",
-]
-
-
-__getattr__, __dir__ = lazy_names(__name__, _HOMES)
+__getattr__, __dir__, __all__ = attach_stub(__name__)  # the names and their homes: __init__.pyi

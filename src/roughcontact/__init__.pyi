@@ -1,7 +1,8 @@
-"""Type stub of :mod:`roughcontact`: the lazy public names, for type checkers and IDEs.
+"""The public names of :mod:`roughcontact`, each re-exported from its home: the one list of them.
 
-The package loads these names on first use (``__getattr__``); here each is imported from the module
-that defines it. ``tests/unit/test_type_stubs.py`` keeps this file and ``__all__`` in step.
+Type checkers and IDEs read this stub; the package reads it too, when imported
+(:func:`roughcontact._lazy.attach_stub`): the names here are its ``__all__``, each loaded from its
+home on first use. A new public name is one line here.
 """
 
 from ._version import __version__ as __version__

@@ -19,36 +19,6 @@ The names here load on first use (:mod:`roughcontact._lazy`): importing one solv
 not import the others.
 """
 
-from .._lazy import lazy_names
+from .._lazy import attach_stub
 
-_HOMES = {
-    "AdhesiveResult": ".adhesive_result",
-    "compliance_for": ".normal",
-    "Exponential": ".interaction",
-    "LennardJones": ".interaction",
-    "load_path": ".sweep",
-    "load_unload": ".load_unload",
-    "LoadUnloadResult": ".load_unload",
-    "MaugisDugdale": ".interaction",
-    "NormalContactResult": ".result",
-    "presliding": ".presliding",
-    "PreslidingResult": ".presliding",
-    "read_path_csv": ".paths",
-    "read_programme_csv": ".paths",
-    "ShearSolver": ".shear_solver",
-    "solve_adhesive": ".adhesive",
-    "solve_frictional": ".frictional",
-    "solve_normal": ".normal",
-    "solve_tangential": ".tangential",
-    "stroke_path": ".paths",
-    "SurfacePlasticity": ".load_unload",
-    "symmetric_path": ".paths",
-    "TangentialPathResult": ".tangential_result",
-    "TangentialState": ".tangential_result",
-    "VolumePlasticity": ".load_unload",
-}
-"""Public name -> the submodule that defines it (imported on first use)."""
-
-__all__ = sorted(_HOMES)
-
-__getattr__, __dir__ = lazy_names(__name__, _HOMES)
+__getattr__, __dir__, __all__ = attach_stub(__name__)  # the names: __init__.pyi

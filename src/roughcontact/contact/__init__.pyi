@@ -1,4 +1,8 @@
-"""Type stub of :mod:`roughcontact.contact`: its lazy public names, for type checkers and IDEs."""
+"""The public names of :mod:`roughcontact.contact`, each re-exported from its module: the one list of them.
+
+Type checkers and IDEs read this stub; the package reads it too (:func:`roughcontact._lazy.attach_stub`):
+the names here are its ``__all__``, each loaded from its module on first use.
+"""
 
 from .adhesive import solve_adhesive as solve_adhesive
 from .adhesive_result import AdhesiveResult as AdhesiveResult
@@ -24,3 +28,5 @@ from .sweep import load_path as load_path
 from .tangential import solve_tangential as solve_tangential
 from .tangential_result import TangentialPathResult as TangentialPathResult
 from .tangential_result import TangentialState as TangentialState
+
+__all__: list[str]

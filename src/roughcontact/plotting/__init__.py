@@ -12,31 +12,6 @@ Two families, both returning matplotlib objects and touching no global pyplot st
 Names load from their modules on first use.
 """
 
-from .._lazy import lazy_names
+from .._lazy import attach_stub
 
-_HOMES = {
-    "as_cases": ".cases",
-    "figure_caption": ".cases",
-    "ResultCase": ".cases",
-    "plot_area_load": ".asperity",
-    "plot_load_interference": ".asperity",
-    "plot_von_mises_maps": ".asperity",
-    "plot_contact_area": ".contact",
-    "plot_contact_overview": ".contact",
-    "plot_gap": ".contact",
-    "plot_load_approach": ".contact",
-    "plot_pressure": ".contact",
-    "plot_von_mises": ".contact",
-    "plot_friction_vs_load": ".friction",
-    "plot_mu_boxes": ".friction",
-    "plot_mu_means": ".friction",
-    "plot_heights": ".topography",
-    "plot_overview": ".topography",
-    "plot_psd": ".topography",
-}
-"""Public name -> its module in this package (imported on first use)."""
-
-__all__ = sorted(_HOMES)
-
-
-__getattr__, __dir__ = lazy_names(__name__, _HOMES)
+__getattr__, __dir__, __all__ = attach_stub(__name__)  # the names: __init__.pyi

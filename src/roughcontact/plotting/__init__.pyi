@@ -1,4 +1,8 @@
-"""Type stub of :mod:`roughcontact.plotting`: its lazy public names, for type checkers and IDEs."""
+"""The public names of :mod:`roughcontact.plotting`, each re-exported from its module: the one list of them.
+
+Type checkers and IDEs read this stub; the package reads it too (:func:`roughcontact._lazy.attach_stub`):
+the names here are its ``__all__``, each loaded from its module on first use.
+"""
 
 from .asperity import (
     plot_area_load as plot_area_load,

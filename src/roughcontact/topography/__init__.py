@@ -7,24 +7,6 @@ parameters, PSD). The most used are named here and load on first use (:mod:`roug
 so that importing one submodule does not import the others.
 """
 
-from .._lazy import lazy_names
+from .._lazy import attach_stub
 
-_HOMES = {
-    "Topography": ".surface",
-    "combine": ".process",
-    "detrend": ".process",
-    "level": ".process",
-    "list_channels": ".io",
-    "load_topography": ".native",
-    "mccool_parameters": ".statistics",
-    "read_topography": ".io",
-    "remove_sphere": ".process",
-    "save_topography": ".native",
-    "spectral_moments": ".statistics",
-    "summary": ".statistics",
-}
-"""Public name -> the submodule that defines it (imported on first use)."""
-
-__all__ = sorted(_HOMES)
-
-__getattr__, __dir__ = lazy_names(__name__, _HOMES)
+__getattr__, __dir__, __all__ = attach_stub(__name__)  # the names: __init__.pyi
