@@ -31,11 +31,13 @@ projected on the feasible set, with the box constraint of Almqvist et al. (2007)
    self-affine surfaces (tolerance 1e-10) 43, 66, 110, 240 iterations from 256^2 to 2048^2
    with resets, 42, 48, 66, 82 with Polak-Ribiere+ (113 at 4096^2, tolerance 4e-10 at its
    round-off floor); Fletcher-Reeves kept across changes was as fast under load control and
-   slower under displacement control (115 instead of 73 at 1024^2). A coarse-to-fine cascade
-   (2x2 block-averaged heights, each level warm-started from the one below, as aspher's
-   ``solve_nested``) was measured too: it took as many fine-level iterations as a cold start
-   (87 vs 80 at 2048^2), since the fine level still has to find its own contact set. Points at
-   the cap with g > 0 (which want to unload) join the free set. Under load control a constant is
+   slower under displacement control (115 instead of 73 at 1024^2). This engine solves one
+   grid; without a warm start, :func:`roughcontact.contact._box.solve` first runs it on the
+   grid coarsened 2 x 2 (down to 64 pixels, each level warm-started from the one below, as
+   aspher's ``solve_nested``) and starts the fine grid from that answer, which saves the fine
+   level's first iterations (48 -> 39, 66 -> 54, 82 -> 69 at 512^2 to 2048^2, the coarse
+   levels costing 4-6 fine iterations; see there). Points at the cap with g > 0 (which want
+   to unload) join the free set. Under load control a constant is
    subtracted from t on the free set so that it sums to zero there (the step then keeps the force;
    Polonsky-Keer instead remove the free-set mean of r = K t, which equals this when t sums to
    zero). Step tau = (g.t) / (t.K t), with t.K t computed in Fourier space by Parseval's theorem
