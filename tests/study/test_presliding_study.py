@@ -13,13 +13,13 @@ import xarray as xr
 
 from roughcontact.contact.presliding import presliding
 from roughcontact.materials import Material
-from roughcontact.papers import paper001
 from roughcontact.study import load_study
 from roughcontact.study.config import StudyError
 from roughcontact.study.inputs import build_topography
 from roughcontact.study.kinds.presliding import KIND
 from roughcontact.study.run import make_task
 from roughcontact.study.store import read_table
+from roughcontact.topography.process import central_window
 
 MEASURED = "paper001_measured_loop.csv"
 ZIP = 'normal_force = ["25 mN", "50 mN", "75 mN", "25 mN", "50 mN", "75 mN"]'
@@ -167,7 +167,7 @@ def test_scalars_equal_a_direct_paper001_call(shrunk, tmp_path):
     ball = build_topography(spec, None)
     assert ball.shape == (128, 128) and spec.seed == case.seeds["hdpe_ball"]
     direct = presliding(
-        paper001.central_window(ball, 40),
+        central_window(ball, 40),
         Material(0.98e9, 0.5, "HDPE"),
         Material(130e9, 0.28, "silicon wafer"),
         normal_force=25e-3,

@@ -10,6 +10,8 @@ of the last loop as the paper does (:func:`~roughcontact.experiment.friction_loo
 stroke, mu, eq. 9, K_L at the loop points A, B, C) and Mindlin's smooth ball at the same points
 (eqs. 10-12, :func:`mindlin_reference`, in the textbook reading and as the paper prints it).
 Paper 001's own scenario (Tables 1-2, the generated balls) is :mod:`roughcontact.papers.paper001`.
+Mindlin's smooth ball is in :mod:`.smooth_ball`, the choice of the solved window in :mod:`.window`;
+both are served from here as well.
 
 References
 ----------
@@ -21,447 +23,67 @@ doi:10.1017/CBO9781139171731
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
 import numpy as np
 
-from ..analytic.mindlin import (
-    hertz_contact_radius,
-    lateral_stiffness,
-    sliding_displacement,
-    tangential_displacement,
-    tangential_force,
-)
-from ..checks import finite_array, positive
 from ..display_html import NotebookDisplay
 from ..errors import InputError
 from ..experiment.friction_loop import LoopAnalysis, analyse_loop
-from ..materials import Material, compliance_sum, contact_modulus, johnson_shear_modulus
-from ..spread import Spread, Verdict, spread
+from ..materials import Material
 from ..topography import Topography
 from ..topography.surface import topography_argument
 from .frictional import solve_frictional
 from .normal import solve_normal
 from .paths import as_path, reversals, stroke_path
 from .shear_solver import ShearSolver
+from .smooth_ball import (
+    MINDLIN_READINGS,
+    NORMALISATIONS,
+    POINT_NAMES,
+    POINTS,
+    READING_WORDS,
+    MindlinReference,
+    effective_shear_modulus_paper001,
+    mindlin_ratios,
+    mindlin_reference,
+    rough_vs_smooth,
+    verdict_words,
+)
 from .tangential import solve_tangential
+from .window import (
+    WINDOW_MARGIN,
+    ContactWindow,
+    check_inside,
+    contact_window,
+    solved_window,
+    touches_border,
+    window_holds,
+)
 
-POINTS = (0.25, 0.5, 0.75)
-"""Fractions of a branch's pre-sliding force span at the loop points A, B, C (paper 001 Fig. 10; assumed)."""
-POINT_NAMES = ("A", "B", "C")
-"""The loop points of paper 001 Fig. 10 at which K_L is evaluated."""
-
-
-MINDLIN_READINGS = ("johnson", "printed")
-"""The two readings of Mindlin's K_L (paper 001 eqs. 10-12): textbook (Johnson) and as printed (4x)."""
-
-NORMALISATIONS = MINDLIN_READINGS
-"""Readings of paper 001 eqs. 10 and 12, see :func:`mindlin_reference`."""
-
-
-@dataclass(frozen=True)
-class MindlinReference:
-    """Mindlin's smooth ball (paper 001 equations 10-12) for one ball, load and friction coefficient.
-
-    Attributes
-    ----------
-    friction_coefficient : float
-        mu_f [-].
-    normal_force : float
-        F0 [N].
-    contact_radius : float
-        Hertz radius a from eq. 11 [m].
-    shear_modulus : float
-        The modulus that multiplies the prefactors 3/16 and 8: G* for ``"johnson"``, G_s (= 4 G*)
-        for ``"printed"`` [Pa].
-    normalisation : str
-        ``"johnson"`` or ``"printed"``.
-    """
-
-    friction_coefficient: float
-    normal_force: float
-    contact_radius: float
-    shear_modulus: float
-    normalisation: str
-
-    @property
-    def sliding_distance(self) -> float:
-        """delta_0 = 3 mu F0 / (16 a G) [m] (equation 10)."""
-        return sliding_displacement(
-            self.friction_coefficient, self.normal_force, self.contact_radius, self.shear_modulus
-        )
-
-    @property
-    def initial_stiffness(self) -> float:
-        """K_L at F_x = 0: 8 a G [N/m] (equation 12)."""
-        return 8.0 * self.contact_radius * self.shear_modulus
-
-    def force(self, displacement):
-        """F_x(delta_x), equation 10 [N] (saturated at mu F0 beyond delta_0)."""
-        return tangential_force(
-            displacement,
-            self.friction_coefficient,
-            self.normal_force,
-            self.contact_radius,
-            self.shear_modulus,
-        )
-
-    def displacement(self, force):
-        """delta_x(F_x), inverse of equation 10 [m]."""
-        return tangential_displacement(
-            force, self.friction_coefficient, self.normal_force, self.contact_radius, self.shear_modulus
-        )
-
-    def lateral_stiffness(self, force):
-        """K_L = 8 a G (1 - F_x / (mu F0))^(1/3), equation 12 [N/m], at tangential force F_x [N]."""
-        return lateral_stiffness(
-            force, self.friction_coefficient, self.normal_force, self.contact_radius, self.shear_modulus
-        )
-
-    def point_stiffness(self, fractions=(0.25, 0.5, 0.75)) -> np.ndarray:
-        """K_L [N/m] at the loop points A, B, C of :mod:`roughcontact.experiment.friction_loop`.
-
-        A point at the fraction f of a sliding branch's force span 2 mu F0 lies where the
-        Masing branch has changed by 2 Q_M(x/2) = f 2 mu F0, so its stiffness is eq. 12 at
-        F_x = f mu F0: K_L = 8 a G (1 - f)^(1/3).
-        """
-        f = np.asarray(fractions, dtype=float)
-        if np.any((f < 0) | (f > 1)) or not np.all(np.isfinite(f)):
-            raise InputError("fractions", f"{fractions!r} must lie in [0, 1].", "use e.g. (0.25, 0.5, 0.75).")
-        return self.initial_stiffness * np.cbrt(1.0 - f)
-
-    def lateral_stiffness_at_displacement(self, displacement):
-        """K_L = 3 mu F0 / (2 delta_0) (1 - delta_x / delta_0)^(1/2), equation 12 [N/m]."""
-        delta0 = self.sliding_distance
-        x = np.minimum(np.abs(finite_array(displacement, "displacement")) / delta0, 1.0)
-        stiffness = 1.5 * self.friction_coefficient * self.normal_force / delta0 * np.sqrt(1.0 - x)
-        return float(stiffness) if np.ndim(displacement) == 0 else stiffness
-
-
-def mindlin_reference(
-    *,
-    friction_coefficient: float,
-    normal_force: float,
-    radius: float,
-    material: Material,
-    counter_body: Material | None = None,
-    normalisation: str = "johnson",
-) -> MindlinReference:
-    r"""Mindlin's smooth-ball reference (paper 001 equations 10-12) for a ball of ``radius`` on a flat.
-
-    Eq. 11 gives a^3 = 3 F0 R / (4 E_s) with 1/E_s = sum (1 - nu^2)/E. Eqs. 10 and 12 give
-    delta_0 = 3 mu F0 / (16 a G) and K_L = 8 a G (1 - F_x/(mu F0))^(1/3), where G is
-
-    * ``normalisation="johnson"`` (default): Johnson's G*, 1/G* = sum (2 - nu)/G. This is the
-      textbook Mindlin solution (Johnson 1985, eq. 7.42), to which the prefactors 3/16 and 8
-      belong.
-    * ``normalisation="printed"``: the paper's G_s as printed, 1/G_s = sum (2 - nu)(1 + nu)/(2E)
-      = sum (2 - nu)/(4G), i.e. G_s = 4 G*. Combined with the prefactors 3/16 and 8 this makes
-      delta_0 4 times smaller and K_L exactly 4 times larger than Johnson's (the force at a given
-      fraction of mu F0 is unchanged). Use it only to reproduce the paper's printed numbers
-      (Fig. 15, dashed lines). The consistent form with G_s would be delta_0 = 3 mu F0/(4 a G_s)
-      and K_L = 2 a G_s, which equals the ``"johnson"`` reading.
-
-    Parameters
-    ----------
-    friction_coefficient : float
-        mu_f [-] (paper Table 1).
-    normal_force : float
-        F0 [N].
-    radius : float
-        Ball radius R [m] (paper: 5 mm, a 10 mm ball).
-    material, counter_body : Material, Material or None
-        The two bodies (``counter_body=None`` is rigid), e.g. HDPE (0.98 GPa, 0.5) and silicon
-        (130 GPa, 0.28) from Table 2.
-    normalisation : {"johnson", "printed"}
-        See above.
-
-    Returns
-    -------
-    MindlinReference
-        a, the modulus used, delta_0 and the force and stiffness functions.
-
-    Raises
-    ------
-    InputError
-        Unknown ``normalisation``, non-positive numbers or bodies that are not Materials.
-    """
-    if normalisation not in NORMALISATIONS:
-        raise InputError(
-            "normalisation",
-            f"unknown normalisation {normalisation!r}.",
-            "choose 'johnson' (textbook Mindlin, default) or 'printed' (paper 001 as printed, "
-            "K_L 4x larger).",
-        )
-    positive(friction_coefficient, "friction_coefficient", example="0.153")
-    a = hertz_contact_radius(normal_force, radius, contact_modulus(material, counter_body))
-    if normalisation == "johnson":
-        g = johnson_shear_modulus(material, counter_body)
-    else:
-        g = effective_shear_modulus_paper001(material, counter_body)
-    return MindlinReference(float(friction_coefficient), float(normal_force), a, g, normalisation)
-
-
-def touches_border(pressure: np.ndarray) -> bool:
-    """Return True where a pressure map carries load on its outermost rows or columns."""
-    border = np.concatenate([pressure[0], pressure[-1], pressure[:, 0], pressure[:, -1]])
-    return bool(np.any(border > 0))
-
-
-READING_WORDS = {
-    "johnson": "Johnson's Mindlin",
-    "printed": "Mindlin as printed (eq. 12, 4x Johnson's)",
-}
-"""How tables, notes and figures name each reading of Mindlin's K_L (:data:`MINDLIN_READINGS`)."""
-
-
-def mindlin_ratios(stiffness, mindlin: Mapping[str, Any]) -> dict[str, Spread]:
-    """Return the spread of K_L / K_L,Mindlin over realisations, in each reading of equation 12.
-
-    Parameters
-    ----------
-    stiffness : iterable of float
-        K_L at one point (A, B or C) of each realisation [N/m]; NaN where a loop was not analysed
-        (left out).
-    mindlin : dict
-        Reading (``"johnson"``, ``"printed"``) -> Mindlin's K_L at the same point for each
-        realisation [N/m].
-
-    Returns
-    -------
-    dict
-        Reading -> :class:`~roughcontact.spread.Spread` of the ratio (bounded below by 0).
-    """
-    values = [float(k) for k in stiffness]
-    ratios = {}
-    for reading, references in mindlin.items():
-        each = [
-            k / float(m) if float(m) > 0 and math.isfinite(float(m)) else math.nan
-            for k, m in zip(values, references, strict=True)
-        ]
-        ratios[reading] = spread(each, bounds=(0.0, math.inf))
-    return ratios
-
-
-def rough_vs_smooth(ratios: Mapping[str, Spread]) -> dict[str, Verdict]:
-    """Judge where one rough ball's K_L lies against Mindlin's smooth ball, in each reading of equation 12.
-
-    Paper 001's claim (the rough ball is laterally softer than Mindlin's smooth one) is about one
-    ball. The ratios of :func:`mindlin_ratios` over realisations (balls drawn with the same
-    statistics) are judged with :meth:`~roughcontact.spread.Spread.verdict` ``(1.0, of="one")``: the
-    95 % prediction interval of one more ball, the interval of the mean beside it
-    (``Verdict.mean_interval``). ``below`` where one ball's ratio lies below 1 at 95 %, ``above``
-    where it lies above, ``not established`` where the interval holds 1, ``one realisation``
-    without an interval.
-    """
-    return {reading: ratio.verdict(1.0, of="one") for reading, ratio in ratios.items()}
-
-
-def verdict_words(verdicts: Mapping[str, Verdict], reading: str) -> str:
-    """Return a reading's verdict word, saying so where equation 12's printed factor 4 decides it.
-
-    The printed reading's K_L is exactly 4x Johnson's (:func:`mindlin_reference`). Where its
-    verdict differs from Johnson's for the same ball and point, the roughness does not decide it:
-    the constant does, e.g. ``"below (decided by eq. 12's printed factor 4: with Johnson's Mindlin
-    not established)"``.
-    """
-    word = verdicts[reading].word
-    textbook = verdicts.get("johnson")
-    if reading != "johnson" and textbook is not None and textbook.word != word:
-        return f"{word} (decided by eq. 12's printed factor 4: with Johnson's Mindlin {textbook.word})"
-    return word
-
-
-def check_inside(pressure: np.ndarray, label: str) -> None:
-    """Refuse a free-boundary contact that reaches the border of its window (the answer would be cut off)."""
-    if touches_border(pressure):
-        n, m = pressure.shape
-        raise InputError(
-            "window",
-            f"{label}: the contact reaches the border of the solved window ({n} x {m} px), so the "
-            "free-boundary answer would be cut off.",
-            "pass a larger «window» (pixels), «window=auto» (chosen from the ball's heights and grown "
-            "until it holds the contact), or a coarser scan.",
-        )
-
-
-WINDOW_MARGIN = 4
-"""Free pixels on each side of the region that can touch, in a window :func:`contact_window` chooses."""
-
-
-@dataclass(frozen=True)
-class ContactWindow:
-    """The central window that :func:`contact_window` chose to hold a ball's contact.
-
-    Attributes
-    ----------
-    pixels : int
-        Side of the central window [px] (:func:`~roughcontact.topography.process.central_window`);
-        the scan's smaller side where the whole scan is needed.
-    whole : bool
-        True where the window is the whole scan.
-    depth : float
-        The depth below the highest point within which the surface can touch [m]: the region
-        ``h >= h_top - depth`` is what the window holds.
-    solves : int
-        Normal solves it took (the last one on ``pixels`` holds the contact).
-    note : str
-        How it was chosen, in one sentence.
-    """
-
-    pixels: int
-    whole: bool
-    depth: float
-    solves: int
-    note: str
-
-
-def _window_holding(heights: np.ndarray, floor: float, margin: int) -> int:
-    """Return the side of the smallest central window that holds every pixel at or above ``floor``."""
-    inside = np.argwhere(heights >= floor)
-    n = min(heights.shape)
-    if inside.size == 0:
-        return n
-    need = []
-    for axis, size in enumerate(heights.shape):
-        low = max(int(inside[:, axis].min()) - margin, 0)
-        high = min(int(inside[:, axis].max()) + margin, size - 1)
-        need.append((size, low, high))
-    for window in range(3, n + 1):
-        if all(
-            (size - window) // 2 <= low and (size - window) // 2 + window - 1 >= high
-            for size, low, high in need
-        ):
-            return window
-    return n
-
-
-def contact_window(
-    topography: Topography,
-    material: Material,
-    counter_body: Material | None = None,
-    *,
-    normal_force: float | None = None,
-    approach: float | None = None,
-    radius: float,
-    tolerance: float = 1e-8,
-    margin: int = WINDOW_MARGIN,
-) -> ContactWindow:
-    r"""Choose the central window of a ball's scan that holds its contact, before the programme is solved.
-
-    A point can touch only where the undeformed surface lies within the approach d of the highest
-    point, :math:`h \ge h_\mathrm{top} - d`: a compressive pressure moves the surfaces apart
-    everywhere, so the gap is at least :math:`h_\mathrm{top} - d - h`, positive below that depth.
-    A window that holds this whole region solves the ball exactly (outside it nothing touches);
-    a pressure that vanishes on the window's border is not enough, since a high asperity just
-    beyond the border may touch while the border does not. The window is the smallest central
-    square that holds the region with ``margin`` pixels to spare:
-
-    1. Given an ``approach`` (a programme in approach), the region is known and no solve is needed.
-    2. Given a ``normal_force``, d is first guessed as twice the Hertz approach of a smooth ball
-       of ``radius``, :math:`2 a^2 / R` (paper 001 eq. 11; the rough balls of paper 001 need 1.0 to
-       4.0 times it), and the normal contact is solved on the window that holds that region. The
-       approach found there, measured from that window's own highest point, bounds the region
-       of the whole scan that can touch: solved on a window that holds it, the flat can only sit
-       higher (more surface carries the load), so that region shrinks. Where it does not fit, the
-       window grows to hold it and is solved once more, which then holds its own region.
-
-    Parameters
-    ----------
-    topography : Topography
-        The ball's scan with its spherical shape (heights up, apex near the centre).
-    material, counter_body : Material, Material or None
-        The ball and the flat (None: rigid).
-    normal_force : float, optional
-        The largest normal force the programme applies [N].
-    approach : float, optional
-        Or the largest approach [m] (not both).
-    radius : float
-        Ball radius R [m], for the first guess.
-    tolerance : float
-        Of the normal solves.
-    margin : int
-        Free pixels around the region that can touch.
-
-    Returns
-    -------
-    ContactWindow
-        The window, the depth of the region it holds and how it was found.
-
-    Raises
-    ------
-    InputError
-        Neither or both of ``normal_force`` and ``approach``; a contact that reaches the border of
-        the whole scan.
-    """
-    from ..topography.process import central_window
-
-    if (normal_force is None) == (approach is None):
-        raise InputError(
-            "normal_force", "give the largest normal force or the largest approach, exactly one.", None
-        )
-    heights = np.asarray(topography.heights, dtype=float)
-    whole = min(heights.shape)
-    top = float(heights.max())
-    microns = topography.spacing[0] * 1e6
-
-    def described(window: int, how: str) -> str:
-        where = "the whole scan" if window >= whole else f"{window * microns:.4g} um"
-        return f"{window} px ({where}): {how}"
-
-    if approach is not None:
-        depth = float(approach)
-        window = _window_holding(heights, top - depth, margin)
-        how = f"holds every point within the largest approach, {depth * 1e6:.3g} um, of the highest point"
-        return ContactWindow(window, window >= whole, depth, 0, described(window, how))
-    positive(normal_force, "normal_force", example="0.025")
-    hertz = hertz_contact_radius(normal_force, radius, contact_modulus(material, counter_body))
-    depth = 2.0 * hertz**2 / radius
-    window = guess = _window_holding(heights, top - depth, margin)
-    solves = 0
-    while True:
-        surface = topography if window >= whole else central_window(topography, window)
-        normal = solve_normal(
-            surface, material, counter_body=counter_body, force=normal_force, tolerance=tolerance
-        )
-        solves += 1
-        floor = float(surface.heights.max()) - normal.approach
-        need = _window_holding(heights, floor, margin)
-        if window >= whole and touches_border(normal.pressure):
-            raise InputError(
-                "window",
-                f"the contact reaches the border of the whole scan ({heights.shape[0]} x "
-                f"{heights.shape[1]} px) at {normal_force * 1e3:g} mN, so the free-boundary answer "
-                "would be cut off.",
-                "give a scan of a larger field, or a smaller normal force.",
-            )
-        if need <= window or window >= whole:
-            break
-        window = min(need, whole)
-    depth = top - floor
-    how = (
-        f"holds every point within {depth * 1e6:.3g} um of the highest point, the approach of the "
-        f"normal contact at {normal_force * 1e3:g} mN solved on it (nothing outside can touch)"
-    )
-    if solves > 1:
-        how += f"; the first guess, {guess} px from twice the smooth ball's Hertz approach, held less"
-    return ContactWindow(window, window >= whole, depth, solves, described(window, how))
-
-
-def window_holds(scan: Topography, normal) -> tuple[bool, float]:
-    """Return whether a normal contact solved on a central window of ``scan`` holds all that can touch.
-
-    ``normal`` is a normal-contact result on the window (its ``topography``, ``approach``). Every
-    point of the whole scan within the approach of the window's highest point could touch
-    (:func:`contact_window`); True where they all lie inside the window, with the depth of that
-    region below the scan's highest point [m].
-    """
-    heights = np.asarray(scan.heights, dtype=float)
-    window = min(normal.topography.shape)
-    floor = float(np.max(normal.topography.heights)) - normal.approach
-    return _window_holding(heights, floor, 0) <= window, float(heights.max()) - floor
+__all__ = [  # the model, and the names of its two neighbours it has always served
+    "MINDLIN_READINGS",
+    "NORMALISATIONS",
+    "POINTS",
+    "POINT_NAMES",
+    "READING_WORDS",
+    "WINDOW_MARGIN",
+    "ContactWindow",
+    "MindlinReference",
+    "PreslidingResult",
+    "check_inside",
+    "contact_window",
+    "effective_shear_modulus_paper001",
+    "loop_from_start",
+    "mindlin_ratios",
+    "mindlin_reference",
+    "presliding",
+    "rough_vs_smooth",
+    "touches_border",
+    "verdict_words",
+    "window_holds",
+]
 
 
 def loop_from_start(result) -> tuple[np.ndarray, np.ndarray]:
@@ -522,6 +144,11 @@ class PreslidingResult(NotebookDisplay):
     map_steps : dict
         Label -> step index of the kept shear maps: the points A, B, C of the last loop for the
         paper's programme, the last reversals and the last step for a user programme.
+    window_choice : str
+        The part of the scan that was solved and how it was chosen (``window``): the whole scan,
+        a given window or the one ``"auto"`` chose.
+    window_warnings : tuple of str
+        What a given window cannot vouch for: points of the ball outside it that may touch.
     """
 
     label: str
@@ -538,6 +165,8 @@ class PreslidingResult(NotebookDisplay):
     hertz_radius: float
     sliding_distance_mindlin: float
     map_steps: dict[str, int]
+    window_choice: str = "the whole scan (window not given)"
+    window_warnings: tuple[str, ...] = ()
 
     UNITS: ClassVar[dict[str, str]] = {
         "normal_force": "N",
@@ -583,6 +212,10 @@ class PreslidingResult(NotebookDisplay):
     def loop(self) -> tuple[np.ndarray, np.ndarray]:
         """Displacement [m] and friction force [N] along x from the start (0, 0), all steps."""
         return loop_from_start(self.result)
+
+    def range_warnings(self) -> list[str]:
+        """Return what the solved window cannot vouch for (:attr:`window_warnings`)."""
+        return list(self.window_warnings)
 
     def scalars(self) -> dict[str, Any]:
         """Return the scalars (SI, units in :attr:`UNITS`).
@@ -786,10 +419,14 @@ def presliding(
     max_stick_change: float | None = 0.1,
     tolerance: float = 1e-8,
     maps: int = 4,
+    window: int | str | None = None,
     label: str = "",
 ) -> PreslidingResult:
     """Run paper 001's model: a rough ball pressed on a flat, then a tangential programme.
 
+    0. The part of ``topography`` that is solved (``window``): the whole of it, a central window
+       of a given size, or the smallest one that holds every point that can touch
+       (:func:`contact_window`).
     1. Normal contact at ``normal_force`` (paper 001 eq. 4, free boundary); the pressure must
        vanish on the border of the solved window, else an error asks for a larger window.
     2. The programme, either paper 001's (``stroke``: 0 -> d_s -> 0, ``cycles`` times, Fig. 6,
@@ -859,6 +496,12 @@ def presliding(
         Of the normal and tangential solvers.
     maps : int
         Kept maps of a user programme.
+    window : int or "auto", optional
+        The central window of ``topography`` to solve [px] (free boundary); ``"auto"`` chooses the
+        smallest that holds every point that can touch at the largest normal force or approach of
+        the programme (:func:`contact_window`); None (default) solves the whole ``topography``.
+        With a given window the result's :meth:`~PreslidingResult.range_warnings` say where points
+        outside it may touch.
     label : str
         Names the case in messages and figures.
 
@@ -894,6 +537,17 @@ def presliding(
             "e.g. normal_force=0.025 (N), or a path file with an 'F_n [mN]' column.",
         )
     peak = {"force": normal_force} if normal_path is None else {normal_control: float(np.max(normal_path))}
+    scan = topography
+    topography, window_choice = solved_window(
+        scan,
+        window,
+        material,
+        counter_body,
+        normal_force=peak.get("force"),
+        approach=peak.get("approach"),
+        radius=radius,
+        tolerance=tolerance,
+    )
     normal = solve_normal(topography, material, counter_body=counter_body, tolerance=tolerance, **peak)
     normal_force = normal.force if normal_path is not None else normal_force
     check_inside(normal.pressure, label or "the surface")
@@ -962,35 +616,20 @@ def presliding(
         hertz_radius=textbook.contact_radius,
         sliding_distance_mindlin=2.0 * textbook.sliding_distance,
         map_steps=map_steps,
+        window_choice=window_choice,
+        window_warnings=_window_warnings(scan, normal, window),
     )
 
 
-def effective_shear_modulus_paper001(a: Material, b: Material | None = None) -> float:
-    r"""Effective shear modulus G_s as defined in paper 001 (below equation 10) [Pa].
-
-    .. math:: \frac{1}{G_s} = \sum_i \frac{(2 - \nu_i)(1 + \nu_i)}{2 E_i}
-              = \sum_i \frac{2 - \nu_i}{4 G_i}
-
-    This is 4 times Johnson's G* (:func:`johnson_shear_modulus`): G_s = 4 G*. Paper 001 uses it
-    with the prefactors of Johnson's Mindlin solution (delta_0 = 3 mu F0 / (16 a G),
-    K_L = 8 a G), which belong to G*; used with G_s as printed, K_L is 4 times the textbook
-    Mindlin stiffness. With G_s the consistent prefactors are delta_0 = 3 mu F0 / (4 a G_s)
-    and K_L = 2 a G_s.
-
-    Parameters
-    ----------
-    a : Material
-        First body.
-    b : Material or None
-        Second body; ``None`` is rigid.
-
-    Returns
-    -------
-    float
-        G_s [Pa].
-
-    References
-    ----------
-    Seed paper 001, text below eq. 10. doi:10.1115/1.4045900
-    """
-    return 1.0 / compliance_sum(a, b, lambda m: (2.0 - m.poissons_ratio) / (4.0 * m.shear_modulus))
+def _window_warnings(scan: Topography, normal, window: int | str | None) -> tuple[str, ...]:
+    """Say where points of the ball outside a given window lie within the approach and may touch."""
+    if not isinstance(window, int):
+        return ()
+    holds, depth = window_holds(scan, normal)
+    if holds:
+        return ()
+    return (
+        f"points of the ball outside the given {window} px window lie within the approach "
+        f"({depth * 1e6:.3g} um below the highest point) and may touch: the window's answer is not "
+        "proven to hold the whole contact. «window=auto» chooses one that holds them.",
+    )

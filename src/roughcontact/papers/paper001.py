@@ -37,12 +37,12 @@ from __future__ import annotations
 from typing import Any
 
 from .._deprecation import moved, renamed
-from ..contact.presliding import MindlinReference, PreslidingResult, contact_window, mindlin_reference
+from ..contact.presliding import MindlinReference, PreslidingResult, mindlin_reference
 from ..contact.presliding import presliding as _presliding
 from ..errors import InputError
 from ..materials import get_material
 from ..topography import Topography, generate
-from ..topography.process import central_window, level
+from ..topography.process import level
 from ..topography.statistics import rq
 from ..units import written
 
@@ -218,18 +218,10 @@ def run_case(
         stroke = table[0] if stroke is None else stroke
         friction_coefficient = table[1] if friction_coefficient is None else friction_coefficient
     ball = scan if scan is not None else roughness(name, seed=seed, pixels=pixels)
-    material, flat = get_material(name), get_material(FLAT)
-    if window == "auto":
-        chosen = contact_window(
-            ball, material, flat, normal_force=normal_force, radius=RADIUS, tolerance=tolerance
-        )
-        surface = ball if chosen.whole else central_window(ball, chosen.pixels)
-    else:
-        surface = central_window(ball, window)
     return _presliding(
-        surface,
-        material,
-        flat,
+        ball,
+        get_material(name),
+        get_material(FLAT),
         normal_force=normal_force,
         stroke=stroke,
         friction_coefficient=friction_coefficient,
@@ -238,6 +230,7 @@ def run_case(
         steps_per_stroke=steps_per_stroke,
         coupling=coupling,
         tolerance=tolerance,
+        window=window,
         label=f"{name} {normal_force * 1e3:g} mN",
     )
 

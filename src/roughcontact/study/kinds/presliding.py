@@ -310,74 +310,17 @@ def _case_words(parameters: PreslidingParameters, inputs, label: str) -> str:
     )
 
 
-def _largest_load(parameters: PreslidingParameters, normal_path, normal_control) -> dict[str, float]:
-    """Return the largest normal force (or approach) of the case, for the window of ``window = "auto"``."""
-    import numpy as np
-
-    if normal_path is None:
-        return {"normal_force": parameters.normal_force}
-    key = "normal_force" if normal_control == "force" else "approach"
-    return {key: float(np.max(normal_path))}
-
-
-def _solved(parameters: PreslidingParameters, inputs, programme: dict, label: str):
-    """Choose the window, run the programme; return the result, how the window was chosen and warnings."""
-    from ...contact.presliding import contact_window, presliding, window_holds
-    from ...topography.process import central_window
-
-    scan = inputs.topography(parameters.topography)
-    material = inputs.material(parameters.material)
-    counter_body = inputs.material(parameters.counter_body)
-    warnings = []
-    if parameters.window == "auto":
-        chosen = contact_window(
-            scan,
-            material,
-            counter_body,
-            radius=parameters.radius,
-            tolerance=parameters.tolerance,
-            **_largest_load(parameters, programme.get("normal_path"), programme.get("normal_control")),
-        )
-        surface = scan if chosen.whole else central_window(scan, chosen.pixels)
-        choice = f"auto: {chosen.note}"
-    elif parameters.window is None:
-        surface, choice = scan, "the whole scan (window not given)"
-    else:
-        surface = central_window(scan, parameters.window)
-        choice = f"given: {parameters.window} px"
-    result = presliding(
-        surface,
-        material,
-        counter_body,
-        normal_force=parameters.normal_force,
-        friction_coefficient=parameters.friction_coefficient,
-        radius=parameters.radius,
-        coupling=parameters.coupling,
-        normal_loading=parameters.normal_loading,
-        loading_steps=parameters.loading_steps,
-        max_stick_change=parameters.max_stick_change or None,
-        tolerance=parameters.tolerance,
-        label=label,
-        **programme,
-    )
-    if isinstance(parameters.window, int):
-        holds, depth = window_holds(scan, result.normal)
-        if not holds:
-            warnings.append(
-                f"points of the ball outside the given {parameters.window} px window lie within the approach "
-                f"({depth * 1e6:.3g} um below the highest point) and may touch: the window's answer is not "
-                "proven to hold the whole contact. «window=auto» chooses one that holds them."
-            )
-    return result, scan, choice, warnings
-
-
 def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
     """Run the programme on one ball at one load; scalars and dataset of :class:`PreslidingResult`.
 
     Every error names the case: its label, sample, replicate and the seed of its ball.
     """
+    from ...contact.presliding import presliding
     from ...errors import ConvergenceError, InputError
 
+    ball = parameters.sample or parameters.topography
+    label = ball if parameters.normal_force is None else f"{ball} at {parameters.normal_force * 1e3:g} mN"
+    where = _case_words(parameters, inputs, label)
     if parameters.path is not None:
         from ...contact.paths import read_programme_csv
 
@@ -391,11 +334,25 @@ def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
             "cycles": parameters.cycles,
             "steps_per_stroke": parameters.steps_per_stroke,
         }
-    ball = parameters.sample or parameters.topography
-    label = ball if parameters.normal_force is None else f"{ball} at {parameters.normal_force * 1e3:g} mN"
-    where = _case_words(parameters, inputs, label)
+    scan = inputs.topography(parameters.topography)
+    material, counter_body = inputs.material(parameters.material), inputs.material(parameters.counter_body)
     try:
-        result, scan, choice, warnings = _solved(parameters, inputs, programme, label)
+        result = presliding(
+            scan,
+            material,
+            counter_body,
+            normal_force=parameters.normal_force,
+            friction_coefficient=parameters.friction_coefficient,
+            radius=parameters.radius,
+            coupling=parameters.coupling,
+            normal_loading=parameters.normal_loading,
+            loading_steps=parameters.loading_steps,
+            max_stick_change=parameters.max_stick_change or None,
+            tolerance=parameters.tolerance,
+            window=parameters.window,
+            label=label,
+            **programme,
+        )
     except InputError as error:
         problem = error.problem.removeprefix(f"{label}: ")
         raise InputError(error.field, f"{where}: {problem}", error.fix, fixes=error.fixes) from error
@@ -403,10 +360,10 @@ def run(parameters: PreslidingParameters, inputs) -> CaseOutput:
         raise ConvergenceError(
             f"{where}: {error.solver}", error.residual, error.iterations, error.tolerance, error.stalled_at
         ) from error
-    scalars = result.scalars() | {"window_choice": choice}
+    scalars = result.scalars() | {"window_choice": result.window_choice}
     if scan.info.get("rms") in ("drawn", "flattened") and parameters.sample in paper001.ROUGHNESS:
         scalars |= paper001.flattened_roughness(scan, parameters.sample)  # a generated ball of paper 001
-    return CaseOutput(scalars, result.to_xarray(), tuple(warnings))
+    return CaseOutput(scalars, result.to_xarray(), tuple(result.range_warnings()))
 
 
 # --- figures and tables (from stored records only) -----------------------------------------------
