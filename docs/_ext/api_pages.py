@@ -72,7 +72,12 @@ def public_names(module) -> list[str]:
 
 
 def homes() -> dict[str, dict[str, str]]:
-    """Return, per documented package, its names -> the package whose page documents each."""
+    """Return, per documented package, its names -> the package whose page documents each.
+
+    A name that is a documented module (``generate`` of ``roughcontact``, the module
+    ``roughcontact.topography.generate``) is documented by that module's own page, under the name
+    that imports it, not as ``roughcontact.generate``, which ``import`` does not find.
+    """
     placed: dict[int, str] = {}
     result: dict[str, dict[str, str]] = {}
     for package in DOCUMENTED:
@@ -80,6 +85,9 @@ def homes() -> dict[str, dict[str, str]]:
         result[package] = {}
         for name in public_names(module):
             value = getattr(module, name)
+            if inspect.ismodule(value) and value.__name__ in DOCUMENTED:
+                result[package][name] = value.__name__
+                continue
             result[package][name] = placed.setdefault((name, id(value)), package)
     return result
 
@@ -186,7 +194,12 @@ def package_page(package: str, names: dict[str, str]) -> str:
         lines.append("")
     if elsewhere:
         lines.append("Also here, documented with the package that holds them:\n")
-        lines += [f"- :py:obj:`{name} <{home}.{name}>` (:doc:`{home}`)" for name, home in elsewhere]
+        lines += [
+            f"- :py:mod:`{name} <{home}>` (:doc:`{home}`)"
+            if home in DOCUMENTED and home.rsplit(".", 1)[-1] == name
+            else f"- :py:obj:`{name} <{home}.{name}>` (:doc:`{home}`)"
+            for name, home in elsewhere
+        ]
         lines.append("")
     return "\n".join(lines) + "\n"
 

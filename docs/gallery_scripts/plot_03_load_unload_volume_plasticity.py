@@ -4,7 +4,7 @@ Load and unload a sphere with plasticity in the volume
 
 Press a smooth elastic-perfectly-plastic sphere on a rigid flat to 8 times its critical load and
 unload it, with von Mises (J2) plasticity below the surface (the eigenstrain method,
-``docs/volume_plasticity.md``). Unloading leaves a residual interference and a residual stress,
+:doc:`/volume_plasticity`). Unloading leaves a residual interference and a residual stress,
 which the surface model (pressure capped at the hardness) cannot show: paper 002's Figs. 7 and
 9e. The loading branch is compared with Kogut and Etsion's finite-element fit (2002) and the
 residual interference with that of Etsion, Kligerman and Kadin (2005). The grid is coarse (32 x 32

@@ -4,7 +4,7 @@ Adhesive approach and retraction of a sphere
 
 Bring a smooth elastic sphere to a rigid flat and pull it off again through an exponential
 adhesive law (w = 50 mJ/m^2, decay length 0.5 nm), solved by boundary elements as an energy
-minimisation at each approach (``docs/adhesive_contact.md``). The pull-off force is compared with
+minimisation at each approach (:doc:`/adhesive_contact`). The pull-off force is compared with
 the closed forms of JKR (1.5 pi w R), DMT (2 pi w R) and Maugis-Dugdale (Maugis 1992) for the
 Dugdale law of the same work of adhesion and peak tension.
 """

@@ -9,7 +9,7 @@ the load. The paper reports adhesive friction about 40 times the mechanical part
 crossover near 600 uN. Its scans are not published: the polysilicon scans here are synthetic
 (self-affine, scaled to the sample's Ra, seven per sample as the paper scanned seven spots), and
 the polysilicon surface energy (50 mJ/m^2) is an assumption. Both the library's default reading
-of the disputed equations and the paper's own reading (``docs/winkler_lj.md``) are shown.
+of the disputed equations and the paper's own reading (:doc:`/winkler_lj`) are shown.
 """
 
 import numpy as np
@@ -28,7 +28,7 @@ from roughcontact.winkler_lj import Readings
 # Pixels of 20 nm as in the paper, each a spring of the 50 nm Winkler layer, but 128 x 128 of them
 # (2.56 um) instead of the paper's 5 um scans: the window holds the whole contact, the ring of
 # bonds around it and the half-sphere tip, beyond which neither reading changes with the window
-# (``docs/winkler_lj.md``). The tip is a paraboloid of radius 1 um with 0.3 nm rms roughness
+# (:doc:`/winkler_lj`). The tip is a paraboloid of radius 1 um with 0.3 nm rms roughness
 # (assumed), merged with the scan into one composite surface against a rigid flat.
 
 sample, ra = "Ra 1.7 nm", paper000.PAPER000_SAMPLES["Ra 1.7 nm"]  # Ra [m]

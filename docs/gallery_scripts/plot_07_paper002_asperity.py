@@ -20,7 +20,7 @@ from roughcontact.units import format_si
 # ------------------
 # Section IV recomputed from the printed moments and Table I, with the standard composite modulus
 # 1/E' = sum (1 - nu^2)/E ("ours") and with eq. 7 as printed, (1 - nu). Only the standard form
-# reproduces omega_c and psi; the printed E' = 8.31 GPa matches neither (``docs/asperity.md``).
+# reproduces omega_c and psi; the printed E' = 8.31 GPa matches neither (:doc:`/asperity`).
 # The paper's psi = 2.06 for a 10 nm rough tip follows when the two roughnesses are added linearly;
 # "ours" adds them in quadrature, as independent roughnesses add.
 

@@ -9,7 +9,7 @@ boundary-element solution of the same surface, at the paper's loads (25 to 1000 
 square top: 0.04 to 1.6 MPa) and on three realisations of the island's roughness (the paper's
 printed spectral moments; its scan is not published), so that each theory's deviation from the BEM
 mean comes with its 95 % confidence interval. The BEM's area is given both as the pixel count and
-corrected for its pixelated perimeter (Yastrebov et al. 2017). Theory: ``docs/theories.md``.
+corrected for its pixelated perimeter (Yastrebov et al. 2017). Theory: :doc:`/theories`.
 """
 
 import numpy as np

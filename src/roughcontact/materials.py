@@ -22,7 +22,7 @@ Functions that take two bodies accept ``None`` for the second one: a rigid count
 (infinite modulus), whose compliance terms vanish.
 
 The papers' materials are in :data:`MATERIALS` (read-only) and :func:`get_material`.
-Paper typos that concern moduli are documented beside the functions and in ``docs/materials.md``.
+Paper typos that concern moduli are documented beside the functions and in :doc:`/materials`.
 
 References
 ----------

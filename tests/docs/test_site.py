@@ -8,6 +8,7 @@ holds every command.
 """
 
 import importlib
+import inspect
 import os
 import subprocess
 import sys
@@ -37,19 +38,26 @@ def site(tmp_path_factory):
     return out
 
 
-def _page_of(name: str) -> str:
-    """Return the dotted name of the reference page of ``roughcontact.name`` (its home package)."""
+def _api_pages():
+    """Return the site's extension that writes the API pages (``docs/_ext/api_pages.py``)."""
     sys.path.insert(0, str(DOCS / "_ext"))
     try:
-        api_pages = importlib.import_module("api_pages")
+        return importlib.import_module("api_pages")
     finally:
         sys.path.remove(str(DOCS / "_ext"))
-    return f"{api_pages.homes()['roughcontact'][name]}.{name}"
+
+
+def _page_of(name: str) -> str:
+    """Return the page of ``roughcontact.name`` in the site: a module's own, else its home package's."""
+    home = _api_pages().homes()["roughcontact"][name]
+    if inspect.ismodule(getattr(importlib.import_module("roughcontact"), name)):
+        return f"api/{home}.html"
+    return f"api/generated/{home}.{name}.html"
 
 
 @pytest.mark.parametrize("name", importlib.import_module("roughcontact").__all__)
 def test_every_public_name_has_a_reference_page(site, name):
-    page = site / "api" / "generated" / f"{_page_of(name)}.html"
+    page = site / _page_of(name)
     assert page.is_file(), page
     assert name in page.read_text()
 

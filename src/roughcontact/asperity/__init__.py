@@ -5,7 +5,7 @@ integrals; ``elastic_plastic`` the single-asperity laws (Hertz, Chang-Etsion-Bog
 Jackson-Green, paper 002 eq. 10, Etsion-Kligerman-Kadin unloading); ``load_unload`` the statistical
 Kadin-Kogut-Etsion load-unload of a rough surface against a flat; ``comparison`` judges a statistical
 prediction against a deterministic model's realisations at the level of a claim (one island, or the
-mean), ``convergence`` a mesh study of the island (paper 002 Fig. 6). Theory: ``docs/asperity.md``.
+mean), ``convergence`` a mesh study of the island (paper 002 Fig. 6). Theory: :doc:`/asperity`.
 """
 
 from .comparison import Comparison, against_realisations

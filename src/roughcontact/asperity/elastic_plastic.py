@@ -21,7 +21,7 @@ the load in units of the critical load (or in newtons where the law is dimension
 
 Interferences outside a fit's validity range are refused (:class:`~roughcontact.errors.InputError`
 naming the range) rather than extrapolated. Which coefficients were checked against independent
-sources is listed in ``docs/asperity.md``.
+sources is listed in :doc:`/asperity`.
 
 References
 ----------
@@ -121,7 +121,7 @@ def critical_interference(
     poissons_ratio : float
         Its Poisson's ratio nu [-] (enters K).
     contact_modulus : float
-        Composite modulus E' [Pa], 1/E' = sum (1 - nu_i^2)/E_i (see ``docs/asperity.md`` for
+        Composite modulus E' [Pa], 1/E' = sum (1 - nu_i^2)/E_i (see :doc:`/asperity` for
         paper 002's misprinted eq. 7).
     radius : float
         Asperity (summit) radius R [m].
@@ -270,7 +270,7 @@ def kogut_etsion_area(w_star):
     References
     ----------
     Kogut and Etsion (2002), eqs. 13-14. doi:10.1115/1.1490373 (coefficients cross-checked against an
-    independent implementation, ``docs/asperity.md``).
+    independent implementation, :doc:`/asperity`).
     """
     w = _w_star(w_star, upper=KOGUT_ETSION_MAX)
     area = np.where(w <= 1.0, w, np.where(w <= 6.0, 0.93 * w**1.136, 0.94 * w**1.146))
@@ -461,7 +461,7 @@ def residual_interference_ratio(max_w_star):
     References
     ----------
     Etsion, Kligerman and Kadin (2005), eq. 16 (not verified against the paper's text: recalled
-    from the literature, see ``docs/asperity.md``). doi:10.1016/j.ijsolstr.2004.12.006
+    from the literature, see :doc:`/asperity`). doi:10.1016/j.ijsolstr.2004.12.006
     """
     w = _w_star(max_w_star, "max_w_star", upper=KOGUT_ETSION_MAX)
     ratio = 1.02 * (1.0 - ((np.maximum(w, 1.0) + 5.9) / 6.9) ** -0.54)
@@ -551,7 +551,7 @@ def unloading_area_exponent(max_w_star):
     Etsion, Int. J. Solids Struct. 43 (2006) 7119-7127). Independent check: an elastic unloading
     has dP/d omega = 2 E' a (Sneddon), so with P ~ x^n (:func:`unloading_exponent`) the area goes as
     x^(2(n - 1)); 2 (n - 1) = 2 (1.5 omega*_max^-0.0331 - 1) agrees with omega*_max^-0.12 within 2.8 %
-    over 1 <= omega*_max <= 110 (and is exactly 1 at 1). See ``docs/asperity.md``.
+    over 1 <= omega*_max <= 110 (and is exactly 1 at 1). See :doc:`/asperity`.
 
     Parameters
     ----------

@@ -205,7 +205,8 @@ def _shared_options(parser: argparse.ArgumentParser, *, paper: bool) -> None:
         default=[],
         metavar="NAME=VALUE|PRESET",
         help="reading of a disputed equation of paper 000, e.g. contact=zero_gap, or a preset they change: "
-        "default, paper (the paper's own reading: its headline results), printed (see docs/winkler_lj.md)",
+        "default, paper (the paper's own reading: its headline results), printed (see the documentation's "
+        "Winkler-layer page)",
     )
     parser.add_argument(
         "--tip-radius",
@@ -216,7 +217,7 @@ def _shared_options(parser: argparse.ArgumentParser, *, paper: bool) -> None:
         "--gap-model",
         choices=("winkler", "bem"),
         help="gap field of the friction sums: winkler (default, paper 000's springs) or bem (the adhesive "
-        "boundary-element solution at the same load; docs/winkler_lj.md)",
+        "boundary-element solution at the same load; the documentation's Winkler-layer page)",
     )
     add_output_options(parser)
 

@@ -382,7 +382,7 @@ def add_commands(commands) -> None:
         "local Dask cluster (--workers) or on a running one (--scheduler), and write OUT/results.csv, "
         "OUT/cases/, OUT/figures/, OUT/tables/, OUT/provenance.json and OUT/report.html.",
     )
-    run.add_argument("study", type=Path, help="study file (TOML), see docs/studies.md")
+    run.add_argument("study", type=Path, help="study file (TOML; its keys: the documentation's Studies page)")
     run.add_argument("-o", "--output", type=output_folder, required=True, help="output folder")
     where = run.add_mutually_exclusive_group()
     where.add_argument("--workers", type=int, help="run on a local Dask cluster of N worker processes")

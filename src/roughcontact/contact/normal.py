@@ -180,7 +180,7 @@ def solve_normal(
     coefficients on a zero-padded grid for a free one, and
     :math:`1/E^* = (1 - \nu_1^2)/E_1 + (1 - \nu_2^2)/E_2`. Solved by Polonsky and Keer's
     constrained conjugate gradients (with ``hardness``: :math:`p \le H`), to the scale-free
-    residual ``tolerance``; theory and validation in ``docs/normal_contact.md``.
+    residual ``tolerance``; theory and validation in :doc:`/normal_contact`.
 
     Parameters
     ----------

@@ -2,7 +2,7 @@
 
 The printed spectral moments (eqs. 1-3) and Table I reproduce R_asp, sigma_s, omega_c and psi with
 the standard composite modulus 1/E' = sum (1 - nu^2)/E; eq. 7 as printed, with (1 - nu), does not,
-and the printed E' = 8.31 GPa matches neither form (``docs/asperity.md``).
+and the printed E' = 8.31 GPa matches neither form (:doc:`/asperity`).
 
 References
 ----------

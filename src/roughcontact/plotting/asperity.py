@@ -199,7 +199,8 @@ def asperity_load_interference_figure(cases, measured=None):
 
 @caption(
     "Real contact area against load from the statistical KKE model, loading (solid) and unloading "
-    "(dashed; the single-asperity unloading area, docs/asperity.md)."
+    "(dashed; the single-asperity unloading area of Etsion, Kligerman and Kadin, recalled from the "
+    "literature)."
 )
 def asperity_contact_area_figure(cases):
     """Draw the real contact area against load of cases of the ``asperity`` model (up to five)."""

@@ -1,6 +1,7 @@
 """Study files: TOML in; a validated :class:`Study` with its cases expanded, or one error with all problems.
 
-Layout of a study file (``docs/studies.md`` has the reference, ``examples/*.toml`` the examples)::
+Layout of a study file (the documentation's Studies page has the reference, ``examples/*.toml``
+the examples)::
 
     [study]
     name = "rough contact"

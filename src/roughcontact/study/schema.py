@@ -1,6 +1,6 @@
 """Building blocks of a study file's schema: quantities with units, references, topographies, materials.
 
-A study file is TOML (see ``docs/studies.md``). Every physical value is written with its unit
+A study file is TOML (see the documentation's Studies page). Every physical value is written with its unit
 (``"20 nm"``, ``"70 GPa"``, ``"10 uN"``, ``"72 mJ/m^2"``) and converted to SI here, once, through
 :func:`roughcontact.units.quantity`; a bare number is refused (zero excepted) with the units the
 user probably meant: ``size = 5`` is not a 5 m scan. The pydantic models forbid unknown keys, so a

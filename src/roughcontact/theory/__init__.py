@@ -7,7 +7,7 @@ Thomas's small-load area; ``gw`` Greenwood and Williamson's area and separation 
 moments (the summits of :mod:`roughcontact.asperity`); ``comparison`` sweeps the load on a surface
 with the boundary-element method and sets every theory beside it, with the BEM's area corrected for
 its pixelated perimeter (:mod:`roughcontact.contact.area`) and its small-load slope kappa, and judges
-each theory against the BEM over realisations. Theory and validation: ``docs/theories.md``.
+each theory against the BEM over realisations. Theory and validation: :doc:`/theories`.
 """
 
 from .bgt import bgt_contact_fraction

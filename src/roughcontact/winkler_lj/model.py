@@ -21,7 +21,7 @@ base. Each pixel is a spring (a cuboid of top area S = pixel area and height h, 
 * friction F = sum Q (adhesive part + mechanical part) and mu = F / N.
 
 Every disputed reading is a field of :class:`~roughcontact.winkler_lj.readings.Readings`; the
-derivations are in ``docs/winkler_lj.md``. Hold time: pass ``relaxation`` (E(t), e.g. a
+derivations are in :doc:`/winkler_lj`. Hold time: pass ``relaxation`` (E(t), e.g. a
 :class:`~roughcontact.winkler_lj.viscoelastic.PronySeries`) and ``hold_time``.
 
 References

@@ -1,11 +1,11 @@
 """Named readings of the disputed equations of paper 000 (the Winkler-Lennard-Jones friction model).
 
-Paper 000 has unit and sign problems and gaps (see ``docs/winkler_lj.md`` for the derivations).
+Paper 000 has unit and sign problems and gaps (see :doc:`/winkler_lj` for the derivations).
 Every disputed choice is a field of :class:`Readings`; the default of each field is the physically
 consistent reading and the paper's printed form is always one of the choices. :data:`PRINTED`
 selects the printed form everywhere (where the paper is silent, the choice closest to its text);
 :data:`PAPER` is the paper's own reading, the printed choices that give its headline results on
-its own scenario (see ``docs/winkler_lj.md``, "The paper's own reading"). :meth:`Readings.preset`
+its own scenario (see :doc:`/winkler_lj`, "The paper's own reading"). :meth:`Readings.preset`
 returns either by name (:data:`PRESETS`).
 
 =====================  =======================  =====================================================
@@ -56,7 +56,7 @@ CHOICES: dict[str, tuple[str, ...]] = {
 
 @dataclass(frozen=True)
 class Readings:
-    """How each disputed equation of paper 000 is read; see the module table and ``docs/winkler_lj.md``.
+    """How each disputed equation of paper 000 is read; see the module table and :doc:`/winkler_lj`.
 
     Parameters
     ----------
@@ -107,7 +107,7 @@ class Readings:
         adhesion of eq. 7 (Maugis 1992); farther springs still feel eq. 7's attraction in eq. 2 but
         hold no bond to break. ``"all_springs"``: every spring not in mechanical contact (the
         paper's "l_i > epsilon"; the sum over a sphere then grows like the log of the scan size and
-        over a flat like its area, see ``docs/winkler_lj.md``; the earlier default).
+        over a flat like its area, see :doc:`/winkler_lj`; the earlier default).
     base : {"lowest_point", "half_sphere"}
         The base level from which z_i and d are measured (eq. 8: "d is the distance between the
         flat surface and the base of the rough surface"), which enters the printed heights
@@ -268,7 +268,7 @@ cuboid height of eq. 15 = the Winkler layer plus the extension (the text: "its h
 height of the Winkler's layer"; Fig. 3: "z_i is the height of the layer"), energies times S
 (eqs. 15, 17 give N/m otherwise), and the two stages of the text for eq. 16. On paper 000's
 scenario: adhesive friction about 19 times the mechanical part at 10 uN and a crossover near
-640 uN (paper: about 40 times, about 600 uN); ``docs/winkler_lj.md`` tabulates each choice."""
+640 uN (paper: about 40 times, about 600 uN); :doc:`/winkler_lj` tabulates each choice."""
 
 PRESETS: dict[str, Readings] = {"default": Readings(), "paper": PAPER, "printed": PRINTED}
 """Named sets of readings (a study's ``reading`` key, ``roughcontact friction --reading NAME``)."""

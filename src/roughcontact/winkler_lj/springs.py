@@ -3,7 +3,7 @@
 Each spring of the layer carries P = E / (k h) dz (eq. 3); E is the composite modulus of the two
 surfaces (:func:`composite_modulus`, the Hertz E* with the paper's plain-number signature) and k
 the factor of eq. 4 (:func:`winkler_factor`), in the printed reading or the uniaxial-strain one
-(``readings.winkler_factor``, docs/winkler_lj.md).
+(``readings.winkler_factor``, :doc:`/winkler_lj`).
 """
 
 from __future__ import annotations

@@ -29,7 +29,7 @@ the start of unloading (Tang and Ngan 2003: the creep carries on at its end-of-h
 the unloading, so the measured displacement rate there is F_dot / S_e + d_dot). The three fits
 are in :mod:`.fits`.
 
-Choices where the paper is silent or wrong (see ``docs/nanoindentation.md``):
+Choices where the paper is silent or wrong (see :doc:`the nanoindentation page </nanoindentation>`):
 
 * ``rate_sign="magnitude"`` (default) uses ``|F_dot|`` in eq. 5: creep makes the apparent
   stiffness too high, and the correction must lower it. The paper prints the signed unloading

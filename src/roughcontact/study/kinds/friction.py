@@ -1,7 +1,7 @@
 r"""Study kind ``friction``: the Winkler-layer Lennard-Jones friction of paper 000 at one load per case.
 
 Wraps :func:`roughcontact.winkler_lj.winkler_lj_model` and its ``solve(load)`` (details and the
-derivations in ``docs/winkler_lj.md``). The two topographies (``topography``, e.g. a polysilicon
+derivations on the Winkler-layer page). The two topographies (``topography``, e.g. a polysilicon
 scan, and ``counter_topography``, e.g. the AFM tip) are merged into one composite surface z_i facing a rigid
 flat (paper 000, Fig. 1); each pixel is a spring, a cuboid of top area S (the pixel area) and
 height h (``layer_thickness``, the Winkler layer):

@@ -144,7 +144,7 @@ class PreslidingParameters(CaseParameters):
         frictionless (Goodman's start); "auto" (default) is "frictional" for dissimilar materials.
     loading_steps : int
         Steps of the frictional normal loading (default 10; raise it to 30 or more when beta/mu
-        approaches 1, docs/frictional_programmes.md).
+        approaches 1; the documentation's page on frictional programmes).
     max_stick_change : float
         Step control: steps are inserted where the stick fraction would fall by more than this in
         one step (default 0.1: at least 10 steps from each reversal to full slip); 0 turns it off

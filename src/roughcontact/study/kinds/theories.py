@@ -34,7 +34,8 @@ the roughness is resolved wavelength by wavelength).
 
 A scan solved with a free boundary is a window: the theories are of an infinite surface, so its
 areas are compared (mind the edge's share of the load) and its mean gap, which holds the
-half-space's settlement under the window, is not. Theory and sources: ``docs/theories.md``.
+half-space's settlement under the window, is not. Theory and sources: the documentation's page on
+the theories.
 """
 
 from __future__ import annotations
