@@ -214,6 +214,15 @@ def write_pages(app, config) -> None:
         text = package_page(package, names)
         if not page.exists() or page.read_text() != text:  # unchanged pages keep their build
             page.write_text(text)
+    named = {
+        f"{home}.{name}"
+        for package, names in placed.items()
+        for name, home in names.items()
+        if home == package
+    }
+    for stale in (folder / "generated").glob("*.rst"):  # a name that moved: its old page is in no toctree
+        if stale.stem not in named:
+            stale.unlink()
     index = [
         _title("API reference"),
         "Every public name, one page each, from the docstrings (numpy style: parameters with their "
