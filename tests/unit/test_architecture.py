@@ -317,8 +317,9 @@ def test_a_study_hands_its_device_to_the_solver_as_an_argument(monkeypatch, tmp_
         seen.append((kwargs.get("device"), dict(__import__("os").environ).get("ROUGHCONTACT_DEVICE")))
         return solve_normal(*args, **kwargs)
 
-    monkeypatch.setattr(normal, "solve_normal", spy)
+    # the package's name first: loaded on first use, it would otherwise load (and keep) the spy
     monkeypatch.setattr("roughcontact.contact.solve_normal", spy)  # the name the study kind imports
+    monkeypatch.setattr(normal, "solve_normal", spy)
     document = {
         "study": {"name": "device", "device": "cpu"},
         "topographies": {"s": {"generate": "sphere", "shape": 16, "size": "1 um", "radius": "5 um"}},
