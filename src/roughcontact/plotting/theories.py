@@ -82,8 +82,8 @@ class Sweep:
         )
 
     def mean(self, name: str) -> np.ndarray:
-        """Return the mean of ``name`` over the realisations at each load."""
-        return np.nanmean(self.values(name), axis=0)
+        """Return the mean of ``name`` over the realisations at each load (NaN where all are left out)."""
+        return np.array([spread(column).mean for column in self.values(name).T])
 
     def band(self, name: str, bounds=(-math.inf, math.inf)) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Return the mean and the 95 % confidence interval of the mean over the realisations, per load."""
@@ -93,7 +93,7 @@ class Sweep:
 
     def attribute(self, name: str) -> float:
         """Return the mean of the scalar ``name`` over every case (a property of the surfaces)."""
-        return float(np.nanmean(self.values(name)))
+        return spread(self.values(name).ravel()).mean
 
     @property
     def gap_compared(self) -> bool:
