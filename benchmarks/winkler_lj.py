@@ -23,7 +23,7 @@ import numpy as np
 
 from _timing import best_of
 from roughcontact.materials import get_material
-from roughcontact.papers.paper000 import paper000_model_options, paper000_scans, paper000_tip
+from roughcontact.papers.paper000 import paper000_options, paper000_scans, paper000_tip
 from roughcontact.winkler_lj import winkler_lj_model
 
 
@@ -36,8 +36,8 @@ def prepare(scan, tip):
         scan,
         get_material("polysilicon"),
         get_material("SiO2"),
+        options=paper000_options(),
         counter_topography=tip,
-        **paper000_model_options(),
     )
 
 

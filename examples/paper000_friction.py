@@ -20,7 +20,7 @@ import numpy as np
 from roughcontact.experiment import compare, read_measured
 from roughcontact.materials import get_material
 from roughcontact.papers.paper000 import (
-    paper000_model_options,
+    paper000_options,
     paper000_scans,
     paper000_simulation,
     paper000_tip,
@@ -48,8 +48,8 @@ def main(output: Path) -> None:
         paper000_scans(1.7e-9, count=1, seed=200)[0],
         get_material("polysilicon"),
         get_material("SiO2"),
+        options=paper000_options(),
         counter_topography=paper000_tip(),
-        **paper000_model_options(),
     )
     crossover = model.crossover_load()
     sweep = model.sweep(np.geomspace(1e-6, 1e-3, 30))

@@ -44,8 +44,8 @@ result = rc.solve_winkler_lj(
     polysilicon,
     oxide,
     normal_force=load,
+    options=paper000.paper000_options(),
     counter_topography=tip,
-    **paper000.paper000_model_options(),
 )
 for name, value in result.scalars().items():
     print(f"{name:<24} {format_si(value, result.UNITS.get(name, ''))}")  # no unit: dimensionless

@@ -9,6 +9,7 @@ wraps a function whose keyword arguments were respelled (``counter=`` is now ``c
 from __future__ import annotations
 
 import functools
+import sys
 import warnings
 from collections.abc import Callable, Mapping
 from importlib import import_module
@@ -47,6 +48,18 @@ def moved_module(module: str, home: str) -> None:
     sys.modules[module] = import_module(home)
 
 
+def _outside() -> int:
+    """Return the ``stacklevel`` of the first caller outside this module (a wrapper may wrap a wrapper).
+
+    So that a warning names the user's line also where :func:`renamed` and :func:`folded` decorate
+    one function together.
+    """
+    frame, level = sys._getframe(1), 1
+    while frame is not None and frame.f_globals.get("__name__") == __name__:
+        frame, level = frame.f_back, level + 1
+    return level
+
+
 def renamed(**spellings: str) -> Callable:
     """Decorate a function so that each old keyword (``counter="counter_body"``) works, with a warning."""
 
@@ -61,7 +74,7 @@ def renamed(**spellings: str) -> Callable:
                         f"{function.__name__}({old}=...) is now spelled {new}=...; the old spelling goes "
                         "in the next release.",
                         DeprecationWarning,
-                        stacklevel=2,
+                        stacklevel=_outside(),
                     )
                     kwargs[new] = kwargs.pop(old)
             return function(*args, **kwargs)
@@ -87,7 +100,7 @@ def folded(target: str, names: tuple[str, ...], fold: Callable[..., Any]) -> Cal
                     f"{function.__name__}({', '.join(f'{n}=...' for n in old)}) is now given as "
                     f"{target}=...; the old spelling goes in the next release.",
                     DeprecationWarning,
-                    stacklevel=2,
+                    stacklevel=_outside(),
                 )
                 kwargs[target] = fold(kwargs.get(target), **old)
             return function(*args, **kwargs)

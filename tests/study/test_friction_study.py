@@ -29,7 +29,7 @@ from roughcontact.study.run import execute, make_task
 from roughcontact.study.store import read_table
 from roughcontact.topography.generate import self_affine, sphere_with_roughness
 from roughcontact.topography.statistics import ra
-from roughcontact.winkler_lj import PAPER, PronySeries, Readings, winkler_lj_model
+from roughcontact.winkler_lj import PAPER, PronySeries, Readings, WinklerLJOptions, winkler_lj_model
 from study_documents import FRICTION_OVER_TWO_LOADS, SCAN_AND_TIP
 
 SAMPLES = ["Ra 1.45 nm", "Ra 1.49 nm", "Ra 1.7 nm"]
@@ -275,12 +275,14 @@ def test_scalars_are_those_of_the_model_called_directly(tmp_path, extra, options
         scan,
         get_material("polysilicon"),
         get_material("SiO2"),
+        options=WinklerLJOptions(
+            layer_thickness=40e-9,
+            epsilon=1.5e-9,
+            surface_energy=0.045,
+            counter_surface_energy=None,  # the SiO2 library value, 72 mJ/m^2
+            **options,
+        ),
         counter_topography=tip,
-        layer_thickness=40e-9,
-        epsilon=1.5e-9,
-        surface_energy=0.045,
-        counter_surface_energy=None,  # the SiO2 library value, 72 mJ/m^2
-        **options,
     )
     result = model.solve(7e-6)
     for name, value in result.scalars().items():
@@ -307,10 +309,8 @@ def test_a_case_runs_through_the_runner_with_the_same_numbers(tmp_path):
             scan,
             get_material("polysilicon"),
             get_material("SiO2"),
+            options=WinklerLJOptions(layer_thickness=40e-9, epsilon=1.5e-9, surface_energy=0.045),
             counter_topography=tip,
-            layer_thickness=40e-9,
-            epsilon=1.5e-9,
-            surface_energy=0.045,
         )
         .solve(7e-6)
         .mu

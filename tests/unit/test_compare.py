@@ -141,15 +141,15 @@ def test_paper000_simulation_and_figures():
         fig, ax = plot(comparison)
         assert ax.get_ylabel()
     from roughcontact.materials import get_material
-    from roughcontact.papers.paper000 import paper000_model_options
+    from roughcontact.papers.paper000 import paper000_options
     from roughcontact.winkler_lj import winkler_lj_model
 
     model = winkler_lj_model(
         paper000_scans(1.7e-9, count=1, shape=48)[0],
         get_material("polysilicon"),
         get_material("SiO2"),
+        options=paper000_options(),
         counter_topography=paper000_tip(shape=48),
-        **paper000_model_options(),
     )
     sweep = model.sweep([1e-6, 1e-5, 1e-4])
     fig, ax = plot_friction_vs_load(sweep, crossover=model.crossover_load())

@@ -110,6 +110,34 @@ def test_the_tangential_solvers_old_keywords_fold_into_one_options_object():
     assert old.parameters["method"] == "cg" and old.parameters["tolerance"] == 1e-9
 
 
+def test_the_winkler_models_old_keywords_fold_into_one_options_object():
+    """winkler_lj_model(layer_thickness=..., ...) of release 0.1 is options=WinklerLJOptions(...) now."""
+    from roughcontact.papers import paper000
+    from roughcontact.topography.generate import self_affine
+    from roughcontact.winkler_lj import WinklerLJOptions, solve_winkler_lj, winkler_lj_model
+
+    scan = self_affine((24, 24), 0.48e-6, hurst=0.8, rms_height=1.5e-9, seed=1)
+    bodies = (scan, get_material("polysilicon"), get_material("SiO2"))
+    new = winkler_lj_model(*bodies, options=WinklerLJOptions(50e-9, surface_energy=0.05, resample=True))
+    with pytest.warns(DeprecationWarning, match=r"is now given as options=\.\.\.") as caught:
+        old = winkler_lj_model(*bodies, layer_thickness=50e-9, surface_energy=0.05, resample=True)
+    assert caught[0].filename == __file__  # the user's line, through both of its decorators
+    assert old.solve(1e-6).mu == new.solve(1e-6).mu
+    with pytest.warns(
+        DeprecationWarning, match=r"solve_winkler_lj\(layer_thickness=\.\.\., surface_energy=\.\.\.\) is now"
+    ):
+        one = solve_winkler_lj(*bodies, normal_force=1e-6, layer_thickness=50e-9, surface_energy=0.05)
+    assert one.mu == new.solve(1e-6).mu
+    with pytest.warns(DeprecationWarning, match=r"paper000_options\(\)"):
+        keywords = paper000.paper000_model_options()
+    assert WinklerLJOptions(**keywords) == paper000.paper000_options()
+    scans = {"a": [scan]}
+    with pytest.warns(DeprecationWarning, match=r"simulate_mu\(model_options=\.\.\.\)"):
+        folded = paper000.simulate_mu(scans, *bodies[1:], normal_force=1e-6, model_options=keywords)
+    direct = paper000.simulate_mu(scans, *bodies[1:], normal_force=1e-6, options=paper000.paper000_options())
+    assert folded["a"].tolist() == direct["a"].tolist()
+
+
 @pytest.mark.parametrize(
     ("function", "old", "new"),
     [

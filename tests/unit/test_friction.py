@@ -13,6 +13,7 @@ from roughcontact.winkler_lj import (
     PRINTED,
     PronySeries,
     Readings,
+    WinklerLJOptions,
     material_after_hold,
     solve_winkler_lj,
     standard_linear_solid,
@@ -34,8 +35,8 @@ def pair():
 
 def model(pair, **options):
     scan, tip = pair
-    options = {"layer_thickness": 50e-9, "surface_energy": 0.05, **options}
-    return winkler_lj_model(scan, POLY, SIO2, counter_topography=tip, **options)
+    options = WinklerLJOptions(**{"layer_thickness": 50e-9, "surface_energy": 0.05, **options})
+    return winkler_lj_model(scan, POLY, SIO2, options=options, counter_topography=tip)
 
 
 def test_readings_defaults_choices_and_strings():
@@ -112,9 +113,8 @@ def test_solve_winkler_lj_matches_the_model(pair):
         POLY,
         SIO2,
         normal_force=1e-5,
+        options=WinklerLJOptions(layer_thickness=50e-9, surface_energy=0.05),
         counter_topography=tip,
-        layer_thickness=50e-9,
-        surface_energy=0.05,
     )
     assert direct.mu == model(pair).solve(1e-5).mu
 
@@ -161,10 +161,12 @@ def test_only_springs_bonded_within_the_dugdale_zone_add_adhesive_friction(pair)
 def test_rigid_counter_needs_a_surface_energy(pair):
     scan, _ = pair
     with pytest.raises(InputError) as error:
-        winkler_lj_model(scan, POLY, None, layer_thickness=50e-9, surface_energy=0.05)
+        winkler_lj_model(
+            scan, POLY, None, options=WinklerLJOptions(layer_thickness=50e-9, surface_energy=0.05)
+        )
     assert error.value.field == "counter_surface_energy"
     rigid = winkler_lj_model(
-        scan, POLY, None, layer_thickness=50e-9, surface_energy=0.05, counter_surface_energy=0.07
+        scan, POLY, None, options=WinklerLJOptions(50e-9, surface_energy=0.05, counter_surface_energy=0.07)
     )
     assert rigid.contact_modulus == pytest.approx(110e9 / (1 - 0.22**2), rel=1e-14)
 
@@ -197,17 +199,19 @@ def test_different_pixel_sizes_refused_or_resampled(pair):
     coarse_tip = sphere_with_roughness((24, 24), scan.size, radius=1e-6, rms_height=0.3e-9, seed=1)
     with pytest.raises(InputError) as error:
         winkler_lj_model(
-            scan, POLY, SIO2, counter_topography=coarse_tip, layer_thickness=50e-9, surface_energy=0.05
+            scan,
+            POLY,
+            SIO2,
+            options=WinklerLJOptions(layer_thickness=50e-9, surface_energy=0.05),
+            counter_topography=coarse_tip,
         )
     assert error.value.field == "counter_topography" and "resample=True" in error.value.fix
     resampled = winkler_lj_model(
         scan,
         POLY,
         SIO2,
+        options=WinklerLJOptions(layer_thickness=50e-9, surface_energy=0.05, resample=True),
         counter_topography=coarse_tip,
-        resample=True,
-        layer_thickness=50e-9,
-        surface_energy=0.05,
     )
     assert resampled.topography.spacing == pytest.approx(scan.spacing, rel=1e-12)
     assert np.isfinite(resampled.solve(1e-5).mu)
@@ -222,14 +226,16 @@ def test_a_surface_that_never_reaches_the_flat_is_refused(pair):
 
 def test_profiles_are_refused():
     with pytest.raises(InputError, match="topography"):
-        winkler_lj_model(Topography(np.zeros(8), 1e-6), POLY, SIO2, layer_thickness=5e-8, surface_energy=0.05)
+        winkler_lj_model(
+            Topography(np.zeros(8), 1e-6), POLY, SIO2, options=WinklerLJOptions(5e-8, surface_energy=0.05)
+        )
 
 
 def test_incompressible_pair_is_refused(pair):
     scan, _ = pair
     rubber = type(POLY)(1e6, 0.5, "rubber", surface_energy=0.03)
     with pytest.raises(InputError, match="poissons_ratio"):
-        winkler_lj_model(scan, rubber, rubber, layer_thickness=5e-8)
+        winkler_lj_model(scan, rubber, rubber, options=WinklerLJOptions(layer_thickness=5e-8))
 
 
 def test_every_reading_gives_finite_totals(pair):

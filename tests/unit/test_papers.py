@@ -27,7 +27,7 @@ def test_paper000_simulated_mu_per_sample():
         paper000.get_material("SiO2"),
         normal_force=10e-6,
         counter_topography=tip,
-        model_options=paper000.paper000_model_options(),
+        options=paper000.paper000_options(),
     )
     assert mu["Ra 1.45 nm"].shape == (2,) and np.all(mu["Ra 1.45 nm"] > 0)
 

@@ -99,7 +99,7 @@ def _island():
 
 def _winkler():
     from roughcontact.topography.generate import self_affine
-    from roughcontact.winkler_lj import solve_winkler_lj
+    from roughcontact.winkler_lj import WinklerLJOptions, solve_winkler_lj
 
     surface = self_affine((32, 32), 0.64e-6, hurst=0.8, rms_height=1.5e-9, seed=1)
     return solve_winkler_lj(
@@ -107,18 +107,20 @@ def _winkler():
         get_material("polysilicon"),
         get_material("SiO2"),
         normal_force=1e-6,
-        layer_thickness=50e-9,
-        surface_energy=0.05,
+        options=WinklerLJOptions(layer_thickness=50e-9, surface_energy=0.05),
     )
 
 
 def _winkler_model():
     from roughcontact.topography.generate import self_affine
-    from roughcontact.winkler_lj import winkler_lj_model
+    from roughcontact.winkler_lj import WinklerLJOptions, winkler_lj_model
 
     surface = self_affine((32, 32), 0.64e-6, hurst=0.8, rms_height=1.5e-9, seed=1)
     return winkler_lj_model(
-        surface, get_material("polysilicon"), get_material("SiO2"), layer_thickness=50e-9, surface_energy=0.05
+        surface,
+        get_material("polysilicon"),
+        get_material("SiO2"),
+        options=WinklerLJOptions(layer_thickness=50e-9, surface_energy=0.05),
     )
 
 
@@ -171,7 +173,9 @@ def _adhesive():
 
 
 def _winkler_beside_bem():
-    from roughcontact.papers.paper000 import winkler_beside_bem
+    from dataclasses import replace
+
+    from roughcontact.papers.paper000 import LAYER, winkler_beside_bem
     from roughcontact.topography import Topography
 
     x = (np.arange(16) - 8) * 10e-9
@@ -182,8 +186,7 @@ def _winkler_beside_bem():
         get_material("polysilicon"),
         get_material("SiO2"),
         approach=[0.0, -1e-9],
-        surface_energy=0.05,
-        counter_surface_energy=0.072,
+        options=replace(LAYER, surface_energy=0.05, counter_surface_energy=0.072),
     )
 
 

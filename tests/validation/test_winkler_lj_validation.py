@@ -18,7 +18,7 @@ from roughcontact.errors import InputError
 from roughcontact.materials import Material, get_material
 from roughcontact.topography import Topography
 from roughcontact.topography.generate import self_affine, sphere, sphere_with_roughness
-from roughcontact.winkler_lj import Readings, standard_linear_solid, winkler_lj_model
+from roughcontact.winkler_lj import Readings, WinklerLJOptions, standard_linear_solid, winkler_lj_model
 
 POLY, SIO2 = get_material("polysilicon"), get_material("SiO2")
 GAMMA, EPS = 0.1, 2e-9
@@ -29,7 +29,9 @@ def paper_like(n=64, seed=3, readings=None, **options):
     tip = sphere_with_roughness((n, n), size, radius=1e-6, rms_height=0.3e-9, seed=seed)
     scan = self_affine((n, n), size, hurst=0.8, rms_height=1.8e-9, seed=seed + 1)
     options = {"layer_thickness": 50e-9, "surface_energy": 0.05, **options}
-    return winkler_lj_model(scan, POLY, SIO2, counter_topography=tip, readings=readings, **options)
+    return winkler_lj_model(
+        scan, POLY, SIO2, counter_topography=tip, options=WinklerLJOptions(readings=readings, **options)
+    )
 
 
 def tail_integral(start: float) -> float:
@@ -94,7 +96,9 @@ def test_force_balance_residual_is_round_off(readings, load):
 def test_flat_on_flat_matches_its_closed_form(readings):
     n, pixel, h, load = 16, 20e-9, 50e-9, 2e-5
     flat = Topography(np.zeros((n, n)), n * pixel)
-    model = winkler_lj_model(flat, POLY, SIO2, layer_thickness=h, surface_energy=0.05, readings=readings)
+    model = winkler_lj_model(
+        flat, POLY, SIO2, options=WinklerLJOptions(layer_thickness=h, surface_energy=0.05, readings=readings)
+    )
     result = model.solve(load)
     area = pixel * pixel
     stiffness = model.contact_modulus / (model.winkler_factor * h)
@@ -120,7 +124,10 @@ def test_flat_on_flat_matches_its_closed_form(readings):
 def test_flat_on_flat_closed_form_constants():
     """Eq. 1 composite modulus, eq. 4 factor (uniaxial strain reading) and G with sqrt(nu1 nu2)."""
     model = winkler_lj_model(
-        Topography(np.zeros((4, 4)), 80e-9), POLY, SIO2, layer_thickness=5e-8, surface_energy=0.05
+        Topography(np.zeros((4, 4)), 80e-9),
+        POLY,
+        SIO2,
+        options=WinklerLJOptions(layer_thickness=5e-8, surface_energy=0.05),
     )
     modulus = 1 / ((1 - 0.22**2) / 110e9 + (1 - 0.17**2) / 70e9)
     s = math.sqrt(0.22 * 0.17)
@@ -141,7 +148,9 @@ def test_smooth_sphere_pull_off_is_derjaguin():
     """
     radius, n, pixel = 1e-6, 256, 2e-9
     body = sphere((n, n), n * pixel, radius=radius, kind="paraboloid")
-    model = winkler_lj_model(body, POLY, SIO2, layer_thickness=50e-9, surface_energy=0.072)
+    model = winkler_lj_model(
+        body, POLY, SIO2, options=WinklerLJOptions(layer_thickness=50e-9, surface_energy=0.072)
+    )
     derjaguin = 2 * math.pi * radius * model.work_of_adhesion
     assert model.pull_off_force() == pytest.approx(derjaguin, rel=1e-2)
     assert model.pull_off_force() < derjaguin  # the cut tail only removes attraction
@@ -163,7 +172,10 @@ def central_window(heights: np.ndarray, n: int) -> Topography:
 
 def window_result(heights: np.ndarray, n: int, readings: Readings | None = None):
     model = winkler_lj_model(
-        central_window(heights, n), POLY, SIO2, layer_thickness=50e-9, surface_energy=0.05, readings=readings
+        central_window(heights, n),
+        POLY,
+        SIO2,
+        options=WinklerLJOptions(layer_thickness=50e-9, surface_energy=0.05, readings=readings),
     )
     return model.solve(1e-5)
 
@@ -200,12 +212,17 @@ def test_flat_face_beyond_the_adhesive_range_adds_no_adhesive_friction(n):
     heights[n // 2 : n // 2 + 2, n // 2 : n // 2 + 2] = 0.0
     surface = Topography(heights, n * 20e-9)
     options = {"layer_thickness": 50e-9, "surface_energy": 0.05}
-    result = winkler_lj_model(surface, POLY, SIO2, **options).solve(1e-6)
+    result = winkler_lj_model(surface, POLY, SIO2, options=WinklerLJOptions(**options)).solve(1e-6)
     assert result.mechanical.sum() == 4 and result.adhesive.sum() == n * n - 4
     assert not result.bonded.any() and result.adhesive_friction == 0.0
     assert result.adhesive_force > 0  # attraction still in eq. 2
     assert result.friction == result.mechanical_friction > 0
-    every = winkler_lj_model(surface, POLY, SIO2, readings=Readings(adhesive_range="all_springs"), **options)
+    every = winkler_lj_model(
+        surface,
+        POLY,
+        SIO2,
+        options=WinklerLJOptions(readings=Readings(adhesive_range="all_springs"), **options),
+    )
     face = every.solve(1e-6).lateral_force[~result.mechanical]
     assert face.sum() > 0
     np.testing.assert_allclose(face, face[0], rtol=1e-6)  # one gap, one Q: the sum grows with the area
@@ -234,11 +251,13 @@ def solve_in_units(readings, length, force):
         material(POLY),
         material(SIO2),
         counter_topography=scaled(tip),
-        layer_thickness=50e-9 * length,
-        epsilon=2e-9 * length,
-        surface_energy=0.05 * force / length,
-        counter_surface_energy=0.072 * force / length,
-        readings=readings,
+        options=WinklerLJOptions(
+            layer_thickness=50e-9 * length,
+            epsilon=2e-9 * length,
+            surface_energy=0.05 * force / length,
+            counter_surface_energy=0.072 * force / length,
+            readings=readings,
+        ),
     )
     return model.solve(1e-5 * force)
 
@@ -269,8 +288,7 @@ def test_hold_time_uses_the_relaxed_modulus():
         paper_like().topography,
         Material(60e9, 0.22, "relaxed"),
         SIO2,
-        layer_thickness=50e-9,
-        surface_energy=0.05,
+        options=WinklerLJOptions(layer_thickness=50e-9, surface_energy=0.05),
     )
     assert held.contact_modulus == pytest.approx(relaxed.contact_modulus, rel=1e-12)
     assert held.solve(1e-5).mu == pytest.approx(relaxed.solve(1e-5).mu, rel=1e-10)

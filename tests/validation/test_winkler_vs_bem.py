@@ -7,6 +7,7 @@ the gradients; they now take about 30 iterations a step.
 """
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -16,7 +17,7 @@ from roughcontact.errors import InputError
 from roughcontact.materials import Material, get_material
 from roughcontact.papers.paper000 import winkler_beside_bem
 from roughcontact.topography import Topography
-from roughcontact.winkler_lj import Readings, winkler_lj_model
+from roughcontact.winkler_lj import Readings, WinklerLJOptions, winkler_lj_model
 from roughcontact.winkler_lj.bem import BEM_LOAD_RTOL
 
 RADIUS, EPS, W = 1e-6, 2e-9, 2.0 * math.sqrt(0.05 * 0.072)  # dgamma = 2 sqrt(g1 g2) = 0.12 J/m^2
@@ -34,8 +35,7 @@ def model(topography, **options):
         topography,
         get_material("polysilicon"),
         get_material("SiO2"),
-        epsilon=EPS,
-        **({"layer_thickness": 50e-9} | ENERGIES | options),
+        options=WinklerLJOptions(**({"layer_thickness": 50e-9, "epsilon": EPS} | ENERGIES | options)),
     )
 
 
@@ -62,7 +62,11 @@ def test_stiff_bem_reaches_the_rigid_limit_and_the_curves_share_the_approach():
     surface = sphere()
     programme = np.concatenate([np.linspace(-4e-9, 2e-9, 7), np.linspace(2e-9, -4e-9, 7)[1:]])
     result = winkler_beside_bem(
-        surface, get_material("polysilicon"), get_material("SiO2"), approach=programme, **ENERGIES
+        surface,
+        get_material("polysilicon"),
+        get_material("SiO2"),
+        approach=programme,
+        options=WinklerLJOptions(layer_thickness=50e-9, epsilon=EPS, **ENERGIES),
     )
     scalars = result.scalars()
     assert result.bem.converged
@@ -120,9 +124,9 @@ def test_bem_gap_tends_to_the_winkler_gap_on_stiff_bodies():
             Material(factor * m.youngs_modulus, m.poissons_ratio, surface_energy=energy)
             for m, energy in ((get_material("polysilicon"), 0.05), (get_material("SiO2"), 0.072))
         )
-        options = {"epsilon": EPS, "layer_thickness": 50e-9}
-        winkler = winkler_lj_model(surface, body, tip, **options).solve(2e-7)
-        bem = winkler_lj_model(surface, body, tip, gap_model="bem", **options).solve(2e-7)
+        options = WinklerLJOptions(layer_thickness=50e-9, epsilon=EPS)
+        winkler = winkler_lj_model(surface, body, tip, options=options).solve(2e-7)
+        bem = winkler_lj_model(surface, body, tip, options=replace(options, gap_model="bem")).solve(2e-7)
         shift = winkler.approach - bem.approach
         assert -0.25 * EPS < shift < 0
         both = winkler.bonded & bem.bonded

@@ -13,13 +13,14 @@ instead of the synthetic ones.
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, ClassVar
 
 import numpy as np
 
-from .._deprecation import renamed
+from .._deprecation import folded, renamed
 from ..contact.adhesive import solve_adhesive
 from ..contact.interaction import LennardJones
 from ..display_html import NotebookDisplay
@@ -29,7 +30,8 @@ from ..topography import Topography
 from ..topography.generate import self_affine, sphere_with_roughness
 from ..topography.process import scale_to_ra
 from ..units import written
-from ..winkler_lj import WinklerNormalCurve, winkler_lj_model
+from ..winkler_lj import WinklerLJOptions, WinklerNormalCurve, winkler_lj_model
+from ..winkler_lj.options import folded_options
 from ..winkler_lj.readings import Readings
 
 PAPER000_SAMPLES: Mapping[str, float] = {"Ra 1.45 nm": 1.45e-9, "Ra 1.49 nm": 1.49e-9, "Ra 1.7 nm": 1.7e-9}
@@ -58,6 +60,9 @@ SURFACE_ENERGY = 0.05
 
 TIP_SURFACE_ENERGY = get_material(TIP_MATERIAL).surface_energy
 """SiO2 surface energy [J/m^2] (the paper's literature value, 72 mJ/m^2: the library's SiO2)."""
+
+LAYER = WinklerLJOptions(layer_thickness=LAYER_THICKNESS, epsilon=EPSILON)
+"""Paper 000's layer (50 nm) and range (2 nm), the materials' own surface energies and default readings."""
 
 TIP_RADIUS = 1e-6
 """Radius of the SiO2 sphere [m] (a 2 um tip)."""
@@ -183,10 +188,10 @@ def adhesion_keys(given: Mapping[str, Any] | None = None) -> dict[str, Any]:
     return keys | {"law": "lennard_jones", "interaction_range": written(EPSILON, "m")}
 
 
-def paper000_model_options(
+def paper000_options(
     *, surface_energy: float = SURFACE_ENERGY, readings: Readings | None = None
-) -> dict:
-    """Return the keyword arguments of :func:`~roughcontact.winkler_lj.winkler_lj_model` for paper 000.
+) -> WinklerLJOptions:
+    """Return the options of :func:`~roughcontact.winkler_lj.winkler_lj_model` for paper 000.
 
     Parameters
     ----------
@@ -197,15 +202,36 @@ def paper000_model_options(
 
     Returns
     -------
-    dict
-        layer_thickness 50 nm, epsilon 2 nm, the surface energy, the tip's 72 mJ/m^2 and the readings.
+    WinklerLJOptions
+        layer_thickness 50 nm, epsilon 2 nm (:data:`LAYER`), the surface energy, the tip's
+        72 mJ/m^2 and the readings.
     """
+    return replace(
+        LAYER, surface_energy=surface_energy, counter_surface_energy=TIP_SURFACE_ENERGY, readings=readings
+    )
+
+
+def paper000_model_options(
+    *, surface_energy: float = SURFACE_ENERGY, readings: Readings | None = None
+) -> dict:
+    """Return paper 000's options as the keyword arguments of release 0.1 (deprecated).
+
+    Kept one release, with a DeprecationWarning: pass ``options=paper000_options()`` to
+    :func:`~roughcontact.winkler_lj.winkler_lj_model` instead of ``**paper000_model_options()``.
+    """
+    warnings.warn(
+        "paper000_model_options() gives release 0.1's keywords; pass options=paper000_options() "
+        "instead (the old spelling goes in the next release).",
+        DeprecationWarning,
+        stacklevel=2,
+    )
+    options = paper000_options(surface_energy=surface_energy, readings=readings)
     return {
-        "layer_thickness": LAYER_THICKNESS,
-        "epsilon": EPSILON,
-        "surface_energy": surface_energy,
-        "counter_surface_energy": TIP_SURFACE_ENERGY,
-        "readings": readings,
+        "layer_thickness": options.layer_thickness,
+        "epsilon": options.epsilon,
+        "surface_energy": options.surface_energy,
+        "counter_surface_energy": options.counter_surface_energy,
+        "readings": options.readings,
     }
 
 
@@ -219,14 +245,14 @@ def paper000_model(
     """Return paper 000's Winkler-Lennard-Jones model of ``scan`` (polysilicon) against ``tip`` (SiO2).
 
     :func:`~roughcontact.winkler_lj.winkler_lj_model` with the materials of sec. 3 and
-    :func:`paper000_model_options`; ``model.solve(NORMAL_FORCE)`` is the paper's load.
+    :func:`paper000_options`; ``model.solve(NORMAL_FORCE)`` is the paper's load.
     """
     return winkler_lj_model(
         scan,
         get_material(MATERIAL),
         get_material(TIP_MATERIAL),
+        options=paper000_options(surface_energy=surface_energy, readings=readings),
         counter_topography=tip,
-        **paper000_model_options(surface_energy=surface_energy, readings=readings),
     )
 
 
@@ -339,7 +365,7 @@ def paper000_simulation(
         get_material(TIP_MATERIAL),
         normal_force=normal_force,
         counter_topography=tip,
-        model_options=paper000_model_options(surface_energy=surface_energy, readings=readings),
+        options=paper000_options(surface_energy=surface_energy, readings=readings),
     )
 
 
@@ -424,6 +450,16 @@ class WinklerBesideBEM(NotebookDisplay):
         return xr.Dataset(data, attrs=attributes)
 
 
+def _beside_bem_options(options: WinklerLJOptions | None, **old) -> WinklerLJOptions:
+    """Return :func:`winkler_beside_bem`'s options from release 0.1's keywords (default :data:`LAYER`)."""
+    return folded_options(options or LAYER, **old)
+
+
+@folded(
+    "options",
+    ("layer_thickness", "epsilon", "surface_energy", "counter_surface_energy", "readings", "resample"),
+    _beside_bem_options,
+)
 def winkler_beside_bem(
     topography: Topography,
     material: Material,
@@ -431,12 +467,7 @@ def winkler_beside_bem(
     *,
     approach: Sequence[float],
     counter_topography: Topography | None = None,
-    layer_thickness: float = LAYER_THICKNESS,
-    epsilon: float = EPSILON,
-    surface_energy: float | None = None,
-    counter_surface_energy: float | None = None,
-    readings: Readings | None = None,
-    resample: bool = False,
+    options: WinklerLJOptions = LAYER,
     boundary: str = "free",
     tolerance: float = 1e-6,
 ) -> WinklerBesideBEM:
@@ -450,12 +481,16 @@ def winkler_beside_bem(
 
     Parameters
     ----------
-    topography, material, counter_body, counter_topography, layer_thickness, epsilon,
-    surface_energy, counter_surface_energy, readings, resample :
-        As :func:`~roughcontact.winkler_lj.winkler_lj_model` (defaults: paper 000's 50 nm, 2 nm).
+    topography, material, counter_body, counter_topography :
+        As :func:`~roughcontact.winkler_lj.winkler_lj_model`.
     approach : sequence of float
         The flat's approach [m] from the first touch, e.g. loading then unloading
         ``[-4e-9, ..., 4e-9, ..., -4e-9]``; the BEM continues the last stroke to detachment.
+    options : WinklerLJOptions
+        The Winkler model's options (default :data:`LAYER`: paper 000's 50 nm and 2 nm, the
+        materials' surface energies); release 0.1's keywords (``layer_thickness=``, ``epsilon=``,
+        ``surface_energy=``, ``counter_surface_energy=``, ``readings=``, ``resample=``) still work
+        one release, with a DeprecationWarning.
     boundary : {"free", "periodic"}
         The BEM window's boundary (default free: a tip is not periodic).
     tolerance : float
@@ -466,16 +501,7 @@ def winkler_beside_bem(
     WinklerBesideBEM
     """
     model = winkler_lj_model(
-        topography,
-        material,
-        counter_body,
-        layer_thickness=layer_thickness,
-        counter_topography=counter_topography,
-        epsilon=epsilon,
-        surface_energy=surface_energy,
-        counter_surface_energy=counter_surface_energy,
-        readings=readings,
-        resample=resample,
+        topography, material, counter_body, options=options, counter_topography=counter_topography
     )
     law = LennardJones(model.work_of_adhesion, model.epsilon)
     bem = solve_adhesive(
@@ -489,7 +515,13 @@ def winkler_beside_bem(
     return WinklerBesideBEM(winkler=model.normal_curve(bem.approach), bem=bem)
 
 
+def _model_options(options: WinklerLJOptions | None, model_options: Mapping[str, Any]) -> WinklerLJOptions:
+    """Return :func:`simulate_mu`'s options from release 0.1's ``model_options`` (keyword arguments)."""
+    return folded_options(options, **model_options)
+
+
 @renamed(counter="counter_body", load="normal_force", counter_surface="counter_topography")
+@folded("options", ("model_options",), _model_options)
 def simulate_mu(
     scans: Mapping[str, Sequence[Topography]],
     material: Material,
@@ -497,7 +529,7 @@ def simulate_mu(
     *,
     normal_force: float,
     counter_topography: Topography | None = None,
-    model_options: Mapping[str, Any] | None = None,
+    options: WinklerLJOptions,
 ) -> dict[str, np.ndarray]:
     """Simulate mu for every scan of every sample with the Winkler-Lennard-Jones model.
 
@@ -511,9 +543,10 @@ def simulate_mu(
         Normal load [N] (paper 000: 10 uN).
     counter_topography : Topography, optional
         Tip topography merged with each scan.
-    model_options : mapping
-        Keyword arguments of :func:`roughcontact.winkler_lj.winkler_lj_model` (``layer_thickness``
-        is required; :func:`paper000_model_options` gives the paper's).
+    options : WinklerLJOptions
+        The model's options (:func:`paper000_options` gives the paper's); release 0.1's
+        ``model_options`` (the keywords of :func:`~roughcontact.winkler_lj.winkler_lj_model`) still
+        works one release, with a DeprecationWarning.
 
     Returns
     -------
@@ -524,11 +557,7 @@ def simulate_mu(
         name: np.array(
             [
                 winkler_lj_model(
-                    scan,
-                    material,
-                    counter_body,
-                    counter_topography=counter_topography,
-                    **dict(model_options or {}),
+                    scan, material, counter_body, options=options, counter_topography=counter_topography
                 )
                 .solve(normal_force)
                 .mu

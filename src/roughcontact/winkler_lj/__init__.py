@@ -1,8 +1,11 @@
 """Paper 000's model: Winkler-layer springs with the Lennard-Jones law, adhesive and mechanical friction.
 
-* :mod:`.model`: :func:`winkler_lj_model` (the composite surface, its moduli and energies) and
-  :class:`WinklerLJModel` (eq. 2's separation at a load, eqs. 8-17's friction, sweeps, the normal
-  curve); :func:`solve_winkler_lj` for one load;
+* :mod:`.prepare`: :func:`winkler_lj_model` (the composite surface, its moduli and energies) and
+  :func:`solve_winkler_lj` for one load;
+* :mod:`.options`: :class:`WinklerLJOptions`, the model's options beside its two bodies (the
+  layer, the law's range, the surface energies, the readings, the hold, the gap field);
+* :mod:`.model`: :class:`WinklerLJModel` (eq. 2's separation at a load, eqs. 8-17's friction,
+  sweeps, the normal curve);
 * :mod:`.results`: :class:`WinklerLJResult` (friction at one load), :class:`FrictionSweep`,
   :class:`WinklerNormalCurve`;
 * :mod:`.bem`: the boundary-element gap field at a load (``gap_model="bem"``);
@@ -13,7 +16,9 @@ The Lennard-Jones law itself (eqs. 5-7, 14, 16) is with the other interaction la
 :mod:`roughcontact.contact.lennard_jones`.
 """
 
-from .model import WinklerLJModel, solve_winkler_lj, surface_energy_of, winkler_lj_model, work_of_adhesion
+from .model import WinklerLJModel
+from .options import WinklerLJOptions
+from .prepare import solve_winkler_lj, surface_energy_of, winkler_lj_model, work_of_adhesion
 from .readings import PAPER, PRINTED, Readings
 from .results import FrictionSweep, WinklerLJResult, WinklerNormalCurve
 from .viscoelastic import PronySeries, material_after_hold, standard_linear_solid
@@ -25,6 +30,7 @@ __all__ = [
     "PronySeries",
     "Readings",
     "WinklerLJModel",
+    "WinklerLJOptions",
     "WinklerLJResult",
     "WinklerNormalCurve",
     "material_after_hold",

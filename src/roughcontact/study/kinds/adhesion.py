@@ -212,6 +212,7 @@ def _layer(parameters: AdhesionParameters, material, inputs):
 def _beside_winkler(parameters: AdhesionParameters, inputs) -> tuple[AdhesiveResult, dict, dict]:
     """Solve the BEM and paper 000's springs on one composite surface: (BEM result, scalars, curves)."""
     from ...papers.paper000 import winkler_beside_bem
+    from ...winkler_lj import WinklerLJOptions
     from ...winkler_lj.readings import Readings
 
     counter = parameters.counter_topography
@@ -222,12 +223,14 @@ def _beside_winkler(parameters: AdhesionParameters, inputs) -> tuple[AdhesiveRes
         inputs.material(parameters.counter_body),
         approach=parameters.programme(),
         counter_topography=None if counter is None else inputs.topography(counter),
-        layer_thickness=parameters.layer_thickness,
-        epsilon=parameters.interaction_range,
-        surface_energy=parameters.surface_energy,
-        counter_surface_energy=parameters.counter_surface_energy,
-        readings=Readings.from_strings(items, preset=parameters.reading),
-        resample=parameters.resample,
+        options=WinklerLJOptions(
+            layer_thickness=parameters.layer_thickness,
+            epsilon=parameters.interaction_range,
+            surface_energy=parameters.surface_energy,
+            counter_surface_energy=parameters.counter_surface_energy,
+            readings=Readings.from_strings(items, preset=parameters.reading),
+            resample=parameters.resample,
+        ),
         boundary=parameters.boundary or "free",
         tolerance=parameters.tolerance,
     )

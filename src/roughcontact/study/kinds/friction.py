@@ -360,32 +360,35 @@ def build_model(parameters: FrictionParameters, inputs):
     above the surface material's Young's modulus, or any refusal of
     :func:`~roughcontact.winkler_lj.winkler_lj_model`.
     """
-    from ...winkler_lj import winkler_lj_model
+    from ...winkler_lj import WinklerLJOptions, winkler_lj_model
     from ...winkler_lj.viscoelastic import standard_linear_solid
 
     material = inputs.material(parameters.material)
-    options: dict[str, Any] = {}
+    relaxation = None
     if parameters.relaxed_modulus is not None:
         _check_relaxed(parameters.relaxed_modulus, material)
-        options["relaxation"] = standard_linear_solid(
+        relaxation = standard_linear_solid(
             material.youngs_modulus, parameters.relaxed_modulus, parameters.relaxation_time
         )
-        options["hold_time"] = parameters.hold_time
+    options = WinklerLJOptions(
+        layer_thickness=parameters.layer_thickness,
+        epsilon=parameters.epsilon,
+        surface_energy=parameters.surface_energy,
+        counter_surface_energy=parameters.counter_surface_energy,
+        readings=readings_of(parameters),
+        resample=parameters.resample,
+        relaxation=relaxation,
+        hold_time=parameters.hold_time if relaxation is not None else 0.0,
+        tip_radius=parameters.tip_radius,
+        gap_model=parameters.gap_model,
+    )
     counter_topography = parameters.counter_topography
     return winkler_lj_model(
         inputs.topography(parameters.topography),
         material,
         inputs.material(parameters.counter_body),
-        layer_thickness=parameters.layer_thickness,
+        options=options,
         counter_topography=None if counter_topography is None else inputs.topography(counter_topography),
-        epsilon=parameters.epsilon,
-        surface_energy=parameters.surface_energy,
-        counter_surface_energy=parameters.counter_surface_energy,
-        readings=readings_of(parameters),
-        tip_radius=parameters.tip_radius,
-        resample=parameters.resample,
-        gap_model=parameters.gap_model,
-        **options,
     )
 
 
