@@ -12,6 +12,7 @@ import argparse
 from pathlib import Path
 
 from ..errors import InputError
+from .command_study import flag_of
 from .options import (
     FILE_OPTIONS,
     CommandStudy,
@@ -125,12 +126,9 @@ def _island(command: CommandStudy, args: argparse.Namespace, material: str | Non
 
 def _volume_options(args: argparse.Namespace) -> dict:
     """Return the keys of ``--plasticity volume`` (--yield-strength is shared with --law jackson_green)."""
-    flags = {
-        "--yield-strength": "yield_strength",
-        "--hardening-modulus": "hardening_modulus",
-        "--depth": "depth",
-        "--layers": "layers",
-    }
+    from ..contact.load_unload import PLASTICITY_KEYS
+
+    flags = {flag_of(key): key for key in PLASTICITY_KEYS["volume"]}
     given = {key: (getattr(args, key), flag) for flag, key in flags.items() if getattr(args, key) is not None}
     if args.plasticity != "volume":
         extra = [flag for flag, key in flags.items() if key in given and key != "yield_strength"]

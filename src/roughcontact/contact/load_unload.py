@@ -48,7 +48,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 from typing import ClassVar
 
 import numpy as np
@@ -132,6 +132,50 @@ Plasticity = SurfacePlasticity | VolumePlasticity
 
 PLASTICITY = {"surface": SurfacePlasticity, "volume": VolumePlasticity}
 """The models by name: ``plasticity="surface"`` is ``SurfacePlasticity()``."""
+
+PLASTICITY_KEYS = {name: tuple(option.name for option in fields(model)) for name, model in PLASTICITY.items()}
+"""The keys of each model by name: ``"surface"``: hardness; ``"volume"``: yield_strength, ... layers."""
+
+
+def plasticity_model(
+    plasticity: Plasticity | str = "surface",
+    *,
+    hardness: float | None = None,
+    yield_strength: float | None = None,
+    hardening_modulus: float | None = None,
+    depth: float | None = None,
+    layers: int | None = None,
+) -> Plasticity:
+    """Return the plastic model of :func:`load_unload` that ``plasticity`` names, with its keys.
+
+    The one place that turns a name (a study's or a command's ``plasticity``, paper 002's) into a
+    model: ``"surface"`` is ``SurfacePlasticity(hardness)``, ``"volume"`` is
+    ``VolumePlasticity(yield_strength, hardening_modulus, depth, layers)``. A key given as None
+    keeps the model's default; the keys of the other model are not used (a study's table holds
+    both). A :class:`SurfacePlasticity` or :class:`VolumePlasticity` is returned as it is.
+
+    Raises
+    ------
+    InputError
+        An unknown name (field ``plasticity``).
+    """
+    if isinstance(plasticity, SurfacePlasticity | VolumePlasticity):
+        return plasticity
+    if plasticity not in PLASTICITY:
+        raise InputError(
+            "plasticity",
+            f"unknown plasticity {plasticity!r}.",
+            "use 'surface' or 'volume', or SurfacePlasticity(...) / VolumePlasticity(...).",
+        )
+    given = {
+        "hardness": hardness,
+        "yield_strength": yield_strength,
+        "hardening_modulus": hardening_modulus,
+        "depth": depth,
+        "layers": layers,
+    }
+    keys = {key: given[key] for key in PLASTICITY_KEYS[plasticity] if given[key] is not None}
+    return PLASTICITY[plasticity](**keys)
 
 
 @dataclass(frozen=True)
@@ -385,9 +429,8 @@ def plastic_fraction(step: NormalContactResult) -> float:
 
 def _old_plasticity(plasticity, **old) -> Plasticity:
     """Return the plasticity of release 0.1's keywords (``hardness=``, or J2's ``depth=`` and the like)."""
-    if plasticity == "volume" or (plasticity is None and "hardness" not in old):
-        return VolumePlasticity(**old)
-    return SurfacePlasticity(**old)
+    volume = plasticity == "volume" or (plasticity is None and "hardness" not in old)
+    return plasticity_model("volume" if volume else "surface", **old)
 
 
 @folded("plasticity", ("hardness", "yield_strength", "hardening_modulus", "depth", "layers"), _old_plasticity)
@@ -466,7 +509,7 @@ def load_unload(
     >>> deep = load_unload(ball, steel, max_force=2e-3, plasticity=j2)  # doctest: +SKIP
     """
     topography = topography_argument(topography, "topography")
-    plasticity = _plasticity(plasticity)
+    plasticity = plasticity_model(plasticity)
     programmes = {"max_force": max_force, "max_approach": max_approach, "forces": forces}
     given = [name for name, value in programmes.items() if value is not None]
     if len(given) != 1:
@@ -656,15 +699,3 @@ def capped_path(
         previous = solve_normal(topography, **{kind: local}, initial=previous, **options)
         steps.append(replace(previous, approach=previous.approach + offset))
     return steps
-
-
-def _plasticity(plasticity) -> Plasticity:
-    if isinstance(plasticity, SurfacePlasticity | VolumePlasticity):
-        return plasticity
-    if plasticity in PLASTICITY:
-        return PLASTICITY[plasticity]()
-    raise InputError(
-        "plasticity",
-        f"unknown plasticity {plasticity!r}.",
-        "use 'surface' or 'volume', or SurfacePlasticity(...) / VolumePlasticity(...).",
-    )

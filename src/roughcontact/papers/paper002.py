@@ -24,10 +24,9 @@ from ..asperity.load_unload import StatisticalLoadUnload, statistical_load_unloa
 from ..asperity.parameters import AsperityParameters, asperity_parameters
 from ..contact.load_unload import (
     LoadUnloadResult,
-    SurfacePlasticity,
-    VolumePlasticity,
     force_targets,
     load_unload,
+    plasticity_model,
 )
 from ..errors import InputError
 from ..materials import Material, get_material
@@ -447,12 +446,14 @@ def compress_island(
         loading = np.asarray(loading_forces, dtype=float)
     if loading[-1] != max_force:
         raise InputError("loading_forces", "must rise strictly to max_force.", "e.g. [0, 25e-6, ..., 1e-3].")
-    if plasticity == "volume":
-        model = VolumePlasticity(yield_strength, hardening_modulus, depth, layers)
-    elif plasticity == "surface":
-        model = SurfacePlasticity(hardness)
-    else:
-        raise InputError("plasticity", f"unknown plasticity {plasticity!r}.", "use 'surface' or 'volume'.")
+    model = plasticity_model(
+        plasticity,
+        hardness=hardness,
+        yield_strength=yield_strength,
+        hardening_modulus=hardening_modulus,
+        depth=depth,
+        layers=layers,
+    )
     try:
         return _compress(topography, material, loading, unloading_forces, reference_force, model, substrate,
                          film_thickness, tolerance)  # fmt: skip

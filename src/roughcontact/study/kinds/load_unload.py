@@ -239,17 +239,19 @@ def run(parameters: LoadUnloadParameters, inputs) -> CaseOutput:
     """Load and unload the surface; scalars, the curve and the von Mises maps."""
     import xarray as xr
 
-    from ...contact.load_unload import SurfacePlasticity, VolumePlasticity, load_unload
+    from ...contact.load_unload import load_unload, plasticity_model
 
     surface = inputs.topography(parameters.topography)
     material = inputs.material(parameters.material)
     loading, unloading = load_targets(parameters.max_force, parameters.reference_force, parameters.load_steps)
-    if parameters.plasticity == "volume":
-        plasticity = VolumePlasticity(
-            parameters.yield_strength, parameters.hardening_modulus, parameters.depth, parameters.layers
-        )
-    else:
-        plasticity = SurfacePlasticity(parameters.hardness)
+    plasticity = plasticity_model(
+        parameters.plasticity,
+        hardness=parameters.hardness,
+        yield_strength=parameters.yield_strength,
+        hardening_modulus=parameters.hardening_modulus,
+        depth=parameters.depth,
+        layers=parameters.layers,
+    )
     compression = load_unload(
         surface,
         material,
