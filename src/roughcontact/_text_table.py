@@ -22,6 +22,7 @@ from pathlib import Path
 
 from ._files import read_text
 from .errors import InputError, UnitError
+from .messages import is_number
 from .origin import DataOrigin, origin_of
 from .units import DIMENSIONS, unit_factor
 
@@ -74,14 +75,6 @@ class TextTable:
         return len(self.names) if self.names is not None else len(self.rows[0])
 
 
-def _numeric(cell: str) -> bool:
-    try:
-        float(cell)
-    except ValueError:
-        return False
-    return True
-
-
 def read_text_table(path: str | Path, *, expected: str, delimiter: str | None = None) -> TextTable:
     """Read a text table; lines starting with ``#`` are comments.
 
@@ -115,7 +108,7 @@ def read_text_table(path: str | Path, *, expected: str, delimiter: str | None = 
     if delimiter is None:
         delimiter = next((d for d in (",", ";", "\t") if d in lines[0]), None)
     rows = [split_cells(line, delimiter) for line in lines]
-    if all(_numeric(cell) for cell in rows[0]):
+    if all(is_number(cell) for cell in rows[0]):
         return TextTable(None, None, rows, delimiter, comments=comments)
     names, units = zip(*(split_header(cell) for cell in rows[0]), strict=True)
     return TextTable(list(names), list(units), rows[1:], delimiter, rows[0], comments)
@@ -159,11 +152,7 @@ def split_header(cell: str) -> tuple[str, str | None]:
 
 def _is_unit(text: str) -> bool:
     """Whether ``text`` is a unit :mod:`roughcontact.units` reads (and not a bare number)."""
-    try:
-        float(text)
-    except ValueError:
-        pass
-    else:
+    if is_number(text):
         return False
     try:
         unit_factor(text)

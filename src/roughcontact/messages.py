@@ -51,7 +51,8 @@ def key(name: str, value: object = None) -> str:
     return f"«{name}={text}»"
 
 
-def _number(text: str) -> bool:
+def is_number(text: str) -> bool:
+    """Return whether ``text`` reads as a number (``float`` takes it: ``"1e-9"``, ``"nan"``, ``" 2 "``)."""
     try:
         float(text)
     except ValueError:
@@ -64,7 +65,7 @@ def _python_value(text: str) -> str:
         return text
     if text in ("true", "false"):
         return "True" if text == "true" else "False"
-    if _number(text) or text.startswith(("(", "[")):
+    if is_number(text) or text.startswith(("(", "[")):
         return text
     if (
         any(c.isdigit() for c in text)
@@ -76,7 +77,7 @@ def _python_value(text: str) -> str:
 
 
 def _study_value(text: str) -> str:
-    if text in ("true", "false", "...") or text.isupper() or _number(text) or text.startswith(("[", "{")):
+    if text in ("true", "false", "...") or text.isupper() or is_number(text) or text.startswith(("[", "{")):
         return text
     return f'"{text}"'
 

@@ -269,6 +269,36 @@ def _legend(ax, **keywords):
     legend(ax, **keywords)
 
 
+def _against_load(cases, what: str, legend_at: str, draw):
+    """Draw a row per sweep: a quantity against the reduced load (left) and the nominal one (right).
+
+    ``draw(ax, x, sweep, side)`` draws the quantity on one panel (``side`` 0: against p0/(E* g), 1:
+    against p0 in the prefix of its largest value) with its y axis; both share the logarithmic x
+    axis, its label, the grid, the row's title (``what``) and the legend (at ``legend_at``, left).
+    None without cases.
+    """
+    found = sweeps(cases)
+    if not found:
+        return None
+    figure, axes = _new_figure(len(found), 2, 5.2, 4.2)
+    for row, sweep in zip(axes, found, strict=True):
+        reduced, pressure = sweep.mean("reduced_pressure"), sweep.mean("mean_pressure")
+        scale, unit = prefixed_scale(float(np.nanmax(pressure)), "Pa")
+        for side, (ax, x, xlabel) in enumerate(
+            (
+                (row[0], reduced, "reduced pressure p0 / (E* g)"),
+                (row[1], pressure / scale, f"nominal pressure p0 ({unit})"),
+            )
+        ):
+            draw(ax, x, sweep, side)
+            ax.set_xscale("log")
+            ax.set_xlabel(xlabel)
+            ax.grid(True, which="major", alpha=0.3)
+        row[0].set_title(_title(sweep, what), fontsize="medium")
+        _legend(row[0], fontsize="small", loc=legend_at)
+    return figure
+
+
 @caption(
     "Relative contact area A/A0 against the reduced pressure p0/(E* g) (left; g the surface's spectral rms "
     "gradient) and against the nominal pressure (right), logarithmic axes. BEM: the area corrected for its "
@@ -279,30 +309,15 @@ def _legend(ax, **keywords):
 )
 def theories_area_figure(cases):
     """Draw the relative contact area of the BEM and of every theory against the load; None without cases."""
-    found = sweeps(cases)
-    if not found:
-        return None
-    figure, axes = _new_figure(len(found), 2, 5.2, 4.2)
-    for row, sweep in zip(axes, found, strict=True):
-        reduced, pressure = sweep.mean("reduced_pressure"), sweep.mean("mean_pressure")
-        scale, unit = prefixed_scale(float(np.nanmax(pressure)), "Pa")
-        for ax, x, xlabel in (
-            (row[0], reduced, "reduced pressure p0 / (E* g)"),
-            (row[1], pressure / scale, f"nominal pressure p0 ({unit})"),
-        ):
-            _bem_line(ax, x, sweep, "contact_fraction_corrected", 1.0, "BEM, corrected area", bounds=(0, 1))
-            ax.plot(
-                x, sweep.mean("contact_fraction"), "--", color=BEM, linewidth=1.0, label="BEM, pixel count"
-            )
-            _theory_lines(ax, x, sweep, "_fraction")
-            ax.set_xscale("log")
-            ax.set_yscale("log")
-            ax.set_xlabel(xlabel)
-            ax.set_ylabel("relative contact area A / A0")
-            ax.grid(True, which="major", alpha=0.3)
-        row[0].set_title(_title(sweep, "contact area"), fontsize="medium")
-        _legend(row[0], fontsize="small", loc="upper left")
-    return figure
+
+    def draw(ax, x, sweep: Sweep, side: int) -> None:
+        _bem_line(ax, x, sweep, "contact_fraction_corrected", 1.0, "BEM, corrected area", bounds=(0, 1))
+        ax.plot(x, sweep.mean("contact_fraction"), "--", color=BEM, linewidth=1.0, label="BEM, pixel count")
+        _theory_lines(ax, x, sweep, "_fraction")
+        ax.set_yscale("log")
+        ax.set_ylabel("relative contact area A / A0")
+
+    return _against_load(cases, "contact area", "upper left", draw)
 
 
 @caption(
@@ -314,40 +329,23 @@ def theories_area_figure(cases):
 )
 def theories_gap_figure(cases):
     """Draw the mean gap of the BEM and of Persson's and GW's theories against the load (None: no cases)."""
-    found = sweeps(cases)
-    if not found:
-        return None
-    figure, axes = _new_figure(len(found), 2, 5.2, 4.2)
-    for row, sweep in zip(axes, found, strict=True):
-        reduced, pressure = sweep.mean("reduced_pressure"), sweep.mean("mean_pressure")
-        rms = sweep.attribute("rms_height")
-        p_scale, p_unit = prefixed_scale(float(np.nanmax(pressure)), "Pa")
-        g_scale, g_unit = prefixed_scale(float(np.nanmax(np.abs(sweep.mean("persson_mean_gap")))), "m")
-        for ax, x, xlabel, scale, ylabel in (
-            (row[0], reduced, "reduced pressure p0 / (E* g)", 1 / rms, "mean gap / rms height"),
-            (
-                row[1],
-                pressure / p_scale,
-                f"nominal pressure p0 ({p_unit})",
-                1 / g_scale,
-                f"mean gap ({g_unit})",
-            ),
-        ):
-            if sweep.gap_compared:
-                _bem_line(ax, x, sweep, "mean_gap", scale, "BEM", bounds=(0.0, math.inf))
-            else:
-                ax.plot(
-                    x, sweep.mean("mean_gap") * scale, ":", color=BEM, label="BEM, free window (not compared)"
-                )
-            _theory_lines(ax, x, sweep, "_mean_gap", scale, keys=("persson", "gw"))
-            ax.set_xscale("log")
-            ax.set_xlabel(xlabel)
-            ax.set_ylabel(ylabel)
-            ax.axhline(0.0, color="0.6", linewidth=0.8)
-            ax.grid(True, which="major", alpha=0.3)
-        row[0].set_title(_title(sweep, "mean gap"), fontsize="medium")
-        _legend(row[0], fontsize="small", loc="upper right")
-    return figure
+
+    def draw(ax, x, sweep: Sweep, side: int) -> None:
+        if side == 0:
+            scale, ylabel = 1 / sweep.attribute("rms_height"), "mean gap / rms height"
+        else:
+            g_scale, g_unit = prefixed_scale(float(np.nanmax(np.abs(sweep.mean("persson_mean_gap")))), "m")
+            scale, ylabel = 1 / g_scale, f"mean gap ({g_unit})"
+        if sweep.gap_compared:
+            _bem_line(ax, x, sweep, "mean_gap", scale, "BEM", bounds=(0.0, math.inf))
+        else:
+            label = "BEM, free window (not compared)"
+            ax.plot(x, sweep.mean("mean_gap") * scale, ":", color=BEM, label=label)
+        _theory_lines(ax, x, sweep, "_mean_gap", scale, keys=("persson", "gw"))
+        ax.set_ylabel(ylabel)
+        ax.axhline(0.0, color="0.6", linewidth=0.8)
+
+    return _against_load(cases, "mean gap", "upper right", draw)
 
 
 @caption(

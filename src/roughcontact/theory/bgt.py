@@ -43,7 +43,7 @@ import math
 import numpy as np
 
 from ..checks import positive
-from ..errors import InputError
+from .persson import checked_pressures
 
 __all__ = ["KAPPA", "bgt_contact_fraction"]
 
@@ -75,9 +75,4 @@ def bgt_contact_fraction(mean_pressure, *, contact_modulus: float, rms_gradient:
     """
     positive(contact_modulus, "contact_modulus", example=1e9, unit="Pa")
     positive(rms_gradient, "rms_gradient", example="0.1 (dimensionless)")
-    pressure = np.atleast_1d(np.asarray(mean_pressure, dtype=float))
-    if not np.all(np.isfinite(pressure) & (pressure >= 0)):
-        raise InputError(
-            "mean_pressure", f"must be finite and >= 0, got {mean_pressure!r}.", "e.g. 20e6 (Pa)."
-        )
-    return KAPPA * pressure / (contact_modulus * rms_gradient)
+    return KAPPA * checked_pressures(mean_pressure) / (contact_modulus * rms_gradient)

@@ -116,7 +116,8 @@ GAMMA = 0.4
 r"""Persson's (2007) :math:`\gamma`: the share of a band's elastic energy kept where partly in contact."""
 
 
-def _pressures(mean_pressure) -> np.ndarray:
+def checked_pressures(mean_pressure) -> np.ndarray:
+    """Return the nominal pressures [Pa] a theory takes as an array (at least 1D), each finite and >= 0."""
     pressure = np.atleast_1d(np.asarray(mean_pressure, dtype=float))
     if not np.all(np.isfinite(pressure) & (pressure >= 0)):
         raise InputError(
@@ -149,7 +150,7 @@ def persson_contact_fraction(mean_pressure, *, contact_modulus: float, rms_gradi
     """
     positive(contact_modulus, "contact_modulus", example=1e9, unit="Pa")
     positive(rms_gradient, "rms_gradient", example="0.1 (dimensionless)")
-    return special.erf(math.sqrt(2.0) * _pressures(mean_pressure) / (contact_modulus * rms_gradient))
+    return special.erf(math.sqrt(2.0) * checked_pressures(mean_pressure) / (contact_modulus * rms_gradient))
 
 
 def persson_contact_fraction_magnified(
@@ -187,7 +188,7 @@ def persson_contact_fraction_magnified(
     if not np.all(np.isfinite(zeta) & (zeta >= 1)):
         raise InputError("magnification", f"must be >= 1, got {magnification!r}.", "e.g. [1, 10, 100].")
     gradient = spectrum.cumulative_gradient(zeta * spectrum.lowest)
-    pressure = _pressures(mean_pressure)[:, None]
+    pressure = checked_pressures(mean_pressure)[:, None]
     with np.errstate(divide="ignore"):
         argument = np.where(gradient > 0, math.sqrt(2.0) * pressure / (contact_modulus * gradient), np.inf)
     return special.erf(argument)
@@ -230,7 +231,7 @@ def persson_pressure_distribution(
     """
     positive(contact_modulus, "contact_modulus", example=1e9, unit="Pa")
     positive(rms_gradient, "rms_gradient", example="0.1 (dimensionless)")
-    (p0,) = _pressures(mean_pressure)
+    (p0,) = checked_pressures(mean_pressure)
     sigma = np.atleast_1d(np.asarray(pressure, dtype=float))
     variance = 0.25 * (contact_modulus * rms_gradient) ** 2
     density = (
@@ -302,7 +303,7 @@ def persson_mean_separation(
     positive(contact_modulus, "contact_modulus", example=1e9, unit="Pa")
     if not (math.isfinite(gamma) and 0 < gamma <= 1):
         raise InputError("gamma", f"must lie in (0, 1], got {gamma!r}.", "Persson (2007) uses 0.4.")
-    pressure = _pressures(mean_pressure)
+    pressure = checked_pressures(mean_pressure)
     if np.any(pressure <= 0):
         raise InputError(
             "mean_pressure", "the mean separation diverges at zero load.", "give pressures > 0 Pa."

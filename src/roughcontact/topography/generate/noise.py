@@ -239,3 +239,30 @@ def scaled_to(topography: Topography, rms_height: float | None, rms_slope: float
     else:
         factor = rms_slope / statistics.rms_slope(topography)
     return topography.with_heights(topography.heights * factor)
+
+
+def random_surface(
+    shape: tuple[int, ...],
+    size: tuple[float, ...],
+    psd_shape: Callable[[np.ndarray], np.ndarray],
+    q_max: float | None,
+    rms_height: float | None,
+    rms_slope: float | None,
+    seed: int | None,
+    modes: str,
+    field: str,
+    info: dict,
+) -> Topography:
+    """Return a periodic random surface of PSD shape ``psd_shape`` drawn in ``modes``, with ``info``.
+
+    ``"grid"``: noise on the grid (:func:`filtered_noise`) rescaled so that its rms height (or, with
+    ``rms_height`` None, its rms slope) is the target exactly (:func:`scaled_to`). ``"wavevector"``:
+    one draw per wavevector up to ``q_max`` [rad/m], normalised on the lattice
+    (:func:`normalised_noise`). ``field`` names the argument that an empty band is blamed on.
+    """
+    if modes == "grid":
+        heights = filtered_noise(shape, size, psd_shape, seed, field)
+        return scaled_to(Topography(heights, size, periodic=True, info=info), rms_height, rms_slope)
+    target, slope = (rms_height, False) if rms_height is not None else (rms_slope, True)
+    heights = normalised_noise(shape, size, psd_shape, q_max, target, slope, seed, field)
+    return Topography(heights, size, periodic=True, info=info)

@@ -10,7 +10,7 @@ from ...checks import positive
 from ...errors import InputError
 from ..surface import Topography
 from .grid import checked_hurst, grid_of
-from .noise import checked_band, checked_modes, filtered_noise, normalised_noise, scaled_to
+from .noise import checked_band, checked_modes, random_surface
 
 _GAUSSIAN_TAIL = 1e-18  # "wavevector" Gaussian PSD: modes with C(q) / C(0) below this are left out
 
@@ -163,12 +163,9 @@ def self_affine(
         "rolloff": rolloff,
         "modes": modes,
     }
-    if modes == "grid":
-        heights = filtered_noise(shape, size, psd_shape, seed, "short_cutoff")
-        return scaled_to(Topography(heights, size, periodic=True, info=info), rms_height, rms_slope)
-    target, slope = (rms_height, False) if rms_height is not None else (rms_slope, True)
-    heights = normalised_noise(shape, size, psd_shape, q_short, target, slope, seed, "short_cutoff")
-    return Topography(heights, size, periodic=True, info=info)
+    return random_surface(
+        shape, size, psd_shape, q_short, rms_height, rms_slope, seed, modes, "short_cutoff", info
+    )
 
 
 def gaussian_random_arguments(shape, size, rms_height, correlation_length, modes="grid"):
@@ -240,9 +237,7 @@ def gaussian_random(
         "seed": seed,
         "modes": modes,
     }
-    if modes == "grid":
-        heights = filtered_noise(shape, size, psd_shape, seed, "correlation_length")
-        return scaled_to(Topography(heights, size, periodic=True, info=info), rms_height, None)
     reach = 2.0 * math.sqrt(math.log(1.0 / _GAUSSIAN_TAIL)) / correlation_length
-    heights = normalised_noise(shape, size, psd_shape, reach, rms_height, False, seed, "correlation_length")
-    return Topography(heights, size, periodic=True, info=info)
+    return random_surface(
+        shape, size, psd_shape, reach, rms_height, None, seed, modes, "correlation_length", info
+    )
