@@ -14,7 +14,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..analytic.mindlin import hertz_contact_radius
-from ..checks import positive
 from ..errors import InputError
 from ..materials import Material, contact_modulus
 from ..topography import Topography
@@ -169,8 +168,7 @@ def contact_window(
         window = _window_holding(heights, top - depth, margin)
         how = f"holds every point within the largest approach, {depth * 1e6:.3g} um, of the highest point"
         return ContactWindow(window, window >= whole, depth, 0, described(window, how))
-    positive(normal_force, "normal_force", example="0.025")
-    hertz = hertz_contact_radius(normal_force, radius, contact_modulus(material, counter_body))
+    hertz = hertz_contact_radius(normal_force, radius, contact_modulus(material, counter_body))  # checks F0
     depth = 2.0 * hertz**2 / radius
     window = guess = _window_holding(heights, top - depth, margin)
     solves = 0
