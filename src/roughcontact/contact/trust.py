@@ -207,9 +207,7 @@ def share_warnings(shares: dict[str, float], topography, boundary: str) -> list[
     else:
         said += ": the contact is decided at the edge, by a surface that continues beyond the scan unseen."
     if excluded:
-        fix = (
-            "Crop the scan to a region without undefined points («crop»), or a lower load."
-        )
+        fix = "Crop the scan to a region without undefined points («crop»), or a lower load."
     else:
         fix = (
             "Use a periodic boundary («boundary=periodic») where the surface may be repeated, a lower "
