@@ -20,7 +20,7 @@ from roughcontact.plotting import plot_contact_overview, plot_pressure
 from roughcontact.spread import spread
 from roughcontact.topography import level
 from roughcontact.topography.generate import matched_psd
-from roughcontact.units import format_si, prefixed_scale
+from roughcontact.units import format_si, prefixed_scale, shown
 
 path = importlib.resources.files("roughcontact") / "data" / "top-1.top"
 scan = level(rc.read_topography(path), "plane")
@@ -37,7 +37,7 @@ pressure = rc.quantity("20 MPa", "pressure")  # 2e7 Pa
 result = rc.solve_normal(scan, polysilicon, counter_body=oxide, mean_pressure=pressure)
 print(f"boundary: {result.boundary}, E* = {format_si(result.contact_modulus, 'Pa')}")
 for name, value in result.scalars().items():
-    print(f"{name:<20} {format_si(value, result.UNITS.get(name, ''))}")  # no unit: dimensionless
+    print(f"{name:<20} {shown(value, result.UNITS.get(name))}")  # labels (levelling) as they are
 print(
     f"contact: {100 * result.contact_fraction:.3g} % of the nominal area, {result.number_of_patches} patches"
 )

@@ -22,7 +22,7 @@ from roughcontact.asperity import (
     residual_interference_ratio,
 )
 from roughcontact.contact import VolumePlasticity
-from roughcontact.units import format_si, prefixed_scale
+from roughcontact.units import format_si, prefixed_scale, shown
 
 # %%
 # The sphere and its critical interference
@@ -59,7 +59,7 @@ path = rc.load_unload(
     plasticity=VolumePlasticity(depth=4 * a_c, layers=16),
 )
 for name, value in path.scalars().items():
-    print(f"{name:<24} {format_si(value, path.UNITS.get(name, ''))}")  # no unit: dimensionless
+    print(f"{name:<24} {shown(value, path.UNITS.get(name))}")  # labels (levelling) as they are
 for warning in path.range_warnings() or ["none"]:
     print("warning:", warning)
 

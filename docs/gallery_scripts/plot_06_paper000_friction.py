@@ -19,7 +19,7 @@ import roughcontact as rc
 from roughcontact.papers import paper000
 from roughcontact.plotting import plot_friction_vs_load
 from roughcontact.spread import realisation_seed, spread
-from roughcontact.units import format_si, prefixed_scale
+from roughcontact.units import format_si, prefixed_scale, shown
 from roughcontact.winkler_lj import Readings
 
 # %%
@@ -48,7 +48,7 @@ result = rc.solve_winkler_lj(
     counter_topography=tip,
 )
 for name, value in result.scalars().items():
-    print(f"{name:<24} {format_si(value, result.UNITS.get(name, ''))}")  # no unit: dimensionless
+    print(f"{name:<24} {shown(value, result.UNITS.get(name))}")  # labels (levelling) as they are
 
 # %%
 # Seven scans, two readings
