@@ -8,6 +8,7 @@ from roughcontact.errors import InputError, UnsupportedFormatError
 from roughcontact.topography import Topography
 from roughcontact.topography.io import list_channels, read_topography
 from roughcontact.topography.native import NATIVE_FORMAT, load_topography, save_topography
+from roughcontact.topography.plausible import PlausibilityWarning
 
 INFO = {
     "name": "test",
@@ -91,7 +92,8 @@ def test_read_topography_and_list_channels_recognise_native_files(tmp_path):
     assert own == _levelled_none(topography)
     with pytest.raises(InputError, match="'m'"):
         read_topography(path, height_unit="nm")
-    in_nm = read_topography(path, height_unit="nm", override_file_values=True, detrend="none")
+    with pytest.warns(PlausibilityWarning, match="less than 1 pm"):  # metres read as nm: said
+        in_nm = read_topography(path, height_unit="nm", override_file_values=True, detrend="none")
     np.testing.assert_array_equal(in_nm.heights, topography.heights * 1e-9)
 
 

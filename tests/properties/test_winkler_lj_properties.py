@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 from roughcontact.errors import InputError
 from roughcontact.materials import Material
 from roughcontact.topography import Topography
-from roughcontact.winkler_lj import Readings, winkler_lj_model
+from roughcontact.winkler_lj import Readings, WinklerLJOptions, winkler_lj_model
 from roughcontact.winkler_lj.readings import CHOICES
 
 readings_strategy = st.builds(
@@ -42,10 +42,12 @@ def test_springs_are_never_both_and_totals_are_finite(
         surface,
         body,
         body,
-        layer_thickness=layer,
-        epsilon=epsilon,
-        readings=readings,
-        tip_radius=tip_pixels * pixel,  # used by base="half_sphere" only
+        options=WinklerLJOptions(
+            layer_thickness=layer,
+            epsilon=epsilon,
+            readings=readings,
+            tip_radius=tip_pixels * pixel,  # used by base="half_sphere" only
+        ),
     )
     load = load_fraction * model.load_capacity()
     assume(load > 0)

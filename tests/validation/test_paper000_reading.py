@@ -25,7 +25,7 @@ import pytest
 
 from roughcontact.errors import InputError
 from roughcontact.materials import get_material
-from roughcontact.papers.paper000 import paper000_model_options, paper000_scans, paper000_tip
+from roughcontact.papers.paper000 import paper000_options, paper000_scans, paper000_tip
 from roughcontact.topography import Topography
 from roughcontact.winkler_lj import PAPER, Readings, winkler_lj_model
 
@@ -44,9 +44,9 @@ def _model(surfaces, readings: Readings, points: int = SHAPE):
         Topography(t.heights[start : start + points, start : start + points], points * 20e-9, info=t.info)
         for t in surfaces
     )
-    options = paper000_model_options(readings=readings)
+    options = paper000_options(readings=readings)
     return winkler_lj_model(
-        scan, get_material("polysilicon"), get_material("SiO2"), counter_topography=tip, **options
+        scan, get_material("polysilicon"), get_material("SiO2"), counter_topography=tip, options=options
     )
 
 
@@ -95,6 +95,6 @@ def test_the_half_sphere_needs_a_radius(surfaces):
     scan, _ = surfaces
     with pytest.raises(InputError) as caught:
         winkler_lj_model(
-            scan, get_material("polysilicon"), get_material("SiO2"), **paper000_model_options(readings=PAPER)
+            scan, get_material("polysilicon"), get_material("SiO2"), options=paper000_options(readings=PAPER)
         )
     assert caught.value.field == "tip_radius"
