@@ -131,6 +131,11 @@ def test_tables_judge_each_theory_with_an_interval_over_the_realisations(answere
     # the scan: one realisation, no interval; its mean gap (a free window) is not compared
     scan_area = tables[("scan", "area")]
     assert {row["verdict"] for row in scan_area} == {"one realisation: no interval"}
+    # every row names its surfaces' origin: the scan is measured, the generated surfaces synthetic
+    assert {row["surface_origin"] for row in scan_area} == {"measured"}
+    assert {
+        row["surface_origin"] for name in ("area", "gap", "kappa") for row in tables[("generated", name)]
+    } == {"synthetic"}
     assert ("scan", "gap") not in tables
 
 

@@ -69,6 +69,12 @@ class Sweep:
         """The number of realisations (rows)."""
         return len(self.cases)
 
+    @property
+    def origin(self) -> str:
+        """The surfaces' origin (``"measured"``: a file; ``"synthetic"``: generated; ``""``: not said)."""
+        found = {case.scalars.get("surface_origin") for row in self.cases for case in row if case is not None}
+        return ", ".join(sorted(o for o in found if o))
+
     def values(self, name: str) -> np.ndarray:
         """Return the scalar ``name`` of every case, realisations by loads (NaN where missing or left out)."""
         return np.array(
@@ -205,8 +211,7 @@ def _realisations_words(sweep: Sweep) -> str:
 
 def _title(sweep: Sweep, what: str) -> str:
     window = "" if sweep.gap_compared else ", free window"
-    origins = {case.scalars.get("surface_origin") for row in sweep.cases for case in row if case is not None}
-    origin = " ({})".format(", ".join(sorted(o for o in origins if o))) if origins - {None} else ""
+    origin = f" ({sweep.origin})" if sweep.origin else ""
     label = f"{sweep.label}{origin}: " if sweep.label or origin else ""
     return f"{label}{what}{window}\n({_realisations_words(sweep)})"
 
@@ -457,9 +462,16 @@ def theories_kappa_figure(cases):
                 label=name,
             )
         limits = [float(c.parameters.get("kappa_max_fraction", 0.1)) for row in sweep.cases for c in row if c]
-        used = x[np.nanmax(sweep.values("contact_fraction_corrected"), axis=0) <= min(limits, default=0.1)]
+        limit = min(limits, default=0.1)
+        used = x[np.nanmax(sweep.values("contact_fraction_corrected"), axis=0) <= limit]
         if used.size:
-            ax.axvspan(float(np.nanmin(x)) / 1.2, float(used.max()) * 1.1, color="0.9", zorder=0)
+            ax.axvspan(
+                float(np.nanmin(x)) / 1.2,
+                float(used.max()) * 1.1,
+                color="0.9",
+                zorder=0,
+                label=f"loads of the BEM's kappa (A/A0 <= {limit:.3g})",
+            )
         summary = spread(fitted_kappa(sweep), bounds=(0, math.inf))
         said = (
             f"kappa = {summary.mean:.3g}"

@@ -142,8 +142,11 @@ INTERVAL_NOTE = (
 )
 
 
-def _rows(found, label: str, unit: str) -> list[dict]:
-    """Return the rows of the deviations with their units in the headers (``bem_mean [m]``)."""
+def _rows(found, label: str, origin: str, unit: str) -> list[dict]:
+    """Return the rows of the deviations with their units in the headers (``bem_mean [m]``).
+
+    Each row names its setting and its surfaces' origin (measured: a file; synthetic: generated).
+    """
     from ..display import header
 
     valued = ("theory_value", "bem_mean", "bem_ci95_low", "bem_ci95_high")
@@ -151,7 +154,8 @@ def _rows(found, label: str, unit: str) -> list[dict]:
     for one in found:
         row = {k: v for k, v in one.row().items() if k not in ("quantity", "interval")}
         units = {k: unit for k in valued} | {"mean_pressure": "Pa"}
-        rows.append({"setting": label} | {header(k, units.get(k)): v for k, v in row.items()})
+        said = {header(k, units.get(k)): v for k, v in row.items()}
+        rows.append({"setting": label, "surface_origin": origin} | said)
     return rows
 
 
@@ -178,7 +182,7 @@ def _quantity_table(records, quantity: str):
             mean_pressure=sweep.values("mean_pressure"),
             bounds=(0.0, 1.0) if quantity == "contact_fraction" else (0.0, math.inf),
         )
-        rows += _rows(found, sweep.label, "m" if quantity == "mean_gap" else "")
+        rows += _rows(found, sweep.label, sweep.origin, "m" if quantity == "mean_gap" else "")
     if not rows:
         return None
     if quantity == "contact_fraction":
@@ -230,7 +234,7 @@ def kappa_table(records, context):
             }
             del row["interval"]
             rows.append(
-                {"setting": sweep.label}
+                {"setting": sweep.label, "surface_origin": sweep.origin}
                 | row
                 | {
                     "bem_raw_mean": raw.mean,
