@@ -75,6 +75,12 @@ class Sweep:
         found = {case.scalars.get("surface_origin") for row in self.cases for case in row if case is not None}
         return ", ".join(sorted(o for o in found if o))
 
+    @property
+    def heading(self) -> str:
+        """The start of a figure's title: the setting and its origin (``"surface (measured): "``)."""
+        origin = f" ({self.origin})" if self.origin else ""
+        return f"{self.label}{origin}: " if self.label or origin else ""
+
     def values(self, name: str) -> np.ndarray:
         """Return the scalar ``name`` of every case, realisations by loads (NaN where missing or left out)."""
         return np.array(
@@ -211,9 +217,7 @@ def _realisations_words(sweep: Sweep) -> str:
 
 def _title(sweep: Sweep, what: str) -> str:
     window = "" if sweep.gap_compared else ", free window"
-    origin = f" ({sweep.origin})" if sweep.origin else ""
-    label = f"{sweep.label}{origin}: " if sweep.label or origin else ""
-    return f"{label}{what}{window}\n({_realisations_words(sweep)})"
+    return f"{sweep.heading}{what}{window}\n({_realisations_words(sweep)})"
 
 
 def _bem_line(ax, x, sweep: Sweep, name: str, scale: float, label: str, *, style="-", bounds=(0.0, math.inf)):
@@ -517,7 +521,6 @@ def theories_magnification_figure(cases):
     ax.set_ylabel("Persson's A(zeta) / A0")
     ax.grid(True, which="major", alpha=0.3)
     which = "" if sweep.realisations == 1 else f" (first of {sweep.realisations} realisations)"
-    label = f"{sweep.label}: " if sweep.label else ""
-    ax.set_title(f"{label}Persson's area as the roughness is resolved{which}", fontsize="medium")
+    ax.set_title(f"{sweep.heading}Persson's area as the roughness is resolved{which}", fontsize="medium")
     _legend(ax, fontsize="small", loc="lower left")
     return figure
