@@ -99,6 +99,10 @@ def test_each_load_and_realisation_is_a_case_with_every_theory_beside_the_bem(an
     scan = [r for r in by_name["scan"].records if r is not None]
     assert {r.scalars["boundary"] for r in scan} == {"free"}
     assert all(any("free window" in w for w in r.data["warnings"]) for r in scan)
+    # large slopes are said, but the comparison is elastic and takes no hardness: none is advised
+    said = [w for r in scan for w in r.data["warnings"]]
+    assert any("small-slope elastic theory" in w for w in said)
+    assert not any("hardness" in w for w in said)
 
 
 def test_tables_judge_each_theory_with_an_interval_over_the_realisations(answered):

@@ -258,7 +258,7 @@ class NormalContactResult(NotebookDisplay):
         )
 
     @as_messages
-    def range_warnings(self, *, slope_pressure: float = 0.1) -> list[str]:
+    def range_warnings(self, *, slope_pressure: float = 0.1, advise_hardness: bool = True) -> list[str]:
         """Say where this solution leaves the range of the model that produced it (empty when it does not).
 
         * Elastic contact with a peak pressure above ``slope_pressure * E*``: the half-space
@@ -277,14 +277,18 @@ class NormalContactResult(NotebookDisplay):
         ----------
         slope_pressure : float
             Largest peak pressure over E* that counts as small-slope (default 0.1).
+        advise_hardness : bool
+            Name a hardness as the remedy of large slopes (False where the caller compares elastic
+            models and takes none, as :func:`roughcontact.theory.compare_theories` does).
         """
         notes = []
         peak = float(self.pressure.max())
         if self.hardness is None and peak > slope_pressure * self.contact_modulus:
+            remedy = "give a «hardness» for elastic-plastic contact, or " if advise_hardness else ""
             notes.append(
                 f"peak pressure {peak / self.contact_modulus:.2g} E* (over {slope_pressure:g} E*): "
-                "local slopes beyond the small-slope elastic theory; give a «hardness» for "
-                "elastic-plastic contact, or treat the peak values as indicative only."
+                f"local slopes beyond the small-slope elastic theory; {remedy}treat the peak values as "
+                "indicative only."
             )
         if self.contact_fraction >= 1.0:
             notes.append("full contact: every point touches, so the roughness no longer matters.")
