@@ -65,7 +65,7 @@ def box_words(data) -> str:
     return f"boxes: quartiles, whiskers: min to max; points and median only below {BOX_FROM} values"
 
 
-def plot_mu_boxes(comparison, ax: Axes | None = None):
+def plot_mu_boxes(comparison, ax: Axes | None = None, *, simulated: str = "simulated"):
     """Draw box plots of simulated and compared mu per sample (paper 000, figure 9); returns ``(fig, ax)``.
 
     The compared values are labelled by their origin (measured, reconstructed from reported
@@ -80,6 +80,9 @@ def plot_mu_boxes(comparison, ax: Axes | None = None):
         From :func:`roughcontact.experiment.compare`.
     ax : matplotlib Axes, optional
         Axes to draw on.
+    simulated : str
+        The legend entry of the simulated values; say the scans' origin where it is known
+        (``"simulated on synthetic scans"``).
 
     Returns
     -------
@@ -95,7 +98,7 @@ def plot_mu_boxes(comparison, ax: Axes | None = None):
     ax.set_xticks([3 * k + 1 for k in range(len(comparison.samples))])
     ax.set_xticklabels([f"{s.sample}\np = {s.p_value:.2g}" for s in comparison.samples])
     ax.set_ylabel("coefficient of friction μ")
-    ax.legend(boxes[:2], ["simulated", _compared_label(comparison)])
+    ax.legend(boxes[:2], [simulated, _compared_label(comparison)])
     built = "p values and r by construction; " if comparison.by_construction else ""
     ax.set_title(
         f"simulated vs {comparison.origin.word}, Pearson r = {comparison.pearson_r:.2f}\n"
@@ -111,16 +114,16 @@ def _compared_label(comparison) -> str:
     return f"{origin.words} (built from this model)" if comparison.by_construction else origin.words
 
 
-def plot_mu_means(comparison, ax: Axes | None = None):
+def plot_mu_means(comparison, ax: Axes | None = None, *, simulated: str = "simulated"):
     """Draw the mean mu per sample with one standard deviation, simulated beside compared (figure 8).
 
-    Takes and returns what :func:`plot_mu_boxes` does: a ``Comparison`` and optional axes;
-    ``(fig, ax)``.
+    Takes and returns what :func:`plot_mu_boxes` does: a ``Comparison``, optional axes and the
+    legend entry of the simulated values; ``(fig, ax)``.
     """
     fig, ax = axes_for(ax, figsize=(6.0, 4.0))
     x = np.arange(len(comparison.samples))
     sides = (
-        (-0.18, "simulated", "simulated", "tab:blue"),
+        (-0.18, "simulated", simulated, "tab:blue"),
         (0.18, "measured", _compared_label(comparison), "tab:orange"),
     )
     for offset, kind, label, colour in sides:
@@ -211,13 +214,31 @@ def friction_vs_load_figure(cases):
             force_axis.axvline(np.mean(crossovers) / scale, color=colour, lw=0.8, ls=":")
     mu_axis.set_xlabel(f"normal load ({unit})")
     mu_axis.set_ylabel("coefficient of friction μ")
-    mu_axis.set_title("μ against load" + (f" (mean and range of {scans} scans)" if scans > 1 else ""))
+    kind = _origin_of(cases)
+    scans_words = f"{scans} {kind} scans" if kind else f"{scans} scans"
+    mu_axis.set_title("μ against load" + (f" (mean and range of {scans_words})" if scans > 1 else ""))
     force_axis.set_xlabel(f"normal load ({unit})")
     force_axis.set_ylabel(f"friction force ({unit})")
     force_axis.set_title("adhesive (solid) and mechanical (dashed) friction")
     if any(groups):
         legend(mu_axis, fontsize="small")
     return figure
+
+
+def _origin_of(cases) -> str:
+    """Return the scans' origin (``"measured"``, ``"synthetic"``, both joined; ``""`` where not said)."""
+    found = {case.scalars.get("surface_origin") for case in cases}
+    return " and ".join(sorted(o for o in found if o))
+
+
+def _simulated_words(cases) -> str:
+    """Return the legend entry of values simulated on ``cases``' scans: ``simulated on synthetic scans``.
+
+    A generated stand-in is never read as a measured scan; cases that do not say their surfaces'
+    origin (stored before it was recorded) read ``simulated``.
+    """
+    kind = _origin_of(cases)
+    return f"simulated on {kind} scans" if kind else "simulated"
 
 
 def _mean_and_range(cases, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -270,7 +291,7 @@ def mu_boxes_figure(cases, comparison=None):
     figure, axes = new_figure(1, 1, width=6.0)
     ax = axes[0][0]
     if comparison is not None:
-        plot_mu_boxes(comparison, ax=ax)
+        plot_mu_boxes(comparison, ax=ax, simulated=_simulated_words(cases))
         return figure
     simulated = _simulated_only(cases)
     if simulated is None:
@@ -280,7 +301,9 @@ def mu_boxes_figure(cases, comparison=None):
     ax.set_xticks(positions)
     ax.set_xticklabels(list(simulated))
     ax.set_ylabel("coefficient of friction μ")
-    ax.set_title(f"simulated μ per sample\n({box_words(list(simulated.values()))})", fontsize="medium")
+    ax.set_title(
+        f"μ per sample, {_simulated_words(cases)}\n({box_words(list(simulated.values()))})", fontsize="medium"
+    )
     return figure
 
 
@@ -295,7 +318,7 @@ def mu_means_figure(cases, comparison=None):
     figure, axes = new_figure(1, 1, width=6.0)
     ax = axes[0][0]
     if comparison is not None:
-        plot_mu_means(comparison, ax=ax)
+        plot_mu_means(comparison, ax=ax, simulated=_simulated_words(cases))
         built = " (by construction)" if comparison.by_construction else ""
         ax.set_title(f"mean μ per sample, Pearson r of the means = {comparison.pearson_r:.2f}{built}")
         return figure
@@ -306,7 +329,16 @@ def mu_means_figure(cases, comparison=None):
     means = [float(np.mean(v)) for v in simulated.values()]
     single = all(len(v) == 1 for v in simulated.values())  # one value each: a spread of nothing
     spread = None if single else [float(np.std(v, ddof=1)) if len(v) > 1 else 0.0 for v in simulated.values()]
-    ax.bar(x, means, width=0.5, yerr=spread, capsize=4, color="tab:blue", alpha=0.7, label="simulated")
+    ax.bar(
+        x,
+        means,
+        width=0.5,
+        yerr=spread,
+        capsize=4,
+        color="tab:blue",
+        alpha=0.7,
+        label=_simulated_words(cases),
+    )
     ax.set_xticks(x)
     ax.set_xticklabels(list(simulated))
     ax.set_ylabel(

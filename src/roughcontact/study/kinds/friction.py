@@ -437,6 +437,7 @@ def run(parameters: FrictionParameters, inputs) -> CaseOutput:
         scalars[name] = constants[name]
     scalars["load_capacity"] = model.load_capacity()
     scalars["surface_ra"] = statistics.ra(inputs.topography(parameters.topography))
+    scalars["surface_origin"] = inputs.origin(parameters.topography)  # measured scan or generated stand-in
     if parameters.crossover:
         scalars["crossover_load"] = model.crossover_load()
     return CaseOutput(scalars, _cropped(result), tuple(result.range_warnings()))
