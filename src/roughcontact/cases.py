@@ -124,6 +124,17 @@ def with_fields(cases: Sequence[Case]) -> list[Case]:
     return [case for case in cases if case.has_fields]
 
 
+def surface_origin(cases: Sequence[Case | None]) -> str:
+    """Return where the cases' surfaces come from, as their ``surface_origin`` scalars say.
+
+    ``"measured"`` (a file), ``"synthetic"`` (generated), both joined by "and" where the cases mix
+    them; ``""`` where none says (cases stored before the origin was recorded). Missing cases
+    (None) are passed over.
+    """
+    found = {case.scalars.get("surface_origin") for case in cases if case is not None}
+    return " and ".join(sorted(o for o in found if o))
+
+
 def scalar_series(cases: Sequence[Case], *names: str) -> tuple[np.ndarray, ...]:
     """Arrays of the scalars ``names`` over ``cases``, ordered by the first of them."""
     values = np.array([[float(c.scalars[name]) for name in names] for c in cases], dtype=float)

@@ -10,7 +10,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
-from ..cases import branch_points, evenly_chosen, grouped, realisations_of, with_fields
+from ..cases import branch_points, evenly_chosen, grouped, realisations_of, surface_origin, with_fields
 from ..units import format_si, unit_factor
 from .cases import caption
 from .contact import plot_von_mises
@@ -275,7 +275,7 @@ def island_load_interference_figure(cases, statistical=None, measured=None):
     for label, group in own:
         curve = _mean_curve([c for c in map(curve_of, group) if c is not None])
         if curve is not None:
-            origin = group[0].scalars.get("surface_origin")
+            origin = surface_origin(group)
             island = f"{origin} island" if origin else "island"
             model = f"BEM, {island} ({group[0].parameters.get('plasticity', 'surface')} plasticity)"
             if len(own) > 1 and label:

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.axes import Axes
 
-from ..cases import at_load, axis_words, grouped, loads_of, setting_of
+from ..cases import at_load, axis_words, grouped, loads_of, setting_of, surface_origin
 from ..units import format_si, prefixed_scale
 from .cases import caption
 from .layout import axes_for, legend
@@ -214,7 +214,7 @@ def friction_vs_load_figure(cases):
             force_axis.axvline(np.mean(crossovers) / scale, color=colour, lw=0.8, ls=":")
     mu_axis.set_xlabel(f"normal load ({unit})")
     mu_axis.set_ylabel("coefficient of friction μ")
-    kind = _origin_of(cases)
+    kind = surface_origin(cases)
     scans_words = f"{scans} {kind} scans" if kind else f"{scans} scans"
     mu_axis.set_title("μ against load" + (f" (mean and range of {scans_words})" if scans > 1 else ""))
     force_axis.set_xlabel(f"normal load ({unit})")
@@ -225,19 +225,13 @@ def friction_vs_load_figure(cases):
     return figure
 
 
-def _origin_of(cases) -> str:
-    """Return the scans' origin (``"measured"``, ``"synthetic"``, both joined; ``""`` where not said)."""
-    found = {case.scalars.get("surface_origin") for case in cases}
-    return " and ".join(sorted(o for o in found if o))
-
-
 def _simulated_words(cases) -> str:
     """Return the legend entry of values simulated on ``cases``' scans: ``simulated on synthetic scans``.
 
     A generated stand-in is never read as a measured scan; cases that do not say their surfaces'
     origin (stored before it was recorded) read ``simulated``.
     """
-    kind = _origin_of(cases)
+    kind = surface_origin(cases)
     return f"simulated on {kind} scans" if kind else "simulated"
 
 

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..cases import setting_of
+from ..cases import setting_of, surface_origin
 from ..spread import spread
 from ..units import prefixed_scale
 from .cases import caption
@@ -72,13 +72,13 @@ class Sweep:
     @property
     def origin(self) -> str:
         """The surfaces' origin (``"measured"``: a file; ``"synthetic"``: generated; ``""``: not said)."""
-        found = {case.scalars.get("surface_origin") for row in self.cases for case in row if case is not None}
-        return ", ".join(sorted(o for o in found if o))
+        return surface_origin([case for row in self.cases for case in row])
 
     @property
     def heading(self) -> str:
         """The start of a figure's title: the setting and its origin (``"surface (measured): "``)."""
-        origin = f" ({self.origin})" if self.origin else ""
+        origin = self.origin
+        origin = f" ({origin})" if origin else ""
         return f"{self.label}{origin}: " if self.label or origin else ""
 
     def values(self, name: str) -> np.ndarray:
